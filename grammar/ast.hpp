@@ -1,0 +1,96 @@
+// The abstract syntax tree of a .sdl script (spec §1–§3). Plain owning
+// structs: every node carries its SourceLoc, nothing points into the input
+// buffer, so the tree outlives the parse. One fat node type per category
+// (Expr, Stmt) keeps the parser's actions and the interpreter's switch simple.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "grammar/source.hpp"
+
+namespace kerf::ast {
+
+struct Expr;
+struct Stmt;
+using ExprPtr = std::unique_ptr<Expr>;
+using StmtPtr = std::unique_ptr<Stmt>;
+
+// `name = value` in a call (`f(b = 3)`), in `let (...)`, `for (...)`, or a
+// parameter `a = default` of a definition. `name` is empty for a positional
+// argument; `value` is null for a parameter without a default.
+struct Binding {
+    std::string name;
+    ExprPtr value;
+    SourceLoc loc;
+};
+
+enum class ExprKind {
+    Number,     // number
+    String,     // text
+    Bool,       // number != 0
+    Undef,
+    Ident,      // text = name (may start with '$')
+    List,       // items = elements; each may be a generator (ListFor/ListIf/ListLet)
+    Range,      // items = {start, end} or {start, step, end}
+    Unary,      // text = "-", "+", "!"; items = {operand}
+    Binary,     // text = operator ("+", "==", "&&", "^", ...); items = {lhs, rhs}
+    Ternary,    // items = {cond, then, else}
+    Index,      // items = {object, index}
+    Member,     // text = "x" | "y" | "z"; items = {object}
+    Call,       // text = callee name; args = arguments
+    Let,        // bindings; items = {body}
+    Echo,       // args; items = {body}            (`echo(...) expr`)
+    Assert,     // args; items = {body}            (`assert(c, "m") expr`)
+    // Generators, only as list elements:
+    ListFor,    // bindings (several = nested loops); items = {element}
+    ListIf,     // items = {cond, then} or {cond, then, else}
+    ListLet,    // bindings; items = {element}
+};
+
+struct Expr {
+    ExprKind kind = ExprKind::Undef;
+    SourceLoc loc;
+    double number = 0;
+    std::string text;
+    std::vector<ExprPtr> items;
+    std::vector<Binding> args;      // Call, Echo, Assert
+    std::vector<Binding> bindings;  // Let, ListFor, ListLet
+};
+
+enum class StmtKind {
+    Assign,       // name = value;
+    FunctionDef,  // function name(params) = value;
+    ModuleDef,    // module name(params) { body }
+    Instantiate,  // name(args) child;  name(args) { body }  name(args);
+                  // `for`, `let`, `echo`, `assert`, `children` are instantiations
+                  // too, as in OpenSCAD: `for (i = r, j = s)` has args i, j.
+    If,           // if (value) body else else_body
+    Block,        // { body }   (an implicit union)
+    Include,      // include <name>   (name = path as written)
+    Use,          // use <name>
+    Empty,        // a lone `;`
+};
+
+// Debug modifiers in front of an instantiation, as in OpenSCAD.
+enum class Modifier { None, Disable /* * */, Root /* ! */, Highlight /* # */, Background /* % */ };
+
+struct Stmt {
+    StmtKind kind = StmtKind::Empty;
+    SourceLoc loc;
+    std::string name;
+    ExprPtr value;
+    std::vector<Binding> params;  // FunctionDef, ModuleDef
+    std::vector<Binding> args;    // Instantiate
+    std::vector<StmtPtr> body;    // ModuleDef, Instantiate children, If then, Block
+    std::vector<StmtPtr> else_body;
+    bool has_else = false;
+    Modifier modifier = Modifier::None;
+};
+
+struct Program {
+    std::shared_ptr<const SourceFile> file;
+    std::vector<StmtPtr> stmts;
+};
+
+}  // namespace kerf::ast

@@ -1,0 +1,30 @@
+// Entry points of the grammar stage: text in, AST out, or one located error.
+#pragma once
+#include <cstddef>
+#include <memory>
+#include <string>
+
+#include "grammar/ast.hpp"
+#include "grammar/source.hpp"
+
+namespace kerf {
+
+struct ParseLimits {
+    std::size_t max_nesting = 256;  // spec §8: nesting depth of source
+};
+
+// Thrown when a file cannot be read (CLI exit status 2, not 1).
+class IoError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// Reads a whole file; throws IoError naming the path and the reason.
+std::shared_ptr<const SourceFile> read_source_file(const std::string& path);
+
+// Parses a whole script. Throws SourceError at the first syntax error, whose
+// message says what was expected ("expected ';'"), located at the offending
+// byte. Never crashes on any byte sequence; nesting is limited.
+ast::Program parse_program(std::shared_ptr<const SourceFile> file, const ParseLimits& limits = {});
+
+}  // namespace kerf

@@ -1,0 +1,54 @@
+// Source files, locations and diagnostics: shared by every stage that can
+// blame a line of a script. Locations hold a shared pointer to the file so
+// the AST, the scene graph and csg::Scene all outlive the parse buffer.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace kerf {
+
+struct SourceFile {
+    std::string path;  // as given by the user or resolved by include/use
+    std::string text;  // whole file contents (for caret lines)
+};
+
+struct SourceLoc {
+    std::shared_ptr<const SourceFile> file;  // null for command-line/synthetic
+    std::uint32_t line = 0;                  // 1-based; 0 = unknown
+    std::uint32_t col = 0;                   // 1-based, in bytes
+};
+
+enum class Severity { Error, Warning };
+
+struct Diagnostic {
+    Severity severity = Severity::Error;
+    SourceLoc loc;
+    std::string message;
+};
+
+// "PATH:LINE:COL: error: MESSAGE" followed, when the text is known, by the
+// source line and a caret under the column (spec §8). No trailing newline.
+std::string format_diagnostic(const Diagnostic& d);
+
+// The one-line head only ("PATH:LINE:COL: error: MESSAGE").
+std::string format_diagnostic_head(const Diagnostic& d);
+
+// The thrown form of a user-caused error: parse, evaluation and lowering
+// errors all end up here, so the CLI has one catch and one exit code.
+class SourceError : public std::runtime_error {
+public:
+    explicit SourceError(Diagnostic d)
+        : std::runtime_error(format_diagnostic_head(d)), diag_(std::move(d)) {}
+    SourceError(SourceLoc loc, std::string message)
+        : SourceError(Diagnostic{Severity::Error, std::move(loc), std::move(message)}) {}
+    const Diagnostic& diagnostic() const noexcept { return diag_; }
+
+private:
+    Diagnostic diag_;
+};
+
+}  // namespace kerf

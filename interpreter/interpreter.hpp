@@ -1,0 +1,43 @@
+// Entry point of the interpreter stage: a parsed script in, a scene graph out.
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "grammar/parser.hpp"
+#include "interpreter/scene_graph.hpp"
+
+namespace kerf {
+
+// Spec §8 limits; every one is overridable from the command line and ends in
+// a located error when exceeded.
+struct EvalLimits {
+    std::uint64_t call_depth = 1000;
+    std::uint64_t nesting = 256;             // source nesting (passed to the parser)
+    std::uint64_t loop_iterations = 10'000'000;  // total over the run
+    std::uint64_t list_elements = 10'000'000;    // per list
+    std::uint64_t primitives = 1'000'000;
+    std::uint64_t steps = 100'000'000;       // calls + instantiations + iterations
+};
+
+struct EvalOptions {
+    EvalLimits limits;
+    std::vector<std::string> include_dirs;   // -I, searched after the including file's folder
+    std::string stdlib_dir;                  // searched last; empty = KERF_STDLIB_DIR
+    std::vector<std::pair<std::string, std::string>> defines;  // -D name=value (value is an expression)
+    std::function<void(const std::string&)> echo;  // receives "ECHO: ..." lines; default: stderr
+};
+
+struct EvalResult {
+    scene::SceneGraph graph;
+    std::vector<Diagnostic> warnings;
+};
+
+// Parse and evaluate a script file. Throws IoError (unreadable file) or
+// SourceError (first syntax or evaluation error, located).
+EvalResult evaluate_file(const std::string& path, const EvalOptions& options = {});
+EvalResult evaluate_source(std::shared_ptr<const SourceFile> file, const EvalOptions& options = {});
+
+}  // namespace kerf

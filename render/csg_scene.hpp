@@ -1,0 +1,123 @@
+// The contract between the interpreter and the renderer (architecture.md):
+// plain contiguous arrays, no transform nodes, no virtual calls, no pointers
+// into the AST. Lowering writes it; the renderer only reads it.
+#pragma once
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace kerf::csg {
+
+constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+
+struct Aabb {
+    glm::dvec3 lo{std::numeric_limits<double>::infinity()};
+    glm::dvec3 hi{-std::numeric_limits<double>::infinity()};
+
+    bool empty() const { return lo.x > hi.x || lo.y > hi.y || lo.z > hi.z; }
+    void extend(const glm::dvec3& p) { lo = glm::min(lo, p); hi = glm::max(hi, p); }
+    void extend(const Aabb& b) { lo = glm::min(lo, b.lo); hi = glm::max(hi, b.hi); }
+    static Aabb overlap(const Aabb& a, const Aabb& b) { return {glm::max(a.lo, b.lo), glm::min(a.hi, b.hi)}; }
+    static Aabb everything() {
+        constexpr double inf = std::numeric_limits<double>::infinity();
+        return {glm::dvec3(-inf), glm::dvec3(inf)};
+    }
+};
+
+// p' = linear * p + offset
+struct Affine {
+    glm::dmat3 linear{1.0};
+    glm::dvec3 offset{0.0};
+    glm::dvec3 point(const glm::dvec3& p) const { return linear * p + offset; }
+    glm::dvec3 vector(const glm::dvec3& v) const { return linear * v; }
+};
+
+// Same canonical parameters as the interpreter's scene::PrimKind (see
+// interpreter/scene_graph.hpp); the renderer must not depend on the language.
+enum class PrimKind : std::uint8_t { Sphere, Box, Cylinder, Torus, Plane, Paraboloid, Hyperboloid, Mesh };
+
+struct Leaf {
+    PrimKind kind = PrimKind::Sphere;
+    std::uint32_t material = 0;
+    std::uint32_t mesh = kNone;        // Mesh only
+    std::uint32_t source = kNone;      // into Scene::sources
+    double p[6] = {0, 0, 0, 0, 0, 0};  // shape parameters, object space
+    Affine object_from_world;          // world point -> object point
+    Affine world_from_object;          // its inverse
+    // Object-space normal -> world-space normal (transpose of
+    // object_from_world.linear): keeps normals outward under mirrors too.
+    glm::dmat3 normal_to_world{1.0};
+    Aabb bounds;                       // tight world box of the transformed primitive
+};
+
+enum class Op : std::uint8_t { Leaf, Union, Intersection, Difference };
+
+struct Node {
+    Op op = Op::Union;
+    std::uint32_t first = 0;   // Leaf: leaf index; others: start in Scene::children
+    std::uint32_t count = 0;   // number of children (Difference: children[first] is the minuend)
+    std::uint32_t parent = kNone;
+    Aabb bounds;               // clipped by the operation (intersection: overlap; difference: minuend)
+};
+
+struct Material {
+    glm::dvec3 color{0.8, 0.8, 0.8};     // linear RGB
+    double alpha = 1.0;
+    glm::dvec3 interior{0.8, 0.8, 0.8};  // shown on cut faces that expose this solid's inside
+    double diffuse = 0.8;
+    double specular = 0.2;
+    double shininess = 32;
+    double reflect = 0;
+};
+
+struct Mesh {
+    std::vector<glm::dvec3> points;             // object space
+    std::vector<std::uint32_t> triangles;        // 3 indices per triangle, outward winding (CCW seen from outside)
+    bool solid = true;
+};
+
+struct Camera {
+    glm::dvec3 position{0, -10, 5};
+    glm::dvec3 look_at{0, 0, 0};
+    glm::dvec3 up{0, 0, 1};
+    double fov = 40;           // vertical, degrees
+    bool orthographic = false;
+    double height = 1;         // orthographic view height
+};
+
+struct Light {
+    bool directional = false;
+    glm::dvec3 position{0, 0, 0};
+    glm::dvec3 direction{0, 0, -1};  // direction the light travels (distant light)
+    glm::dvec3 color{1, 1, 1};
+    double intensity = 1;
+};
+
+struct SourceRef {
+    std::uint32_t file = 0;  // into Scene::files
+    std::uint32_t line = 0;
+    std::uint32_t col = 0;
+};
+
+struct Scene {
+    std::vector<Leaf> leaves;
+    std::vector<Node> nodes;              // pre-order: parents before children; root = nodes[0]
+    std::vector<std::uint32_t> children;  // node indices, a contiguous run per operation node
+    std::uint32_t root = kNone;           // kNone: the scene has no solid at all
+
+    std::vector<Material> materials;      // at least one (the default light grey)
+    std::vector<Mesh> meshes;
+    Camera camera;                        // always resolved (spec §6 defaults applied)
+    std::vector<Light> lights;            // always resolved (defaults applied)
+    glm::dvec3 background{0.2, 0.2, 0.2};
+
+    std::vector<SourceRef> sources;
+    std::vector<std::string> files;
+
+    Aabb bounds() const { return root == kNone ? Aabb{} : nodes[root].bounds; }
+};
+
+}  // namespace kerf::csg
