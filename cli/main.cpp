@@ -1,0 +1,121 @@
+// kerf: check, dump or render a .sdl scene. Everything here is argument
+// handling, reporting and exit codes (spec §7–§8); the work is library calls.
+#include <cstdio>
+#include <exception>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "cli/options.hpp"
+#include "cli/progress.hpp"
+#include "interpreter/interpreter.hpp"
+#include "interpreter/lower.hpp"
+#include "render/csg_dump.hpp"
+#include "render/render.hpp"
+
+namespace {
+
+using namespace kerf;
+
+enum Exit { kOk = 0, kSceneError = 1, kUsage = 2, kRenderFailed = 3 };
+
+void print_warnings(const std::vector<Diagnostic>& warnings) {
+    for (const auto& w : warnings) std::cerr << format_diagnostic(w) << '\n';
+}
+
+render::Aov to_aov(cli::AovKind k) {
+    switch (k) {
+        case cli::AovKind::Depth: return render::Aov::Depth;
+        case cli::AovKind::Normal: return render::Aov::Normal;
+        case cli::AovKind::Hits: return render::Aov::Hits;
+        case cli::AovKind::None: break;
+    }
+    return render::Aov::None;
+}
+
+void print_stats(const render::RenderStats& s, const render::Image& img) {
+    double rays = static_cast<double>(s.primary_rays + s.shadow_rays + s.reflect_rays);
+    double per = s.primary_rays + s.shadow_rays + s.reflect_rays > 0 ? 1.0 / rays : 0.0;
+    std::fprintf(stderr,
+                 "stats: %dx%d, %.0f rays (%llu primary, %llu shadow, %llu reflect)\n"
+                 "stats: render %.3f s, %.2f MRay/s\n"
+                 "stats: per ray: %.3f union, %.3f difference, %.3f intersection ops, "
+                 "%.3f primitive interval tests\n",
+                 img.width, img.height, rays, static_cast<unsigned long long>(s.primary_rays),
+                 static_cast<unsigned long long>(s.shadow_rays),
+                 static_cast<unsigned long long>(s.reflect_rays), s.seconds,
+                 s.seconds > 0 ? rays / s.seconds * 1e-6 : 0.0, s.union_ops * per,
+                 s.difference_ops * per, s.intersection_ops * per, s.interval_tests * per);
+}
+
+int run(const cli::Options& o) {
+    EvalResult evaluated = evaluate_file(o.scene, o.eval);
+    print_warnings(evaluated.warnings);
+    csg::Scene scene = lower_to_csg(evaluated.graph);
+    if (o.command == cli::Command::Check) return kOk;
+    if (o.command == cli::Command::Dump) {
+        std::cout << csg::dump_scene(scene);
+        return kOk;
+    }
+
+    render::RenderOptions ro;
+    ro.width = o.width;
+    ro.height = o.height;
+    ro.spp = o.spp;
+    ro.threads = o.threads;
+    ro.preview = o.preview;
+    ro.aov = to_aov(o.aov);
+    ro.crop = o.crop;
+    ro.seed = o.seed;
+    ro.double_precision = o.double_precision;
+
+    render::RenderStats stats;
+    render::Image image;
+    {
+        cli::ProgressBar bar("rendering");
+        image = render::render(scene, ro, &stats, [&bar](double f) { bar.update(f); });
+    }
+    try {
+        render::write_image(image, o.output);
+    } catch (const std::exception& e) {
+        std::cerr << "kerf: error: " << e.what() << '\n';
+        return kRenderFailed;
+    }
+    if (o.stats) print_stats(stats, image);
+    return kOk;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    cli::Options options;
+    try {
+        options = cli::parse_options(std::vector<std::string>(argv + 1, argv + argc));
+    } catch (const cli::UsageError& e) {
+        std::cerr << "kerf: error: " << e.what() << '\n' << cli::usage_text();
+        return kUsage;
+    }
+    if (options.command == cli::Command::Help) {
+        std::cout << cli::usage_text();
+        return kOk;
+    }
+    if (options.command == cli::Command::Version) {
+        std::cout << "kerf 0.1\n";
+        return kOk;
+    }
+    try {
+        return run(options);
+    } catch (const SourceError& e) {
+        std::cerr << format_diagnostic(e.diagnostic()) << '\n';
+        return kSceneError;
+    } catch (const IoError& e) {
+        std::cerr << "kerf: error: " << e.what() << '\n';
+        return kUsage;
+    } catch (const std::bad_alloc&) {
+        std::cerr << "kerf: error: out of memory\n";
+        return kRenderFailed;
+    } catch (const std::exception& e) {
+        std::cerr << "kerf: error: " << e.what() << '\n';
+        return kRenderFailed;
+    }
+}

@@ -1,0 +1,125 @@
+#include "cli/options.hpp"
+
+#include <charconv>
+#include <cstdint>
+#include <limits>
+
+namespace kerf::cli {
+
+namespace {
+
+template <typename Int>
+Int parse_int(const std::string& flag, const std::string& text, Int lo, Int hi) {
+    Int v{};
+    auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+    if (ec != std::errc() || p != text.data() + text.size() || v < lo || v > hi)
+        throw UsageError(flag + " expects a whole number from " + std::to_string(lo) + " to " +
+                         std::to_string(hi) + ", got '" + text + "'");
+    return v;
+}
+
+std::array<int, 4> parse_crop(const std::string& text) {
+    std::array<int, 4> c{};
+    std::size_t start = 0;
+    for (int i = 0; i < 4; ++i) {
+        std::size_t comma = text.find(',', start);
+        if ((i < 3) != (comma != std::string::npos))
+            throw UsageError("--crop expects x0,y0,x1,y1, got '" + text + "'");
+        c[i] = parse_int<int>("--crop", text.substr(start, comma - start), 0, 1 << 20);
+        start = comma + 1;
+    }
+    if (c[2] <= c[0] || c[3] <= c[1]) throw UsageError("--crop needs x0 < x1 and y0 < y1");
+    return c;
+}
+
+void parse_define(const std::string& text, Options& o) {
+    std::size_t eq = text.find('=');
+    if (eq == std::string::npos || eq == 0)
+        throw UsageError("-D expects name=value, got '" + text + "'");
+    o.eval.defines.emplace_back(text.substr(0, eq), text.substr(eq + 1));
+}
+
+}  // namespace
+
+const char* usage_text() {
+    return "usage:\n"
+           "  kerf render SCENE.sdl [-o OUT] [-W 800] [-H 600] [--spp N] [--threads N]\n"
+           "                        [--preview] [--aov depth|normal|hits] [--stats]\n"
+           "                        [-D name=value ...] [-I dir ...] [--crop x0,y0,x1,y1]\n"
+           "                        [--seed N] [--precision double|float]\n"
+           "  kerf check  SCENE.sdl   parse, evaluate and lower; print diagnostics only\n"
+           "  kerf dump   SCENE.sdl   print the lowered, flattened CSG tree\n"
+           "limits (spec §8): --max-call-depth N --max-nesting N --max-iterations N\n"
+           "                  --max-list N --max-primitives N --max-steps N\n"
+           "exit status: 0 ok, 1 scene errors, 2 bad command line or unreadable file,\n"
+           "             3 render failed (e.g. output not writable)\n";
+}
+
+Options parse_options(const std::vector<std::string>& args) {
+    Options o;
+    if (args.empty()) throw UsageError("no command given (try 'kerf --help')");
+    const std::string& cmd = args[0];
+    if (cmd == "--help" || cmd == "-h" || cmd == "help") { o.command = Command::Help; return o; }
+    if (cmd == "--version") { o.command = Command::Version; return o; }
+    if (cmd == "render") o.command = Command::Render;
+    else if (cmd == "check") o.command = Command::Check;
+    else if (cmd == "dump") o.command = Command::Dump;
+    else throw UsageError("unknown command '" + cmd + "' (expected render, check or dump)");
+
+    constexpr std::uint64_t big = std::numeric_limits<std::uint32_t>::max();
+    for (std::size_t i = 1; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        auto value = [&]() -> const std::string& {
+            if (i + 1 >= args.size()) throw UsageError(a + " needs a value");
+            return args[++i];
+        };
+        if (a == "-o") o.output = value();
+        else if (a == "-W") o.width = parse_int<int>(a, value(), 1, 32768);
+        else if (a == "-H") o.height = parse_int<int>(a, value(), 1, 32768);
+        else if (a == "--spp") o.spp = parse_int<int>(a, value(), 1, 65536);
+        else if (a == "--threads") o.threads = parse_int<int>(a, value(), 0, 1024);
+        else if (a == "--seed") o.seed = parse_int<std::uint64_t>(a, value(), 0, UINT64_MAX);
+        else if (a == "--preview") o.preview = true;
+        else if (a == "--stats") o.stats = true;
+        else if (a == "--crop") o.crop = parse_crop(value());
+        else if (a == "--aov") {
+            const std::string& v = value();
+            if (v == "depth") o.aov = AovKind::Depth;
+            else if (v == "normal") o.aov = AovKind::Normal;
+            else if (v == "hits") o.aov = AovKind::Hits;
+            else throw UsageError("--aov expects depth, normal or hits, got '" + v + "'");
+        } else if (a == "--precision") {
+            const std::string& v = value();
+            if (v == "double") o.double_precision = true;
+            else if (v == "float") o.double_precision = false;
+            else throw UsageError("--precision expects double or float, got '" + v + "'");
+        } else if (a == "-D") parse_define(value(), o);
+        else if (a.size() > 2 && a.rfind("-D", 0) == 0) parse_define(a.substr(2), o);
+        else if (a == "-I") o.eval.include_dirs.push_back(value());
+        else if (a.size() > 2 && a.rfind("-I", 0) == 0) o.eval.include_dirs.push_back(a.substr(2));
+        else if (a == "--max-call-depth") o.eval.limits.call_depth = parse_int<std::uint64_t>(a, value(), 1, 1'000'000);
+        else if (a == "--max-nesting") o.eval.limits.nesting = parse_int<std::uint64_t>(a, value(), 1, 100'000);
+        else if (a == "--max-iterations") o.eval.limits.loop_iterations = parse_int<std::uint64_t>(a, value(), 1, big * 16);
+        else if (a == "--max-list") o.eval.limits.list_elements = parse_int<std::uint64_t>(a, value(), 1, big);
+        else if (a == "--max-primitives") o.eval.limits.primitives = parse_int<std::uint64_t>(a, value(), 1, big);
+        else if (a == "--max-steps") o.eval.limits.steps = parse_int<std::uint64_t>(a, value(), 1, big * big);
+        else if (a == "--help" || a == "-h") { o.command = Command::Help; return o; }
+        else if (!a.empty() && a[0] == '-' && a != "-") throw UsageError("unknown option '" + a + "'");
+        else if (o.scene.empty()) o.scene = a;
+        else throw UsageError("more than one scene given ('" + o.scene + "' and '" + a + "')");
+    }
+    if (o.scene.empty()) throw UsageError(cmd + " needs a scene file");
+    if (o.crop && ((*o.crop)[2] > o.width || (*o.crop)[3] > o.height))
+        throw UsageError("--crop rectangle lies outside the " + std::to_string(o.width) + "x" +
+                         std::to_string(o.height) + " image");
+    if (o.output.empty()) {
+        std::string base = o.scene;
+        std::size_t slash = base.find_last_of('/');
+        std::size_t dot = base.find_last_of('.');
+        if (dot != std::string::npos && (slash == std::string::npos || dot > slash)) base.resize(dot);
+        o.output = base + ".png";
+    }
+    return o;
+}
+
+}  // namespace kerf::cli
