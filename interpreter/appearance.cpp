@@ -65,7 +65,7 @@ void Evaluator::scene_statement(std::string_view name, const ast::Stmt& st, Scop
     if (name == "camera") {
         Args a = match_args("camera", {"position", "look_at", "up", "fov", "projection", "height"}, st, s);
         if (!st.body.empty()) arg_error(a, "takes no children");
-        if (camera_loc_) arg_error(a, "camera is already defined at line " + std::to_string(camera_loc_->line));
+        if (camera_loc_) throw SourceError(st.loc, "camera is already defined at line " + std::to_string(camera_loc_->line));
         if (!a.has(0)) arg_error(a, "position is required");
         scene::Camera c;
         c.position = arg_vec3(a, 0, "position", {0, 0, 0});
@@ -111,7 +111,8 @@ void Evaluator::scene_statement(std::string_view name, const ast::Stmt& st, Scop
     } else {
         Args a = match_args("background", {"color"}, st, s);
         if (!st.body.empty()) arg_error(a, "takes no children");
-        if (background_loc_) arg_error(a, "background is already defined at line " + std::to_string(background_loc_->line));
+        if (background_loc_)
+            throw SourceError(st.loc, "background is already defined at line " + std::to_string(background_loc_->line));
         if (!a.has(0)) arg_error(a, "color is required");
         g.background = glm::dvec3(arg_color(a, 0, "color"));
         background_loc_ = &st.loc;
