@@ -1,5 +1,6 @@
 #include "interpreter/leaf_placement.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "interpreter/mesh_lowering.hpp"
@@ -19,9 +20,15 @@ bool all_finite(const csg::Affine& a) {
 // |det| relative to the product of the column lengths (Hadamard's bound):
 // 1 for any rotation/uniform scale, 0 for a flattening map, independent of
 // the overall size so tiny or huge models are not mistaken for singular.
+// (Columns are normalised first so the ratio cannot underflow.)
 double volume_ratio(const glm::dmat3& m) {
-    const double cols = glm::length(m[0]) * glm::length(m[1]) * glm::length(m[2]);
-    return cols > 0 ? std::abs(glm::determinant(m)) / cols : 0;
+    glm::dmat3 unit;
+    for (int c = 0; c < 3; ++c) {
+        const double len = glm::length(m[c]);
+        if (!(len > 0)) return 0;
+        unit[c] = m[c] / len;
+    }
+    return std::abs(glm::determinant(unit));
 }
 
 }  // namespace
@@ -32,7 +39,12 @@ void place_leaf(csg::Leaf& leaf, const csg::Affine& wfo, const std::vector<glm::
     if (!(volume_ratio(wfo.linear) > 1e-12))
         throw SourceError(loc, "the transforms around this primitive are singular (they flatten it to zero volume)");
     leaf.world_from_object = wfo;
-    leaf.object_from_world.linear = glm::inverse(wfo.linear);
+    // Inverting the rescaled matrix keeps the determinant from under- or
+    // overflowing for very small or very large (but regular) maps.
+    double size = 0;
+    for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r) size = std::max(size, std::abs(wfo.linear[c][r]));
+    leaf.object_from_world.linear = glm::inverse(wfo.linear / size) / size;
     leaf.object_from_world.offset = -(leaf.object_from_world.linear * wfo.offset);
     if (!all_finite(leaf.object_from_world))
         throw SourceError(loc, "the transforms around this primitive cannot be inverted");
