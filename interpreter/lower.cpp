@@ -9,6 +9,7 @@
 #include <string>
 #include <unordered_map>
 
+#include "interpreter/huge_pages.hpp"
 #include "interpreter/leaf_placement.hpp"
 #include "interpreter/mesh_lowering.hpp"
 #include "interpreter/primitive_bounds.hpp"
@@ -54,10 +55,18 @@ csg::Affine compose(const csg::Affine& parent, const glm::dmat4& child) {
 
 class TreeBuilder {
 public:
-    explicit TreeBuilder(const scene::SceneGraph& g) : g_(g) {}
+    // Leaves are written straight into the scene's vector (in creation order;
+    // the emitter compacts away the pruned ones in place) so the largest
+    // array of the scene is touched once.
+    TreeBuilder(const scene::SceneGraph& g, std::vector<csg::Leaf>& leaves) : leaves(leaves), g_(g) {
+        std::size_t prims = 0;
+        for (const scene::Node& n : g.nodes) prims += n.kind == NodeKind::Primitive;
+        reserve_huge(leaves, prims);
+        reserve_huge(nodes, g.nodes.size());
+    }
 
     std::vector<TNode> nodes;
-    std::vector<csg::Leaf> leaves;  // material/mesh/source hold graph indices until emit
+    std::vector<csg::Leaf>& leaves;  // material/mesh/source hold graph indices until emit
 
     // Returns the root TNode, or kNone for the empty solid.
     std::uint32_t build() {
@@ -117,7 +126,7 @@ private:
 
     std::uint32_t make_leaf(std::uint32_t gnode, const csg::Affine& xf, std::uint32_t material) {
         const scene::Node& gn = g_.nodes[gnode];
-        csg::Leaf leaf;
+        csg::Leaf& leaf = leaves.emplace_back();
         leaf.kind = static_cast<csg::PrimKind>(gn.prim);
         for (int i = 0; i < 6; ++i) leaf.p[i] = gn.p[i];
         leaf.material = material;
@@ -130,12 +139,14 @@ private:
             points = &g_.meshes[gn.index].points;
         }
         place_leaf(leaf, xf, points, gn.loc);
-        if (leaf.bounds.empty()) return kNone;  // e.g. a mesh without points
+        if (leaf.bounds.empty()) {  // e.g. a mesh without points
+            leaves.pop_back();
+            return kNone;
+        }
         TNode t;
         t.op = csg::Op::Leaf;
-        t.leaf = static_cast<std::uint32_t>(leaves.size());
+        t.leaf = static_cast<std::uint32_t>(leaves.size() - 1);
         t.bounds = leaf.bounds;
-        leaves.push_back(leaf);
         nodes.push_back(t);
         return static_cast<std::uint32_t>(nodes.size() - 1);
     }
@@ -282,7 +293,38 @@ public:
         s_.materials.push_back(csg::Material{});  // 0: the default light grey
         material_map_.assign(g_.materials.size(), kNone);
         mesh_map_.assign(g_.meshes.size(), kNone);
-        if (root == kNone) return;
+        if (root != kNone) {
+            reserve_huge(s_.nodes, t_.nodes.size());
+            reserve_huge(s_.children, t_.nodes.size());
+            emit_tree(root);
+        }
+        keep_emitted_leaves();
+    }
+
+private:
+    // Leaf i of the scene is builder leaf order_[i].
+    std::vector<std::uint32_t> order_;
+
+    // Pre-order visits leaves in the order the builder created them (every
+    // merge keeps operand order), so the survivors can be moved down in place.
+    void keep_emitted_leaves() {
+        std::vector<csg::Leaf>& leaves = s_.leaves;
+        bool increasing = true;
+        for (std::size_t k = 0; k < order_.size(); ++k) increasing = increasing && order_[k] >= k && (k == 0 || order_[k] > order_[k - 1]);
+        if (increasing) {
+            for (std::size_t k = 0; k < order_.size(); ++k)
+                if (order_[k] != k) leaves[k] = leaves[order_[k]];
+            leaves.resize(order_.size());
+        } else {  // not expected; kept so a future merge rule cannot corrupt leaves
+            std::vector<csg::Leaf> out;
+            out.reserve(order_.size());
+            for (std::uint32_t t : order_) out.push_back(leaves[t]);
+            leaves = std::move(out);
+        }
+        for (csg::Leaf& leaf : leaves) resolve(leaf);
+    }
+
+    void emit_tree(std::uint32_t root) {
         s_.root = 0;
         struct Item { std::uint32_t tnode, parent, slot; };
         std::vector<Item> stack{{root, kNone, kNone}};
@@ -298,9 +340,9 @@ public:
             node.bounds = tn.bounds;
             if (it.slot != kNone) s_.children[it.slot] = index;
             if (tn.op == csg::Op::Leaf) {
-                node.first = static_cast<std::uint32_t>(s_.leaves.size());
+                node.first = static_cast<std::uint32_t>(order_.size());
                 node.count = 0;
-                s_.leaves.push_back(resolve(t_.leaves[tn.leaf]));
+                order_.push_back(tn.leaf);
                 s_.nodes.push_back(node);
                 continue;
             }
@@ -316,7 +358,6 @@ public:
         }
     }
 
-private:
     const scene::SceneGraph& g_;
     TreeBuilder& t_;
     csg::Scene& s_;
@@ -336,11 +377,10 @@ private:
     const SourceFile* last_file_ = nullptr;
     std::uint32_t last_file_index_ = kNone;
 
-    csg::Leaf resolve(csg::Leaf leaf) {
+    void resolve(csg::Leaf& leaf) {
         leaf.material = material(leaf.material);
         if (leaf.mesh != kNone) leaf.mesh = mesh(leaf.mesh);
         leaf.source = source(g_.nodes[leaf.source].loc);
-        return leaf;
     }
 
     std::uint32_t material(std::uint32_t gm) {
@@ -427,9 +467,9 @@ void apply_scene_statements(const scene::SceneGraph& g, csg::Scene& s) {
 }  // namespace
 
 csg::Scene lower_to_csg(const scene::SceneGraph& graph) {
-    TreeBuilder builder(graph);
-    const std::uint32_t root = builder.build();
     csg::Scene scene;
+    TreeBuilder builder(graph, scene.leaves);
+    const std::uint32_t root = builder.build();
     Emitter(graph, builder, scene).emit(root);
     apply_scene_statements(graph, scene);
     return scene;
