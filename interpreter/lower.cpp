@@ -253,7 +253,55 @@ private:
             if (is_plane(c)) box = clip_by_halfspace(box, world_halfspace(leaves[nodes[c].leaf]));
         if (box.empty()) return kNone;
         if (f.count == 1) return single(f.head);
+        if (!trim_union_operands(f, box)) return kNone;
         return make_op(csg::Op::Intersection, f.head, f.tail, f.count, box);
+    }
+
+    // Only the parts of a union operand inside the intersection's box can
+    // matter: drop union members that miss it (and tighten the box with the
+    // trimmed unions). Returns false when some operand has nothing left,
+    // i.e. the intersection is empty.
+    bool trim_union_operands(Frame& f, Aabb& box) {
+        std::uint32_t c = f.head;
+        f.head = f.tail = kNone;
+        f.count = 0;
+        while (c != kNone) {
+            const std::uint32_t next = nodes[c].next;
+            if (nodes[c].op != csg::Op::Union) {
+                append(f, c);
+                c = next;
+                continue;
+            }
+            TNode& u = nodes[c];
+            std::uint32_t head = kNone, tail = kNone, count = 0;
+            Aabb ubox;
+            for (std::uint32_t m = u.head; m != kNone;) {
+                const std::uint32_t after = nodes[m].next;
+                if (!Aabb::overlap(nodes[m].bounds, box).empty()) {
+                    nodes[m].next = kNone;
+                    if (head == kNone) head = m; else nodes[tail].next = m;
+                    tail = m;
+                    ++count;
+                    ubox.extend(nodes[m].bounds);
+                }
+                m = after;
+            }
+            if (count == 0) return false;
+            box = Aabb::overlap(box, ubox);
+            if (count == 1 && nodes[head].op == csg::Op::Intersection) {
+                splice(f, nodes[head]);  // keep intersections flat
+            } else if (count == 1) {
+                append(f, head);
+            } else {
+                u.head = head;
+                u.tail = tail;
+                u.count = count;
+                u.bounds = ubox;
+                append(f, c);
+            }
+            c = next;
+        }
+        return !box.empty();
     }
 
     std::uint32_t finish_difference(Frame& f) {

@@ -170,3 +170,36 @@ TEST_CASE("meshes: only used ones are set up, each once however many leaves use 
         CHECK(glm::dot(glm::cross(bb - a, c - a), a - centroid) > 0);
     }
 }
+
+TEST_CASE("union members outside an intersection's box are dropped") {
+    GraphBuilder b;
+    // (a row of 5 spheres along x) ∩ (a box around the first two)
+    std::vector<std::uint32_t> row;
+    for (int i = 0; i < 5; ++i) row.push_back(b.translate({3.0 * i, 0, 0}, b.sphere(1)));
+    const auto top = b.inter({b.uni(row), b.box({-1, -1, -1}, {4, 1, 1})});
+    const csg::Scene s = lower_to_csg(b.finish({top}));
+    test::check_structure(s);
+    REQUIRE(s.nodes[0].op == csg::Op::Intersection);
+    const csg::Node& u = s.nodes[s.children[s.nodes[0].first]];
+    REQUIRE(u.op == csg::Op::Union);
+    CHECK(u.count == 2);
+    CHECK(u.bounds.hi.x == 4);
+    CHECK(s.leaves.size() == 3);
+
+    SECTION("a union trimmed to one intersection member is merged into the intersection") {
+        GraphBuilder c;
+        const auto lens = c.inter({c.sphere(1), c.translate({0.5, 0, 0}, c.sphere(1))});
+        const auto far = c.translate({10, 0, 0}, c.sphere(1));
+        const csg::Scene t = lower_to_csg(c.finish({c.inter({c.uni({lens, far}), c.cube(1)})}));
+        test::check_structure(t);
+        REQUIRE(t.nodes[0].op == csg::Op::Intersection);
+        CHECK(t.nodes[0].count == 3);
+    }
+    SECTION("a union with no member inside the box makes the intersection empty") {
+        GraphBuilder c;
+        // two spheres whose union box covers the cube but neither sphere's box does
+        const auto pair = c.uni({c.translate({-3, 0, 0}, c.sphere(1)), c.translate({3, 0, 0}, c.sphere(1))});
+        const csg::Scene t = lower_to_csg(c.finish({c.inter({pair, c.box({-0.5, -0.5, -0.5}, {0.5, 0.5, 0.5})})}));
+        CHECK(t.root == csg::kNone);
+    }
+}
