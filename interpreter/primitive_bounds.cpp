@@ -45,7 +45,9 @@ double primitive_support(csg::PrimKind kind, const double p[6], const glm::dvec3
         case csg::PrimKind::Hyperboloid:
             // Radius grows monotonically from the waist to r at z = ±h/2, so the
             // hull is the hull of the two cap disks: a cylinder of radius r.
-            return p[1] * len_xy(w) + 0.5 * p[0] * std::abs(w.z);
+            // (max() keeps a waist wider than the caps, which the spec does
+            // not allow, at least conservative.)
+            return std::max(p[1], p[2]) * len_xy(w) + 0.5 * p[0] * std::abs(w.z);
         case csg::PrimKind::Plane:
         case csg::PrimKind::Mesh:
             break;
