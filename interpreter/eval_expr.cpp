@@ -1,0 +1,311 @@
+// Expressions: names, operators, calls, list comprehensions, let/echo/assert.
+#include <cmath>
+#include <iostream>
+
+#include "interpreter/builtins.hpp"
+#include "interpreter/evaluator.hpp"
+#include "interpreter/operators.hpp"
+
+namespace kerf::eval {
+
+namespace {
+
+// Restores the dynamic `$` stack when a scope that may have pushed to it ends.
+struct DynRestore {
+    std::vector<Evaluator::DynVar>& dyn;
+    std::size_t size;
+    explicit DynRestore(std::vector<Evaluator::DynVar>& d) : dyn(d), size(d.size()) {}
+    ~DynRestore() { dyn.resize(size); }
+};
+
+bool is_dollar(std::string_view name) { return !name.empty() && name[0] == '$'; }
+
+std::string line_ref(const SourceLoc& here, const SourceLoc& there) {
+    if (there.file && here.file && there.file->path != here.file->path)
+        return there.file->path + ":" + std::to_string(there.line);
+    return "line " + std::to_string(there.line);
+}
+
+}  // namespace
+
+struct Evaluator::DepthGuard {
+    Evaluator& ev;
+    DepthGuard(Evaluator& e, const SourceLoc& loc) : ev(e) {
+        if (ev.depth_ + 1 > ev.opt_.limits.call_depth)
+            throw SourceError(loc, "call depth limit " + std::to_string(ev.opt_.limits.call_depth) + " exceeded");
+        ++ev.depth_;
+        ev.count_step(loc);
+    }
+    ~DepthGuard() { --ev.depth_; }
+};
+
+void Evaluator::count_step(const SourceLoc& loc) {
+    if (++steps_ > opt_.limits.steps)
+        throw SourceError(loc, "evaluation step limit " + std::to_string(opt_.limits.steps) + " exceeded");
+}
+
+void Evaluator::count_iterations(std::uint64_t n, const SourceLoc& loc) {
+    if (n > opt_.limits.loop_iterations || iterations_ + n > opt_.limits.loop_iterations)
+        throw SourceError(loc, "loop iteration limit " + std::to_string(opt_.limits.loop_iterations) + " exceeded");
+    iterations_ += n;
+}
+
+std::uint64_t Evaluator::iteration_count(const Value& v, const SourceLoc& loc) {
+    std::uint64_t n;
+    if (v.is_range()) n = v.as_range().size();
+    else if (v.is_list()) n = v.as_list().size();
+    else throw SourceError(loc, std::string("for: expected a range or a list, got ") + v.type_name());
+    count_iterations(n, loc);
+    return n;
+}
+
+void Evaluator::push_element(ValueList& out, Value v, const SourceLoc& loc) {
+    if (out.size() >= opt_.limits.list_elements)
+        throw SourceError(loc, "list size limit " + std::to_string(opt_.limits.list_elements) + " exceeded");
+    out.push_back(std::move(v));
+}
+
+Value Evaluator::lookup(const ast::Expr& e, Scope& s) {
+    std::string_view name = e.text;
+    if (is_dollar(name)) {
+        if (name == "$children") return Value(static_cast<double>(s.module ? s.module->child_count : 0));
+        for (auto it = dyn_.rbegin(); it != dyn_.rend(); ++it)
+            if (it->name == name) return it->value;
+        // Tessellation settings and animation time: accepted, ignored.
+        if (name == "$fn" || name == "$t") return Value(0);
+        if (name == "$fa") return Value(12);
+        if (name == "$fs") return Value(2);
+        if (name == "$preview") return Value(false);
+        throw SourceError(e.loc, "undefined name '" + e.text + "'");
+    }
+    for (Scope* sc = &s; sc; sc = sc->parent) {
+        if (VarSlot* v = sc->find_local(name)) {
+            if (!v->ready)
+                throw SourceError(e.loc, "'" + e.text + "' is used before its definition at " + line_ref(e.loc, *v->loc));
+            return v->value;
+        }
+    }
+    throw SourceError(e.loc, "undefined name '" + e.text + "'");
+}
+
+void Evaluator::bind(Scope& s, std::string_view name, Value v, const SourceLoc* loc) {
+    if (is_dollar(name)) {
+        dyn_.push_back(DynVar{name, std::move(v)});
+        return;
+    }
+    s.vars.push_back(VarSlot{name, std::move(v), loc, true});
+}
+
+// let (a = 1, b = a + 1): each binding sees the previous ones.
+void Evaluator::bind_sequential(const std::vector<ast::Binding>& bindings, Scope& s, const char* what) {
+    s.vars.reserve(s.vars.size() + bindings.size());
+    for (const ast::Binding& b : bindings) {
+        if (b.name.empty()) throw SourceError(b.loc, std::string(what) + ": expected name = value");
+        if (VarSlot* prev = s.find_local(b.name))
+            throw SourceError(b.loc, "'" + b.name + "' is already defined at " + line_ref(b.loc, *prev->loc));
+        Value v = b.value ? eval(*b.value, s) : Value();
+        bind(s, b.name, std::move(v), &b.loc);
+    }
+}
+
+void Evaluator::do_echo(const std::vector<ast::Binding>& args, Scope& s) {
+    std::string line = "ECHO: ";
+    bool first = true;
+    for (const ast::Binding& a : args) {
+        if (!first) line += ", ";
+        first = false;
+        if (!a.name.empty()) line += a.name + " = ";
+        line += a.value ? to_repr(eval(*a.value, s)) : std::string("undef");
+    }
+    if (opt_.echo) opt_.echo(line);
+    else std::cerr << line << '\n';
+}
+
+void Evaluator::do_assert(const std::vector<ast::Binding>& args, Scope& s, const SourceLoc& loc) {
+    const ast::Expr* cond = nullptr;
+    const ast::Expr* msg = nullptr;
+    std::size_t positional = 0;
+    for (const ast::Binding& a : args) {
+        std::string_view n = a.name;
+        if (n.empty()) n = positional == 0 ? "condition" : positional == 1 ? "message" : "";
+        if (a.name.empty()) ++positional;
+        if (n == "condition") cond = a.value.get();
+        else if (n == "message") msg = a.value.get();
+        else if (n.empty()) throw SourceError(a.loc, "too many arguments for 'assert' (takes 2)");
+        else throw SourceError(a.loc, "unknown argument '" + a.name + "' for 'assert'");
+    }
+    if (!cond) throw SourceError(loc, "assert: missing condition");
+    if (eval(*cond, s).truthy()) return;
+    if (msg) throw SourceError(loc, "assertion failed: " + to_str(eval(*msg, s)));
+    throw SourceError(loc, "assertion failed");
+}
+
+Value Evaluator::call_function(const ast::Expr& e, Scope& s) {
+    std::string_view name = e.text;
+    for (Scope* sc = &s; sc; sc = sc->parent) {
+        auto try_scope = [&](Scope* def_scope) -> const ast::Stmt* {
+            for (const ast::Stmt* f : def_scope->functions)
+                if (f->name == name) return f;
+            return nullptr;
+        };
+        Scope* def_scope = sc;
+        const ast::Stmt* def = try_scope(sc);
+        for (std::size_t i = 0; !def && i < sc->used.size(); ++i) {
+            def_scope = sc->used[i];
+            def = try_scope(def_scope);
+        }
+        if (!def) continue;
+        DepthGuard guard(*this, e.loc);
+        DynRestore restore(dyn_);
+        Scope callee(def_scope);
+        callee.module = def_scope->module;
+        bind_params(def->params, e.args, def->name, s, callee, e.loc);
+        if (!def->value) return Value();
+        return eval(*def->value, callee);
+    }
+    BuiltinFn fn = find_builtin(name);
+    if (!fn) throw SourceError(e.loc, "undefined function '" + e.text + "'");
+    count_step(e.loc);
+    Value small[4];
+    std::vector<Value> many;
+    Value* argv = small;
+    if (e.args.size() > 4) {
+        many.resize(e.args.size());
+        argv = many.data();
+    }
+    for (std::size_t i = 0; i < e.args.size(); ++i) {
+        const ast::Binding& a = e.args[i];
+        if (!a.name.empty()) throw SourceError(a.loc, "'" + e.text + "' takes no named arguments");
+        argv[i] = a.value ? eval(*a.value, s) : Value();
+    }
+    BuiltinContext ctx{e.loc, opt_.limits.list_elements};
+    return fn(std::span<const Value>(argv, e.args.size()), ctx);
+}
+
+void Evaluator::expand_for(const ast::Expr& e, std::size_t k, Scope& loop, ValueList& out) {
+    const ast::Binding& b = e.bindings[k];
+    if (b.name.empty() || !b.value) throw SourceError(b.loc, "for: expected name = range or list");
+    Value seq = eval(*b.value, loop);
+    std::uint64_t n = iteration_count(seq, b.loc);
+    bool dollar = is_dollar(b.name);
+    std::size_t slot = dollar ? dyn_.size() : loop.vars.size();
+    if (dollar) dyn_.push_back(DynVar{b.name, Value()});
+    else loop.vars.push_back(VarSlot{b.name, Value(), &b.loc, true});
+    for (std::uint64_t i = 0; i < n; ++i) {
+        count_step(b.loc);
+        Value item = seq.is_range() ? Value(seq.as_range().at(i)) : seq.as_list()[i];
+        if (dollar) dyn_[slot].value = std::move(item);
+        else loop.vars[slot].value = std::move(item);
+        if (k + 1 < e.bindings.size()) expand_for(e, k + 1, loop, out);
+        else expand_element(*e.items[0], loop, out);
+    }
+    if (dollar) dyn_.resize(slot);
+    else loop.vars.resize(slot);
+}
+
+void Evaluator::expand_element(const ast::Expr& e, Scope& s, ValueList& out) {
+    switch (e.kind) {
+        case ast::ExprKind::ListFor: {
+            DynRestore restore(dyn_);
+            Scope loop(&s);
+            loop.vars.reserve(e.bindings.size());
+            for (std::size_t i = 0; i < e.bindings.size(); ++i)
+                for (std::size_t j = 0; j < i; ++j)
+                    if (e.bindings[i].name == e.bindings[j].name)
+                        throw SourceError(e.bindings[i].loc, "'" + e.bindings[i].name + "' is already defined at " +
+                                                                 line_ref(e.bindings[i].loc, e.bindings[j].loc));
+            if (!e.bindings.empty()) expand_for(e, 0, loop, out);
+            return;
+        }
+        case ast::ExprKind::ListIf:
+            if (eval(*e.items[0], s).truthy()) expand_element(*e.items[1], s, out);
+            else if (e.items.size() > 2) expand_element(*e.items[2], s, out);
+            return;
+        case ast::ExprKind::ListLet: {
+            DynRestore restore(dyn_);
+            Scope ls(&s);
+            bind_sequential(e.bindings, ls, "let");
+            expand_element(*e.items[0], ls, out);
+            return;
+        }
+        default: push_element(out, eval(e, s), e.loc);
+    }
+}
+
+thread_local const char* stack_floor = nullptr;
+
+Value Evaluator::eval(const ast::Expr& e, Scope& s) {
+    using K = ast::ExprKind;
+    char probe;
+    if (stack_floor && &probe < stack_floor)
+        throw SourceError(e.loc, "evaluation nested too deeply (stack exhausted; lower the call depth limit)");
+    switch (e.kind) {
+        case K::Number: return Value(e.number);
+        case K::String: return Value::string(e.text);
+        case K::Bool: return Value(e.number != 0);
+        case K::Undef: return Value();
+        case K::Ident: return lookup(e, s);
+        case K::List: {
+            ValueList out;
+            out.reserve(e.items.size());
+            for (const ast::ExprPtr& item : e.items) expand_element(*item, s, out);
+            return Value::list(std::move(out));
+        }
+        case K::Range: {
+            double v[3];
+            for (std::size_t i = 0; i < e.items.size() && i < 3; ++i) {
+                Value x = eval(*e.items[i], s);
+                if (!x.is_number()) throw SourceError(e.items[i]->loc, std::string("range bound must be a number, got ") + x.type_name());
+                if (!std::isfinite(x.as_number())) throw SourceError(e.items[i]->loc, "range bound must be finite, got " + format_number(x.as_number()));
+                v[i] = x.as_number();
+            }
+            if (e.items.size() == 2) return Value::range(v[0], 1, v[1]);
+            if (v[1] == 0) throw SourceError(e.items[1]->loc, "range step must not be 0");
+            return Value::range(v[0], v[1], v[2]);
+        }
+        case K::Unary: {
+            Value a = eval(*e.items[0], s);
+            if (e.text == "!") return Value(!a.truthy());
+            return unary_op(e.text, a, e.loc);
+        }
+        case K::Binary: {
+            if (e.text == "&&") return Value(eval(*e.items[0], s).truthy() && eval(*e.items[1], s).truthy());
+            if (e.text == "||") return Value(eval(*e.items[0], s).truthy() || eval(*e.items[1], s).truthy());
+            Value a = eval(*e.items[0], s);
+            Value b = eval(*e.items[1], s);
+            return binary_op(e.text, a, b, e.loc);
+        }
+        case K::Ternary: return eval(*e.items[eval(*e.items[0], s).truthy() ? 1 : 2], s);
+        case K::Index: {
+            Value obj = eval(*e.items[0], s);
+            Value idx = eval(*e.items[1], s);
+            return index_value(obj, idx, e.loc);
+        }
+        case K::Member: {
+            Value obj = eval(*e.items[0], s);
+            int i = e.text == "x" ? 0 : e.text == "y" ? 1 : e.text == "z" ? 2 : -1;
+            if (i < 0) throw SourceError(e.loc, "unknown member '." + e.text + "'");
+            if (!obj.is_list()) throw SourceError(e.loc, "'." + e.text + "' needs a list, got " + obj.type_name());
+            return index_value(obj, Value(i), e.loc);
+        }
+        case K::Call: return call_function(e, s);
+        case K::Let: {
+            DynRestore restore(dyn_);
+            Scope ls(&s);
+            bind_sequential(e.bindings, ls, "let");
+            return e.items.empty() ? Value() : eval(*e.items[0], ls);
+        }
+        case K::Echo:
+            do_echo(e.args, s);
+            return e.items.empty() || !e.items[0] ? Value() : eval(*e.items[0], s);
+        case K::Assert:
+            do_assert(e.args, s, e.loc);
+            return e.items.empty() || !e.items[0] ? Value() : eval(*e.items[0], s);
+        case K::ListFor:
+        case K::ListIf:
+        case K::ListLet: throw SourceError(e.loc, "a list generator is only allowed inside [ ]");
+    }
+    throw SourceError(e.loc, "unknown expression");
+}
+
+}  // namespace kerf::eval

@@ -1,0 +1,480 @@
+// Statements: blocks and their bindings, modules and children(), for/let/
+// echo/assert/if, include and use.
+#include <filesystem>
+
+#include "grammar/parser.hpp"
+#include "interpreter/evaluator.hpp"
+
+#ifndef KERF_STDLIB_DIR
+#define KERF_STDLIB_DIR ""
+#endif
+
+namespace kerf::eval {
+
+namespace {
+
+struct DynRestore {
+    std::vector<Evaluator::DynVar>& dyn;
+    std::size_t size;
+    explicit DynRestore(std::vector<Evaluator::DynVar>& d) : dyn(d), size(d.size()) {}
+    ~DynRestore() { dyn.resize(size); }
+};
+
+bool is_dollar(std::string_view name) { return !name.empty() && name[0] == '$'; }
+
+std::string line_ref(const SourceLoc& here, const SourceLoc& there) {
+    if (there.file && here.file && there.file->path != here.file->path)
+        return there.file->path + ":" + std::to_string(there.line);
+    return "line " + std::to_string(there.line);
+}
+
+void check_unique(std::vector<const ast::Stmt*>& seen, const ast::Stmt& st, const char* what) {
+    for (const ast::Stmt* prev : seen)
+        if (prev->name == st.name)
+            throw SourceError(st.loc, std::string(what) + "'" + st.name + "' is already defined at " +
+                                          line_ref(st.loc, prev->loc));
+    seen.push_back(&st);
+}
+
+std::string chain_text(const std::vector<std::string>& chain, const std::string& last) {
+    std::string out;
+    for (const std::string& p : chain) out += p + " -> ";
+    return out + last;
+}
+
+}  // namespace
+
+struct ChainEntry;
+
+// ---------------------------------------------------------------- files
+
+std::string Evaluator::resolve_path(const ast::Stmt& st) {
+    namespace fs = std::filesystem;
+    fs::path name(st.name);
+    std::vector<fs::path> dirs;
+    if (name.is_absolute()) {
+        dirs.push_back(fs::path());
+    } else {
+        fs::path base = st.loc.file ? fs::path(st.loc.file->path).parent_path() : fs::path();
+        dirs.push_back(base.empty() ? fs::path(".") : base);
+        for (const std::string& d : opt_.include_dirs) dirs.emplace_back(d);
+        std::string stdlib = opt_.stdlib_dir.empty() ? std::string(KERF_STDLIB_DIR) : opt_.stdlib_dir;
+        if (!stdlib.empty()) dirs.emplace_back(stdlib);
+    }
+    for (const fs::path& d : dirs) {
+        fs::path p = d.empty() ? name : d / name;
+        std::error_code ec;
+        if (fs::is_regular_file(p, ec)) return p.lexically_normal().string();
+    }
+    throw SourceError(st.loc, "cannot find '" + st.name + "'");
+}
+
+const ast::Program& Evaluator::load_program(const std::string& path, const ast::Stmt& st) {
+    auto it = program_cache_.find(path);
+    if (it != program_cache_.end()) return *it->second;
+    std::shared_ptr<const SourceFile> file;
+    try {
+        file = read_source_file(path);
+    } catch (const IoError& e) {
+        throw SourceError(st.loc, e.what());
+    }
+    ParseLimits pl;
+    pl.max_nesting = opt_.limits.nesting;
+    programs_.push_back(parse_program(std::move(file), pl));
+    program_cache_[path] = &programs_.back();
+    return programs_.back();
+}
+
+static std::string canonical_key(const std::string& path) {
+    std::error_code ec;
+    auto c = std::filesystem::weakly_canonical(path, ec);
+    return ec ? path : c.string();
+}
+
+void Evaluator::flatten(const std::vector<ast::StmtPtr>& stmts, std::vector<const ast::Stmt*>& out) {
+    for (const ast::StmtPtr& sp : stmts) {
+        const ast::Stmt& st = *sp;
+        if (st.kind != ast::StmtKind::Include) {
+            out.push_back(&st);
+            continue;
+        }
+        std::string path = resolve_path(st);
+        std::string key = canonical_key(path);
+        for (const std::string& c : include_chain_)
+            if (canonical_key(c) == key)
+                throw SourceError(st.loc, "include cycle: " + chain_text(include_chain_, path));
+        const ast::Program& prog = load_program(path, st);
+        include_chain_.push_back(path);
+        try {
+            flatten(prog.stmts, out);
+        } catch (...) {
+            include_chain_.pop_back();
+            throw;
+        }
+        include_chain_.pop_back();
+    }
+}
+
+Scope* Evaluator::load_use(const ast::Stmt& st) {
+    std::string path = resolve_path(st);
+    std::string key = canonical_key(path);
+    auto it = use_scopes_.find(key);
+    if (it != use_scopes_.end()) return it->second.get();
+    for (const std::string& c : use_chain_)
+        if (canonical_key(c) == key) throw SourceError(st.loc, "use cycle: " + chain_text(use_chain_, path));
+    const ast::Program& prog = load_program(path, st);
+    std::vector<std::string> saved_includes;
+    saved_includes.swap(include_chain_);
+    include_chain_.push_back(path);
+    use_chain_.push_back(path);
+    auto scope = std::make_unique<Scope>(&root_);
+    try {
+        const BlockInfo& info = prepare(prog.stmts);
+        bind_block(info, *scope, false);  // its solids are not used
+    } catch (...) {
+        use_chain_.pop_back();
+        include_chain_.swap(saved_includes);
+        throw;
+    }
+    use_chain_.pop_back();
+    include_chain_.swap(saved_includes);
+    Scope* raw = scope.get();
+    use_scopes_[key] = std::move(scope);
+    return raw;
+}
+
+// ---------------------------------------------------------------- blocks
+
+const BlockInfo& Evaluator::prepare(const std::vector<ast::StmtPtr>& stmts) {
+    auto it = blocks_.find(&stmts);
+    if (it != blocks_.end()) return it->second;
+    bool pushed = false;
+    if (include_chain_.empty() && !stmts.empty() && stmts[0]->loc.file) {
+        include_chain_.push_back(stmts[0]->loc.file->path);
+        pushed = true;
+    }
+    std::vector<const ast::Stmt*> flat;
+    BlockInfo info;
+    try {
+        flatten(stmts, flat);
+        std::vector<const ast::Stmt*> assigned;
+        for (const ast::Stmt* st : flat) {
+            switch (st->kind) {
+                case ast::StmtKind::Assign:
+                    check_unique(assigned, *st, "");
+                    info.assigns.push_back(st);
+                    break;
+                case ast::StmtKind::FunctionDef: check_unique(info.functions, *st, "function "); break;
+                case ast::StmtKind::ModuleDef: check_unique(info.modules, *st, "module "); break;
+                case ast::StmtKind::Use: info.used.push_back(load_use(*st)); break;
+                case ast::StmtKind::Empty:
+                case ast::StmtKind::Include: break;
+                default: info.children.push_back(st);
+            }
+        }
+    } catch (...) {
+        if (pushed) include_chain_.pop_back();
+        throw;
+    }
+    if (pushed) include_chain_.pop_back();
+    info.needs_scope = !info.assigns.empty() || !info.functions.empty() || !info.modules.empty() || !info.used.empty();
+    return blocks_.emplace(&stmts, std::move(info)).first->second;
+}
+
+void Evaluator::bind_block(const BlockInfo& info, Scope& scope, bool top_level) {
+    scope.functions = info.functions;
+    scope.modules = info.modules;
+    scope.used = info.used;
+    scope.vars.reserve(info.assigns.size());
+    for (const ast::Stmt* a : info.assigns)
+        if (!is_dollar(a->name)) scope.vars.push_back(VarSlot{a->name, Value(), &a->loc, false});
+    std::size_t slot = 0;
+    for (const ast::Stmt* a : info.assigns) {
+        Value v;
+        Define* def = nullptr;
+        if (top_level)
+            for (Define& d : defines_)
+                if (d.name == a->name) def = &d;
+        if (def) {
+            def->used = true;
+            v = def->value;
+        } else if (a->value) {
+            v = eval(*a->value, scope);
+        }
+        if (is_dollar(a->name)) {
+            dyn_.push_back(DynVar{a->name, std::move(v)});
+        } else {
+            scope.vars[slot].value = std::move(v);
+            scope.vars[slot].ready = true;
+            ++slot;
+        }
+    }
+}
+
+void Evaluator::eval_block(const std::vector<ast::StmtPtr>& stmts, Scope& s, bool top_level) {
+    const BlockInfo& info = prepare(stmts);
+    if (!info.needs_scope) {
+        for (const ast::Stmt* c : info.children) eval_stmt(*c, s, top_level);
+        return;
+    }
+    DynRestore restore(dyn_);
+    Scope scope(&s);
+    bind_block(info, scope, top_level);
+    for (const ast::Stmt* c : info.children) eval_stmt(*c, scope, top_level);
+}
+
+// ---------------------------------------------------------------- calls
+
+void Evaluator::bind_params(const std::vector<ast::Binding>& params, const std::vector<ast::Binding>& args,
+                            const std::string& callee, Scope& caller, Scope& scope, const SourceLoc& loc) {
+    (void)loc;
+    constexpr std::size_t inline_params = 8;
+    Value given_small[inline_params];
+    bool have_small[inline_params] = {};
+    std::vector<Value> given_big;
+    std::vector<char> have_big;
+    Value* given = given_small;
+    bool* have = have_small;
+    std::unique_ptr<bool[]> have_heap;
+    if (params.size() > inline_params) {
+        given_big.resize(params.size());
+        have_heap = std::make_unique<bool[]>(params.size());
+        given = given_big.data();
+        have = have_heap.get();
+    }
+    std::size_t positional = 0;
+    std::size_t dyn_start = dyn_.size();
+    for (const ast::Binding& a : args) {
+        Value v = a.value ? eval(*a.value, caller) : Value();
+        std::size_t i;
+        if (a.name.empty()) {
+            if (positional >= params.size())
+                throw SourceError(a.loc, "too many arguments for '" + callee + "' (takes " +
+                                             std::to_string(params.size()) + ")");
+            i = positional++;
+        } else {
+            i = params.size();
+            for (std::size_t j = 0; j < params.size(); ++j)
+                if (params[j].name == a.name) i = j;
+            if (i == params.size()) {
+                // Any `$` variable may be passed to a module, as in OpenSCAD.
+                if (is_dollar(a.name)) {
+                    dyn_.push_back(DynVar{a.name, std::move(v)});
+                    continue;
+                }
+                throw SourceError(a.loc, "unknown argument '" + a.name + "' for '" + callee + "'");
+            }
+        }
+        if (have[i]) throw SourceError(a.loc, "argument '" + params[i].name + "' given twice to '" + callee + "'");
+        have[i] = true;
+        given[i] = std::move(v);
+    }
+    (void)dyn_start;
+    scope.vars.reserve(params.size());
+    for (std::size_t i = 0; i < params.size(); ++i) {
+        const ast::Binding& p = params[i];
+        Value v;
+        if (have[i]) v = std::move(given[i]);
+        else if (p.value) v = eval(*p.value, scope);  // defaults see earlier parameters
+        bind(scope, p.name, std::move(v), &p.loc);
+    }
+}
+
+void Evaluator::call_module(const ast::Stmt& def, Scope& def_scope, const ast::Stmt& call, Scope& s) {
+    if (depth_ + 1 > opt_.limits.call_depth)
+        throw SourceError(call.loc, "call depth limit " + std::to_string(opt_.limits.call_depth) + " exceeded");
+    ++depth_;
+    struct Dec {
+        std::uint64_t& d;
+        ~Dec() { --d; }
+    } dec{depth_};
+    DynRestore restore(dyn_);
+    ModuleFrame frame{&call.body, &s, prepare(call.body).children.size()};
+    Scope callee(&def_scope);
+    callee.module = &frame;
+    bind_params(def.params, call.args, def.name, s, callee, call.loc);
+    std::size_t mark = out_.mark();
+    eval_block(def.body, callee, false);
+    out_.group(mark, call.loc);
+}
+
+void Evaluator::stmt_children(const ast::Stmt& st, Scope& s) {
+    const ModuleFrame* frame = s.module;
+    if (!frame) throw SourceError(st.loc, "children() is only allowed inside a module");
+    if (st.args.size() > 1) throw SourceError(st.args[1].loc, "too many arguments for 'children' (takes 1)");
+    if (!st.args.empty() && !st.args[0].name.empty() && st.args[0].name != "index")
+        throw SourceError(st.args[0].loc, "unknown argument '" + st.args[0].name + "' for 'children'");
+    const BlockInfo& info = prepare(*frame->children);
+    std::vector<std::size_t> picks;
+    if (st.args.empty()) {
+        for (std::size_t i = 0; i < info.children.size(); ++i) picks.push_back(i);
+    } else {
+        Value v = eval(*st.args[0].value, s);
+        auto pick = [&](const Value& x) {
+            if (!x.is_number() || x.as_number() != std::floor(x.as_number()))
+                throw SourceError(st.loc, std::string("children: index must be an integer, got ") +
+                                              (x.is_number() ? format_number(x.as_number()) : x.type_name()));
+            double d = x.as_number();
+            if (d < 0 || d >= static_cast<double>(info.children.size()))
+                throw SourceError(st.loc, "children: index " + format_number(d) + " out of range (" +
+                                              std::to_string(info.children.size()) + " children)");
+            picks.push_back(static_cast<std::size_t>(d));
+        };
+        if (v.is_number()) pick(v);
+        else if (v.is_list()) for (const Value& x : v.as_list()) pick(x);
+        else if (v.is_range()) {
+            std::uint64_t n = v.as_range().size();
+            count_iterations(n, st.loc);
+            for (std::uint64_t i = 0; i < n; ++i) pick(Value(v.as_range().at(i)));
+        } else throw SourceError(st.loc, std::string("children: index must be a number, list or range, got ") + v.type_name());
+    }
+    std::size_t mark = out_.mark();
+    DynRestore restore(dyn_);
+    Scope cs(frame->caller);
+    Scope* where = frame->caller;
+    if (info.needs_scope) {
+        bind_block(info, cs, false);
+        where = &cs;
+    }
+    for (std::size_t i : picks) eval_stmt(*info.children[i], *where, false);
+    out_.group(mark, st.loc);
+}
+
+void Evaluator::stmt_for(const ast::Stmt& st, std::size_t k, Scope& loop, Scope& s) {
+    const ast::Binding& b = st.args[k];
+    if (b.name.empty() || !b.value) throw SourceError(b.loc, "for: expected name = range or list");
+    Value seq = eval(*b.value, loop);
+    std::uint64_t n = iteration_count(seq, b.loc);
+    bool dollar = is_dollar(b.name);
+    std::size_t slot = dollar ? dyn_.size() : loop.vars.size();
+    if (dollar) dyn_.push_back(DynVar{b.name, Value()});
+    else loop.vars.push_back(VarSlot{b.name, Value(), &b.loc, true});
+    const BlockInfo& body = prepare(st.body);
+    for (std::uint64_t i = 0; i < n; ++i) {
+        count_step(b.loc);
+        Value item = seq.is_range() ? Value(seq.as_range().at(i)) : seq.as_list()[i];
+        if (dollar) dyn_[slot].value = std::move(item);
+        else loop.vars[slot].value = std::move(item);
+        if (k + 1 < st.args.size()) {
+            stmt_for(st, k + 1, loop, s);
+        } else if (!body.needs_scope) {
+            for (const ast::Stmt* c : body.children) eval_stmt(*c, loop, false);
+        } else {
+            DynRestore restore(dyn_);
+            Scope scope(&loop);
+            bind_block(body, scope, false);
+            for (const ast::Stmt* c : body.children) eval_stmt(*c, scope, false);
+        }
+    }
+    if (dollar) dyn_.resize(slot);
+    else loop.vars.resize(slot);
+}
+
+// ---------------------------------------------------------------- statements
+
+void Evaluator::instantiate(const ast::Stmt& st, Scope& s, bool top_level) {
+    const std::string& name = st.name;
+    std::size_t mark = out_.mark();
+    if (name == "for") {
+        count_step(st.loc);
+        for (std::size_t i = 0; i < st.args.size(); ++i)
+            for (std::size_t j = 0; j < i; ++j)
+                if (st.args[i].name == st.args[j].name)
+                    throw SourceError(st.args[i].loc, "'" + st.args[i].name + "' is already defined at " +
+                                                          line_ref(st.args[i].loc, st.args[j].loc));
+        DynRestore restore(dyn_);
+        Scope loop(&s);
+        loop.vars.reserve(st.args.size());
+        if (!st.args.empty()) stmt_for(st, 0, loop, s);
+        out_.group(mark, st.loc);
+        return;
+    }
+    if (name == "let") {
+        count_step(st.loc);
+        DynRestore restore(dyn_);
+        Scope ls(&s);
+        bind_sequential(st.args, ls, "let");
+        eval_block(st.body, ls, false);
+        out_.group(mark, st.loc);
+        return;
+    }
+    if (name == "echo" || name == "assert") {
+        count_step(st.loc);
+        if (name == "echo") do_echo(st.args, s);
+        else do_assert(st.args, s, st.loc);
+        eval_block(st.body, s, false);
+        out_.group(mark, st.loc);
+        return;
+    }
+    if (name == "children") {
+        count_step(st.loc);
+        stmt_children(st, s);
+        return;
+    }
+    for (Scope* sc = &s; sc; sc = sc->parent) {
+        auto find = [&](Scope* where) -> const ast::Stmt* {
+            for (const ast::Stmt* m : where->modules)
+                if (m->name == name) return m;
+            return nullptr;
+        };
+        if (const ast::Stmt* def = find(sc)) {
+            count_step(st.loc);
+            call_module(*def, *sc, st, s);
+            return;
+        }
+        for (Scope* u : sc->used)
+            if (const ast::Stmt* def = find(u)) {
+                count_step(st.loc);
+                call_module(*def, *u, st, s);
+                return;
+            }
+    }
+    count_step(st.loc);
+    if (!builtin_module(st, s, top_level)) throw SourceError(st.loc, "unknown module '" + name + "'");
+}
+
+void Evaluator::eval_stmt(const ast::Stmt& st, Scope& s, bool top_level) {
+    char probe;
+    if (stack_floor && &probe < stack_floor)
+        throw SourceError(st.loc, "evaluation nested too deeply (stack exhausted; lower the call depth limit)");
+    switch (st.kind) {
+        case ast::StmtKind::Instantiate: {
+            switch (st.modifier) {
+                case ast::Modifier::Disable: return;  // `*`: not even evaluated, as in OpenSCAD
+                case ast::Modifier::Background: {     // `%`: evaluated (errors count), not rendered
+                    std::size_t mark = out_.mark();
+                    instantiate(st, s, top_level);
+                    out_.pending.resize(mark);
+                    return;
+                }
+                case ast::Modifier::Root: {  // `!`: the first one becomes the whole solid
+                    std::size_t mark = out_.mark();
+                    instantiate(st, s, top_level);
+                    out_.group(mark, st.loc);
+                    if (root_override_ < 0) {
+                        if (out_.mark() == mark) out_.make_node(mark, scene::NodeKind::Union, st.loc);
+                        root_override_ = out_.pending.back();
+                    }
+                    return;
+                }
+                default: instantiate(st, s, top_level); return;  // `#` renders normally
+            }
+        }
+        case ast::StmtKind::If: {
+            std::size_t mark = out_.mark();
+            bool cond = eval(*st.value, s).truthy();
+            eval_block(cond ? st.body : st.else_body, s, false);
+            out_.group(mark, st.loc);
+            return;
+        }
+        case ast::StmtKind::Block: {
+            std::size_t mark = out_.mark();
+            eval_block(st.body, s, false);
+            out_.group(mark, st.loc);
+            return;
+        }
+        default: return;  // definitions, include and use are handled by prepare()
+    }
+}
+
+}  // namespace kerf::eval

@@ -1,0 +1,164 @@
+// The tree-walking evaluator: expressions to Values, statements to scene
+// nodes. One Evaluator per run; it owns the included/used programs (so
+// every SourceLoc and AST pointer stays valid), the limit counters, the
+// dynamic `$` variables and the scene being built.
+//
+// Strictness decisions (spec §3 leaves them to the implementation):
+// - A block's assignments run first, in source order, before its other
+//   statements (as in OpenSCAD), so a statement may use a name assigned
+//   below it. An assignment's expression may use only names assigned above
+//   it in the same block: a later one is an error ("'y' is used before its
+//   definition at line 4"), where OpenSCAD would yield undef.
+// - Functions and modules are visible in their whole block (hoisted).
+// - Missing arguments without a default are undef; operators and solids
+//   reject undef where they need a value.
+// - Indexing out of range, or with a non-integer, is an error.
+#pragma once
+#include <cstdint>
+#include <deque>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "grammar/ast.hpp"
+#include "interpreter/interpreter.hpp"
+#include "interpreter/scene_builder.hpp"
+#include "interpreter/scope.hpp"
+#include "interpreter/value.hpp"
+
+namespace kerf::eval {
+
+// The lowest address evaluation may use on this thread's stack (set by the
+// thread that runs it, with a safety margin): a raised call-depth limit or
+// a pathological expression ends in a located error, never in a crash.
+extern thread_local const char* stack_floor;
+
+// A statement list after `include` expansion, with its definitions sorted
+// out: computed once per list and cached.
+struct BlockInfo {
+    std::vector<const ast::Stmt*> assigns;    // in source order
+    std::vector<const ast::Stmt*> functions;
+    std::vector<const ast::Stmt*> modules;
+    std::vector<Scope*> used;
+    std::vector<const ast::Stmt*> children;   // statements that produce solids or run (not definitions)
+    bool needs_scope = false;
+};
+
+// Arguments of a builtin module matched to its parameter names.
+struct Args {
+    const char* callee;
+    const ast::Stmt* call;
+    std::vector<Value> values;
+    std::vector<bool> given;
+
+    bool has(std::size_t i) const { return given[i]; }
+    const Value& operator[](std::size_t i) const { return values[i]; }
+};
+
+class Evaluator {
+public:
+    explicit Evaluator(const EvalOptions& options);
+    ~Evaluator();
+
+    // Evaluates a whole parsed program (the main file).
+    scene::SceneGraph run(ast::Program program);
+
+    // Expressions (eval_expr.cpp).
+    Value eval(const ast::Expr& e, Scope& s);
+
+private:
+    // eval_expr.cpp
+    Value lookup(const ast::Expr& e, Scope& s);
+    Value call_function(const ast::Expr& e, Scope& s);
+    void expand_element(const ast::Expr& e, Scope& s, ValueList& out);
+    void expand_for(const ast::Expr& e, std::size_t k, Scope& s, ValueList& out);
+    void push_element(ValueList& out, Value v, const SourceLoc& loc);
+    void do_echo(const std::vector<ast::Binding>& args, Scope& s);
+    void do_assert(const std::vector<ast::Binding>& args, Scope& s, const SourceLoc& loc);
+    std::uint64_t iteration_count(const Value& v, const SourceLoc& loc);
+
+    // eval_stmt.cpp
+    const BlockInfo& prepare(const std::vector<ast::StmtPtr>& stmts);
+    void flatten(const std::vector<ast::StmtPtr>& stmts, std::vector<const ast::Stmt*>& out);
+    void bind_block(const BlockInfo& info, Scope& scope, bool top_level);
+    void eval_block(const std::vector<ast::StmtPtr>& stmts, Scope& s, bool top_level = false);
+    void eval_stmt(const ast::Stmt& st, Scope& s, bool top_level);
+    void instantiate(const ast::Stmt& st, Scope& s, bool top_level);
+    void call_module(const ast::Stmt& def, Scope& def_scope, const ast::Stmt& call, Scope& s);
+    void stmt_for(const ast::Stmt& st, std::size_t k, Scope& loop, Scope& s);
+    void stmt_children(const ast::Stmt& st, Scope& s);
+    Scope* load_use(const ast::Stmt& st);
+    std::string resolve_path(const ast::Stmt& st);
+    const ast::Program& load_program(const std::string& path, const ast::Stmt& st);
+
+    // Binding helpers (eval_stmt.cpp): `$` names go to the dynamic stack.
+    void bind_params(const std::vector<ast::Binding>& params, const std::vector<ast::Binding>& args,
+                     const std::string& callee, Scope& caller, Scope& callee_scope, const SourceLoc& loc);
+    void bind(Scope& s, std::string_view name, Value v, const SourceLoc* loc);
+    void bind_sequential(const std::vector<ast::Binding>& bindings, Scope& s, const char* what);
+
+    // builtin_modules.cpp: solids, booleans, transforms, appearance, scene.
+    bool builtin_module(const ast::Stmt& st, Scope& s, bool top_level);
+    Args match_args(const char* callee, std::initializer_list<const char*> names, const ast::Stmt& st, Scope& s);
+    void add_primitive(scene::PrimKind kind, std::initializer_list<double> p, const SourceLoc& loc,
+                       std::uint32_t index = 0);
+    void solid(std::string_view name, const ast::Stmt& st, Scope& s);
+    void transform(std::string_view name, const ast::Stmt& st, Scope& s);
+    void appearance(std::string_view name, const ast::Stmt& st, Scope& s);
+    void scene_statement(std::string_view name, const ast::Stmt& st, Scope& s, bool top_level);
+
+    // Limits.
+    void count_step(const SourceLoc& loc);
+    void count_iterations(std::uint64_t n, const SourceLoc& loc);
+    struct DepthGuard;
+
+public:
+    // `$` variables: dynamically scoped as in OpenSCAD.
+    struct DynVar {
+        std::string_view name;
+        Value value;
+    };
+
+private:
+    const EvalOptions& opt_;
+    SceneBuilder out_;
+    Scope root_;  // PI and other constants; parent of every file's scope
+    std::vector<DynVar> dyn_;
+    std::uint64_t depth_ = 0, steps_ = 0, iterations_ = 0, primitives_ = 0;
+
+    std::unordered_map<const void*, BlockInfo> blocks_;
+    std::deque<ast::Program> programs_;                      // included/used files, kept alive
+    std::unordered_map<std::string, const ast::Program*> program_cache_;
+    std::vector<std::string> include_chain_;                 // for cycle errors
+    std::unordered_map<std::string, std::unique_ptr<Scope>> use_scopes_;
+    std::vector<std::string> use_chain_;
+
+    // -D overrides of top-level bindings.
+    struct Define {
+        std::string name;
+        Value value;
+        bool used = false;
+    };
+    std::vector<Define> defines_;
+    const void* main_block_ = nullptr;
+    std::deque<ast::Program> define_programs_;
+
+    // Appearance: the innermost material, so color() inside material() keeps
+    // the material's other parameters.
+    struct CurrentMaterial {
+        scene::Material m;
+        bool interior_set = false;
+    };
+    std::vector<CurrentMaterial> materials_;
+
+    std::int64_t root_override_ = -1;  // the first `!` subtree
+    const SourceLoc* camera_loc_ = nullptr;
+    const SourceLoc* background_loc_ = nullptr;
+
+    void parse_defines();
+    friend struct DepthGuard;
+};
+
+}  // namespace kerf::eval

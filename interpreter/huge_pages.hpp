@@ -1,0 +1,20 @@
+// Lowering a million leaves writes ~0.5 GB of fresh memory; on virtual
+// machines each 4 KiB page fault is expensive enough to dominate the run.
+// Asking for transparent huge pages on the big arrays (a hint, ignored where
+// unsupported) cuts the number of faults by 512×.
+#pragma once
+#include <cstddef>
+#include <vector>
+
+namespace kerf {
+
+void advise_huge_pages(void* data, std::size_t bytes);
+
+// Reserves `count` elements and advises huge pages over the whole buffer.
+template <typename T>
+void reserve_huge(std::vector<T>& v, std::size_t count) {
+    v.reserve(count);
+    advise_huge_pages(v.data(), v.capacity() * sizeof(T));
+}
+
+}  // namespace kerf

@@ -1,0 +1,143 @@
+// Entry points: parse and evaluate on a thread with a large stack (so the
+// call-depth limit, not the C stack, ends deep recursion), -D overrides,
+// and the top-level union.
+#include "interpreter/interpreter.hpp"
+
+#include <pthread.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <exception>
+#include <functional>
+
+#include "interpreter/evaluator.hpp"
+
+namespace kerf {
+
+namespace eval {
+
+Evaluator::Evaluator(const EvalOptions& options) : opt_(options) {
+    static const SourceLoc builtin_loc{};
+    root_.vars.push_back(VarSlot{"PI", Value(M_PI), &builtin_loc, true});
+    // Typical large scenes: a transform (and maybe an appearance) per leaf.
+    std::size_t prims = static_cast<std::size_t>(std::min<std::uint64_t>(options.limits.primitives, 1u << 24));
+    out_.max_nodes = 3 * prims + 1024;
+    out_.max_matrices = prims + 1024;
+}
+
+Evaluator::~Evaluator() = default;
+
+void Evaluator::parse_defines() {
+    for (const auto& [name, text] : opt_.defines) {
+        auto file = std::make_shared<SourceFile>();
+        file->path = "-D " + name;
+        file->text = name + " = " + text + ";";
+        auto fail = [&](const std::string& msg) {
+            throw SourceError(SourceLoc{}, "-D " + name + "=" + text + ": " + msg);
+        };
+        const ast::Expr* expr = nullptr;
+        try {
+            ParseLimits pl;
+            pl.max_nesting = opt_.limits.nesting;
+            define_programs_.push_back(parse_program(file, pl));
+        } catch (const SourceError& e) {
+            fail(e.diagnostic().message);
+        }
+        const ast::Program& p = define_programs_.back();
+        if (p.stmts.size() == 1 && p.stmts[0]->kind == ast::StmtKind::Assign && p.stmts[0]->name == name)
+            expr = p.stmts[0]->value.get();
+        if (!expr) fail("expected NAME=EXPRESSION");
+        Value v;
+        try {
+            v = eval(*expr, root_);
+        } catch (const SourceError& e) {
+            fail(e.diagnostic().message);
+        }
+        defines_.push_back(Define{name, std::move(v), false});
+    }
+}
+
+scene::SceneGraph Evaluator::run(ast::Program program) {
+    programs_.push_back(std::move(program));
+    const ast::Program& prog = programs_.back();
+    parse_defines();
+    const BlockInfo& info = prepare(prog.stmts);
+    for (const Define& d : defines_) {
+        bool found = false;
+        for (const ast::Stmt* a : info.assigns) found = found || a->name == d.name;
+        if (!found) throw SourceError(SourceLoc{}, "-D " + d.name + ": the script has no top-level binding '" + d.name + "'");
+    }
+    eval_block(prog.stmts, root_, true);
+    SourceLoc top{prog.file, 1, 1};
+    if (root_override_ >= 0) {
+        out_.pending.assign(1, static_cast<std::uint32_t>(root_override_));
+    }
+    out_.graph.root = out_.make_node(0, scene::NodeKind::Union, top);
+    out_.pending.clear();
+    return std::move(out_.graph);
+}
+
+}  // namespace eval
+
+namespace {
+
+// Runs fn on a thread with a 512 MB stack (address space only; pages are
+// committed as they are touched) and rethrows what it threw.
+constexpr std::size_t big_stack = std::size_t(512) << 20;
+
+void run_with_big_stack(const std::function<void()>& fn) {
+    struct Task {
+        const std::function<void()>* fn;
+        std::exception_ptr error;
+        std::size_t stack;
+    } task{&fn, nullptr, big_stack};
+    auto body = [](void* p) -> void* {
+        auto* t = static_cast<Task*>(p);
+        char top;
+        // Keep 1/8 of the stack (at least 1 MB) for what runs below the
+        // last check: builtins, formatting, exception unwinding.
+        std::size_t margin = std::max<std::size_t>(t->stack / 8, std::size_t(1) << 20);
+        auto top_addr = reinterpret_cast<std::uintptr_t>(&top);
+        eval::stack_floor = reinterpret_cast<const char*>(top_addr - (t->stack - margin));
+        try {
+            (*t->fn)();
+        } catch (...) {
+            t->error = std::current_exception();
+        }
+        eval::stack_floor = nullptr;
+        return nullptr;
+    };
+    pthread_attr_t attr;
+    pthread_t thread;
+    bool started = pthread_attr_init(&attr) == 0 &&
+                   pthread_attr_setstacksize(&attr, big_stack) == 0 &&
+                   pthread_create(&thread, &attr, body, &task) == 0;
+    pthread_attr_destroy(&attr);
+    if (started) pthread_join(thread, nullptr);
+    if (!started) {  // no thread available: use the current (default 8 MB) stack
+        task.stack = std::size_t(8) << 20;
+        body(&task);
+    }
+    if (task.error) std::rethrow_exception(task.error);
+}
+
+}  // namespace
+
+EvalResult evaluate_source(std::shared_ptr<const SourceFile> file, const EvalOptions& options) {
+    EvalResult result;
+    run_with_big_stack([&] {
+        ParseLimits pl;
+        pl.max_nesting = options.limits.nesting;
+        ast::Program program = parse_program(file, pl);
+        eval::Evaluator ev(options);
+        result.graph = ev.run(std::move(program));
+    });
+    return result;
+}
+
+EvalResult evaluate_file(const std::string& path, const EvalOptions& options) {
+    return evaluate_source(read_source_file(path), options);
+}
+
+}  // namespace kerf

@@ -1,0 +1,216 @@
+#include "interpreter/operators.hpp"
+
+#include <cmath>
+#include <string>
+
+namespace kerf {
+
+namespace {
+
+[[noreturn]] void type_error(std::string_view op, const Value& a, const Value& b, const SourceLoc& loc) {
+    throw SourceError(loc, "cannot apply '" + std::string(op) + "' to " + a.type_name() + " and " +
+                               b.type_name());
+}
+
+[[noreturn]] void length_error(std::string_view op, std::size_t n, std::size_t m, const SourceLoc& loc) {
+    throw SourceError(loc, "'" + std::string(op) + "' needs lists of equal length (got " +
+                               std::to_string(n) + " and " + std::to_string(m) + ")");
+}
+
+double num_op(char op, double x, double y) {
+    switch (op) {
+        case '+': return x + y;
+        case '-': return x - y;
+        case '*': return x * y;
+        case '/': return x / y;
+        case '%': return std::fmod(x, y);
+        default: return std::pow(x, y);
+    }
+}
+
+// Element-wise + and - on numbers or (nested) lists of equal shape.
+Value elementwise(std::string_view op, const Value& a, const Value& b, const SourceLoc& loc) {
+    if (a.is_number() && b.is_number()) return Value(num_op(op[0], a.as_number(), b.as_number()));
+    if (!a.is_list() || !b.is_list()) type_error(op, a, b, loc);
+    const ValueList& x = a.as_list();
+    const ValueList& y = b.as_list();
+    if (x.size() != y.size()) length_error(op, x.size(), y.size(), loc);
+    ValueList out;
+    out.reserve(x.size());
+    for (std::size_t i = 0; i < x.size(); ++i) out.push_back(elementwise(op, x[i], y[i], loc));
+    return Value::list(std::move(out));
+}
+
+// list op scalar (or scalar op list when scalar_left), recursively.
+Value scale_list(char op, const Value& v, double s, bool scalar_left, const Value& a, const Value& b,
+                 const SourceLoc& loc) {
+    if (v.is_number())
+        return Value(scalar_left ? num_op(op, s, v.as_number()) : num_op(op, v.as_number(), s));
+    if (!v.is_list()) type_error(std::string(1, op), a, b, loc);
+    ValueList out;
+    out.reserve(v.as_list().size());
+    for (const Value& e : v.as_list()) out.push_back(scale_list(op, e, s, scalar_left, a, b, loc));
+    return Value::list(std::move(out));
+}
+
+bool all_lists(const ValueList& l) {
+    for (const Value& e : l)
+        if (!e.is_list()) return false;
+    return true;
+}
+
+double dot(const ValueList& x, const ValueList& y, const Value& a, const Value& b, const SourceLoc& loc) {
+    if (x.size() != y.size()) length_error("*", x.size(), y.size(), loc);
+    double s = 0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        if (!x[i].is_number() || !y[i].is_number()) type_error("*", a, b, loc);
+        s += x[i].as_number() * y[i].as_number();
+    }
+    return s;
+}
+
+// vector·vector, matrix·vector, vector·matrix, matrix·matrix.
+Value multiply_lists(const Value& a, const Value& b, const SourceLoc& loc) {
+    const ValueList& x = a.as_list();
+    const ValueList& y = b.as_list();
+    bool a_vec = a.is_vector(), b_vec = b.is_vector();
+    bool a_mat = !x.empty() && all_lists(x), b_mat = !y.empty() && all_lists(y);
+    if (a_vec && b_vec) return Value(dot(x, y, a, b, loc));
+    if (a_mat && b_vec) {
+        ValueList out;
+        out.reserve(x.size());
+        for (const Value& row : x) out.push_back(Value(dot(row.as_list(), y, a, b, loc)));
+        return Value::list(std::move(out));
+    }
+    if (b_mat) {
+        // Columns of b: every row must have the same length.
+        std::size_t cols = y[0].as_list().size();
+        for (const Value& row : y) {
+            if (!row.is_vector()) type_error("*", a, b, loc);
+            if (row.as_list().size() != cols) throw SourceError(loc, "'*' needs a matrix with rows of equal length");
+        }
+        auto times_vector = [&](const ValueList& v) {
+            if (v.size() != y.size()) length_error("*", v.size(), y.size(), loc);
+            ValueList out;
+            out.reserve(cols);
+            for (std::size_t j = 0; j < cols; ++j) {
+                double s = 0;
+                for (std::size_t i = 0; i < v.size(); ++i) {
+                    if (!v[i].is_number()) type_error("*", a, b, loc);
+                    s += v[i].as_number() * y[i].as_list()[j].as_number();
+                }
+                out.push_back(Value(s));
+            }
+            return Value::list(std::move(out));
+        };
+        if (a_vec) return times_vector(x);
+        if (a_mat) {
+            ValueList out;
+            out.reserve(x.size());
+            for (const Value& row : x) out.push_back(times_vector(row.as_list()));
+            return Value::list(std::move(out));
+        }
+    }
+    type_error("*", a, b, loc);
+}
+
+int compare(std::string_view op, const Value& a, const Value& b, const SourceLoc& loc, bool& unordered) {
+    unordered = false;
+    if (a.is_number() && b.is_number()) {
+        double x = a.as_number(), y = b.as_number();
+        if (std::isnan(x) || std::isnan(y)) unordered = true;
+        return x < y ? -1 : (x > y ? 1 : 0);
+    }
+    if (a.is_string() && b.is_string()) return a.as_string().compare(b.as_string()) < 0 ? -1 : (a.as_string() == b.as_string() ? 0 : 1);
+    if (a.is_bool() && b.is_bool()) return int(a.as_bool()) - int(b.as_bool());
+    type_error(op, a, b, loc);
+}
+
+}  // namespace
+
+Value unary_op(std::string_view op, const Value& a, const SourceLoc& loc) {
+    if (a.is_number()) return Value(op == "-" ? -a.as_number() : a.as_number());
+    if (a.is_list()) {
+        ValueList out;
+        out.reserve(a.as_list().size());
+        for (const Value& e : a.as_list()) out.push_back(unary_op(op, e, loc));
+        return Value::list(std::move(out));
+    }
+    throw SourceError(loc, "cannot apply unary '" + std::string(op) + "' to " + a.type_name());
+}
+
+Value binary_op(std::string_view op, const Value& a, const Value& b, const SourceLoc& loc) {
+    if (op == "==") return Value(a == b);
+    if (op == "!=") return Value(a != b);
+    if (op == "<" || op == "<=" || op == ">" || op == ">=") {
+        bool unordered;
+        int c = compare(op, a, b, loc, unordered);
+        if (unordered) return Value(false);
+        if (op == "<") return Value(c < 0);
+        if (op == "<=") return Value(c <= 0);
+        if (op == ">") return Value(c > 0);
+        return Value(c >= 0);
+    }
+    if (op.size() != 1) throw SourceError(loc, "unknown operator '" + std::string(op) + "'");
+    char o = op[0];
+    if (a.is_number() && b.is_number()) return Value(num_op(o, a.as_number(), b.as_number()));
+    switch (o) {
+        case '+':
+        case '-': return elementwise(op, a, b, loc);
+        case '*':
+            if (a.is_list() && b.is_number()) return scale_list('*', a, b.as_number(), false, a, b, loc);
+            if (a.is_number() && b.is_list()) return scale_list('*', b, a.as_number(), true, a, b, loc);
+            if (a.is_list() && b.is_list()) return multiply_lists(a, b, loc);
+            break;
+        case '/':
+            if (a.is_list() && b.is_number()) return scale_list('/', a, b.as_number(), false, a, b, loc);
+            break;
+        default: break;
+    }
+    type_error(op, a, b, loc);
+}
+
+std::size_t utf8_length(std::string_view s) {
+    std::size_t n = 0;
+    for (unsigned char c : s)
+        if ((c & 0xC0) != 0x80) ++n;
+    return n;
+}
+
+Value index_value(const Value& object, const Value& index, const SourceLoc& loc) {
+    if (!index.is_number())
+        throw SourceError(loc, std::string("index must be a number, got ") + index.type_name());
+    double d = index.as_number();
+    if (d != std::floor(d)) throw SourceError(loc, "index " + format_number(d) + " is not an integer");
+    auto out_of_range = [&](std::uint64_t len) {
+        return SourceError(loc, "index " + format_number(d) + " out of range (length " + std::to_string(len) + ")");
+    };
+    if (object.is_list()) {
+        const ValueList& l = object.as_list();
+        if (d < 0 || d >= static_cast<double>(l.size())) throw out_of_range(l.size());
+        return l[static_cast<std::size_t>(d)];
+    }
+    if (object.is_range()) {
+        std::uint64_t n = object.as_range().size();
+        if (d < 0 || d >= static_cast<double>(n)) throw out_of_range(n);
+        return Value(object.as_range().at(static_cast<std::uint64_t>(d)));
+    }
+    if (object.is_string()) {
+        const std::string& s = object.as_string();
+        std::size_t n = utf8_length(s);
+        if (d < 0 || d >= static_cast<double>(n)) throw out_of_range(n);
+        std::size_t want = static_cast<std::size_t>(d), count = 0, i = 0;
+        for (; i < s.size(); ++i) {
+            if ((static_cast<unsigned char>(s[i]) & 0xC0) != 0x80) {
+                if (count == want) break;
+                ++count;
+            }
+        }
+        std::size_t j = i + 1;
+        while (j < s.size() && (static_cast<unsigned char>(s[j]) & 0xC0) == 0x80) ++j;
+        return Value::string(s.substr(i, j - i));
+    }
+    throw SourceError(loc, std::string("cannot index a ") + object.type_name());
+}
+
+}  // namespace kerf

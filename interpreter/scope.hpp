@@ -1,0 +1,52 @@
+// Lexical scopes of the evaluator (spec §3). A Scope lives on the C++ stack
+// of the block, call or loop that made it and points to its parent, so a
+// binding costs no heap allocation beyond its slot; functions and modules
+// are not first-class values, so no definition can outlive its scope, and
+// `use`d files' scopes live as long as the evaluator.
+#pragma once
+#include <string_view>
+#include <vector>
+
+#include "grammar/ast.hpp"
+#include "interpreter/value.hpp"
+
+namespace kerf::eval {
+
+struct Scope;
+
+// The module instantiation whose body is being evaluated: what children()
+// and $children refer to.
+struct ModuleFrame {
+    const std::vector<ast::StmtPtr>* children = nullptr;  // call-site child statements
+    Scope* caller = nullptr;                              // the scope they evaluate in
+    std::size_t child_count = 0;                          // $children
+};
+
+struct VarSlot {
+    std::string_view name;
+    Value value;
+    const SourceLoc* loc = nullptr;  // where it is bound (for "already defined")
+    bool ready = false;              // false while the block's earlier assignments run
+};
+
+struct Scope {
+    Scope* parent = nullptr;
+    const ModuleFrame* module = nullptr;  // inherited from the parent
+    std::vector<VarSlot> vars;
+    std::vector<const ast::Stmt*> functions;
+    std::vector<const ast::Stmt*> modules;
+    std::vector<Scope*> used;  // top-level scopes of `use`d files
+
+    Scope() = default;
+    explicit Scope(Scope* p) : parent(p), module(p ? p->module : nullptr) {}
+    Scope(const Scope&) = delete;
+    Scope& operator=(const Scope&) = delete;
+
+    VarSlot* find_local(std::string_view name) {
+        for (VarSlot& v : vars)
+            if (v.name == name) return &v;
+        return nullptr;
+    }
+};
+
+}  // namespace kerf::eval

@@ -1,0 +1,158 @@
+#include "interpreter/value.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <algorithm>
+#include <limits>
+
+namespace kerf {
+
+std::uint64_t Range::size() const {
+    if (!std::isfinite(start) || !std::isfinite(step) || !std::isfinite(end) || step == 0) return 0;
+    double span = end - start;
+    if ((step > 0 && span < 0) || (step < 0 && span > 0)) return 0;
+    double steps = span / step;
+    constexpr double cap = 4.0e18;
+    if (!(steps < cap)) return static_cast<std::uint64_t>(cap);
+    auto n = static_cast<std::uint64_t>(std::floor(steps));
+    // Tolerate rounding in fractional steps ([0:0.1:0.3] has 4 elements):
+    // the next element counts when it lands on `end` up to rounding.
+    double next = start + static_cast<double>(n + 1) * step;
+    double tol = 1e-9 * std::abs(step);
+    if (std::abs(next - end) <= tol) ++n;
+    return n + 1;
+}
+
+const char* type_name(ValueType t) {
+    switch (t) {
+        case ValueType::Undef: return "undef";
+        case ValueType::Bool: return "bool";
+        case ValueType::Number: return "number";
+        case ValueType::String: return "string";
+        case ValueType::List: return "list";
+        case ValueType::Range: return "range";
+    }
+    return "value";
+}
+
+Value Value::string(std::string s) {
+    Value v;
+    v.v_ = std::make_shared<const std::string>(std::move(s));
+    return v;
+}
+
+Value Value::list(ValueList items) {
+    Value v;
+    v.v_ = std::make_shared<const ValueList>(std::move(items));
+    return v;
+}
+
+Value Value::list_shared(std::shared_ptr<const ValueList> items) {
+    Value v;
+    v.v_ = items ? std::move(items) : std::make_shared<const ValueList>();
+    return v;
+}
+
+bool Value::truthy() const {
+    switch (type()) {
+        case ValueType::Undef: return false;
+        case ValueType::Bool: return as_bool();
+        case ValueType::Number: return as_number() != 0;
+        case ValueType::String: return !as_string().empty();
+        case ValueType::List: return !as_list().empty();
+        case ValueType::Range: return true;
+    }
+    return false;
+}
+
+bool Value::operator==(const Value& o) const {
+    if (type() != o.type()) return false;
+    switch (type()) {
+        case ValueType::Undef: return true;
+        case ValueType::Bool: return as_bool() == o.as_bool();
+        case ValueType::Number: return as_number() == o.as_number();
+        case ValueType::String: return as_string() == o.as_string();
+        case ValueType::List: {
+            const ValueList& a = as_list();
+            const ValueList& b = o.as_list();
+            if (&a == &b) return true;
+            if (a.size() != b.size()) return false;
+            for (std::size_t i = 0; i < a.size(); ++i)
+                if (a[i] != b[i]) return false;
+            return true;
+        }
+        case ValueType::Range: return as_range() == o.as_range();
+    }
+    return false;
+}
+
+bool Value::is_vector() const {
+    if (!is_list()) return false;
+    for (const Value& e : as_list())
+        if (!e.is_number()) return false;
+    return true;
+}
+
+bool Value::is_vector(std::size_t n) const { return is_list() && as_list().size() == n && is_vector(); }
+
+std::string format_number(double n) {
+    if (std::isnan(n)) return "nan";
+    if (std::isinf(n)) return n > 0 ? "inf" : "-inf";
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", n);
+    return buf;
+}
+
+namespace {
+void append_quoted(std::string& out, const std::string& s) {
+    out += '"';
+    for (char c : s) {
+        if (c == '"' || c == '\\') out += '\\';
+        out += c;
+    }
+    out += '"';
+}
+
+void append(std::string& out, const Value& v, bool quote_strings) {
+    switch (v.type()) {
+        case ValueType::Undef: out += "undef"; return;
+        case ValueType::Bool: out += v.as_bool() ? "true" : "false"; return;
+        case ValueType::Number: out += format_number(v.as_number()); return;
+        case ValueType::String:
+            if (quote_strings) append_quoted(out, v.as_string());
+            else out += v.as_string();
+            return;
+        case ValueType::List: {
+            out += '[';
+            bool first = true;
+            for (const Value& e : v.as_list()) {
+                if (!first) out += ", ";
+                first = false;
+                append(out, e, true);
+            }
+            out += ']';
+            return;
+        }
+        case ValueType::Range: {
+            const Range& r = v.as_range();
+            out += '[' + format_number(r.start) + " : " + format_number(r.step) + " : " +
+                   format_number(r.end) + ']';
+            return;
+        }
+    }
+}
+}  // namespace
+
+std::string to_str(const Value& v) {
+    std::string out;
+    append(out, v, false);
+    return out;
+}
+
+std::string to_repr(const Value& v) {
+    std::string out;
+    append(out, v, true);
+    return out;
+}
+
+}  // namespace kerf

@@ -1,0 +1,106 @@
+// The values of the language (spec §2): undef, bool, number, string, list,
+// range. Copying a Value is cheap: strings and lists are shared, immutable
+// arrays (bindings are immutable, so sharing is safe), ranges stay lazy
+// (three doubles) so `[0:1e12]` costs nothing until someone iterates it.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+namespace kerf {
+
+class Value;
+using ValueList = std::vector<Value>;
+
+// [start : step : end], end inclusive as in OpenSCAD. Never materialised:
+// size() counts the elements, at(i) computes one.
+struct Range {
+    double start = 0;
+    double step = 1;
+    double end = 0;
+
+    // Number of elements (0 for an empty range: the step points away from
+    // end). A tiny relative tolerance makes `[0:0.1:0.3]` have 4 elements as
+    // users expect. Saturates at UINT64_MAX/2 for huge ranges; callers
+    // compare it against their limits before iterating.
+    std::uint64_t size() const;
+    double at(std::uint64_t i) const { return start + static_cast<double>(i) * step; }
+    bool operator==(const Range&) const = default;
+};
+
+enum class ValueType : std::uint8_t { Undef, Bool, Number, String, List, Range };
+
+// "undef", "bool", "number", "string", "list", "range" (for error messages).
+const char* type_name(ValueType t);
+
+class Value {
+public:
+    Value() = default;  // undef
+    Value(double n) : v_(n) {}
+    Value(int n) : v_(static_cast<double>(n)) {}
+    Value(bool b) : v_(b) {}
+    Value(const char*) = delete;  // would silently become bool: use Value::string
+
+    static Value undef() { return Value(); }
+    static Value number(double n) { return Value(n); }
+    static Value boolean(bool b) { return Value(b); }
+    static Value string(std::string s);
+    static Value list(ValueList items);
+    static Value list_shared(std::shared_ptr<const ValueList> items);
+    static Value range(double start, double step, double end) { return Value(Range{start, step, end}); }
+    static Value range(const Range& r) { return Value(r); }
+
+    ValueType type() const { return static_cast<ValueType>(v_.index()); }
+    const char* type_name() const { return kerf::type_name(type()); }
+    bool is_undef() const { return type() == ValueType::Undef; }
+    bool is_bool() const { return type() == ValueType::Bool; }
+    bool is_number() const { return type() == ValueType::Number; }
+    bool is_string() const { return type() == ValueType::String; }
+    bool is_list() const { return type() == ValueType::List; }
+    bool is_range() const { return type() == ValueType::Range; }
+
+    // Accessors: precondition is the matching is_*() (checked by std::get).
+    double as_number() const { return std::get<double>(v_); }
+    bool as_bool() const { return std::get<bool>(v_); }
+    const std::string& as_string() const { return *std::get<StrPtr>(v_); }
+    const ValueList& as_list() const { return *std::get<ListPtr>(v_); }
+    const std::shared_ptr<const ValueList>& list_ptr() const { return std::get<ListPtr>(v_); }
+    const Range& as_range() const { return std::get<Range>(v_); }
+
+    // Spec §2: false, 0, "", [], undef are false; everything else is true
+    // (any range, and NaN, as in OpenSCAD where a number is true if != 0).
+    bool truthy() const;
+
+    // Structural equality as OpenSCAD's `==`: same type and same contents;
+    // numbers compare as doubles (NaN != NaN); a bool never equals a number.
+    bool operator==(const Value& o) const;
+    bool operator!=(const Value& o) const { return !(*this == o); }
+
+    // True for a list whose elements are all numbers (spec: a vector).
+    bool is_vector() const;
+    // A list of exactly n numbers.
+    bool is_vector(std::size_t n) const;
+
+private:
+    using StrPtr = std::shared_ptr<const std::string>;
+    using ListPtr = std::shared_ptr<const ValueList>;
+    explicit Value(Range r) : v_(r) {}
+    // Order matches ValueType.
+    std::variant<std::monostate, bool, double, StrPtr, ListPtr, Range> v_;
+};
+
+// OpenSCAD-style number text: 6 significant digits like printf("%g")
+// (`0.333333`, `1e+06`, `100000`, `-0.5`), `inf`, `-inf`, `nan`.
+std::string format_number(double n);
+
+// The text `str(v)` produces: strings as-is at the top level; inside lists
+// strings are quoted (`["a", 1]`); `undef`, `true`; ranges `[0 : 1 : 5]`.
+std::string to_str(const Value& v);
+
+// The text `echo(v)` shows: like to_str, but a top-level string is quoted too.
+std::string to_repr(const Value& v);
+
+}  // namespace kerf

@@ -1,0 +1,45 @@
+// libFuzzer entry point: arbitrary bytes are parsed and evaluated as a .sdl
+// script under small limits, so each input finishes in milliseconds and a
+// runaway loop or recursion surfaces as the located limit error it must be.
+// User-caused failures (SourceError, IoError) are the expected outcome for
+// garbage; anything else escaping — another exception type, a crash, a
+// sanitizer report, a timeout — is a finding.
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "grammar/parser.hpp"
+#include "grammar/source.hpp"
+#include "interpreter/interpreter.hpp"
+
+namespace {
+
+kerf::EvalOptions small_limits() {
+    kerf::EvalOptions o;
+    o.limits.call_depth = 200;
+    o.limits.nesting = 64;
+    o.limits.loop_iterations = 100'000;
+    o.limits.list_elements = 100'000;
+    o.limits.primitives = 10'000;
+    o.limits.steps = 100'000;
+    o.echo = [](const std::string&) {};  // keep the fuzzer's output readable
+    return o;
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    static const kerf::EvalOptions options = small_limits();
+    auto file = std::make_shared<kerf::SourceFile>();
+    // A path inside a folder with no .sdl files, so relative include/use
+    // resolve to nothing (a missing file error) rather than to the corpus.
+    file->path = "/nonexistent-kerf-fuzz/input.sdl";
+    file->text.assign(reinterpret_cast<const char*>(data), size);
+    try {
+        kerf::evaluate_source(std::move(file), options);
+    } catch (const kerf::SourceError&) {
+    } catch (const kerf::IoError&) {
+    }
+    return 0;
+}

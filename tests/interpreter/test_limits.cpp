@@ -1,0 +1,88 @@
+// Spec §8 limits: every runaway script ends in a located error, fast, with
+// bounded memory, and without exhausting the C stack.
+#include <catch2/catch.hpp>
+
+#include <chrono>
+#include <ctime>
+
+#include "eval_helpers.hpp"
+
+using kerf::test::error_of;
+using kerf::test::value_of;
+
+namespace {
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+}  // namespace
+
+TEST_CASE("call depth limit", "[limits]") {
+    const char* count = "function count(n) = n == 0 ? 0 : 1 + count(n - 1);";
+    CHECK(value_of("count(900)", count) == "900");
+    CHECK(error_of(std::string(count) + "\nx = count(5000);") == "test.sdl:1:38: error: call depth limit 1000 exceeded");
+    CHECK(error_of("module m(n) m(n + 1);\nm(0);") == "test.sdl:1:13: error: call depth limit 1000 exceeded");
+    kerf::EvalOptions small;
+    small.limits.call_depth = 10;
+    CHECK(error_of(std::string(count) + "\nx = count(20);", small) == "test.sdl:1:38: error: call depth limit 10 exceeded");
+}
+
+TEST_CASE("deep recursion is bounded by the limit, not the C stack", "[limits]") {
+    // 30,000 nested calls, each through several expression levels: far
+    // beyond a default 8 MB stack, fine on the evaluator's own thread.
+    kerf::EvalOptions deep;
+    deep.limits.call_depth = 30000;
+    deep.echo = [](const std::string&) {};
+    auto r = kerf::test::run("function count(n) = n == 0 ? 0 : 1 + count(n - 1);\necho(count(29999));", deep);
+    SUCCEED();
+}
+
+// Hidden (touches ~450 MB of stack, several seconds): run with "[.slow]".
+TEST_CASE("a raised call depth limit still cannot overflow the stack", "[limits][.slow]") {
+    kerf::EvalOptions opt;
+    opt.limits.call_depth = 100'000'000;
+    opt.limits.steps = 1'000'000'000;
+    std::string err = error_of("function f(n) = 1 + f(n + 1);\nx = f(0);", opt);
+    CHECK(err.find("error: evaluation nested too deeply (stack exhausted; lower the call depth limit)") != std::string::npos);
+}
+
+TEST_CASE("loops over huge ranges fail fast", "[limits]") {
+    auto t0 = std::chrono::steady_clock::now();
+    CHECK(error_of("for (i = [0:1e12]) cube();") == "test.sdl:1:6: error: loop iteration limit 10000000 exceeded");
+    CHECK(error_of("x = [for (i = [0:1e12]) i];") == "test.sdl:1:11: error: loop iteration limit 10000000 exceeded");
+    CHECK(seconds_since(t0) < 0.5);
+    kerf::EvalOptions small;
+    small.limits.loop_iterations = 110;
+    // Total over the run: 10 outer + 10 x 10 inner is fine, one more is not.
+    CHECK(error_of("for (i = [1:10]) for (j = [1:10]) cube();\nfor (k = [0:0]) cube();", small) ==
+          "test.sdl:2:6: error: loop iteration limit 110 exceeded");
+}
+
+TEST_CASE("exponential recursion ends by the step limit", "[limits]") {
+    kerf::EvalOptions opt;
+    opt.limits.steps = 1'000'000;
+    auto t0 = std::chrono::steady_clock::now();
+    CHECK(error_of("function f(n) = n <= 0 ? 1 : f(n - 1) + f(n - 1);\nx = f(60);", opt) ==
+          "test.sdl:1:30: error: evaluation step limit 1000000 exceeded");
+    CHECK(seconds_since(t0) < 5);
+}
+
+TEST_CASE("list size and primitive limits", "[limits]") {
+    kerf::EvalOptions opt;
+    opt.limits.list_elements = 1000;
+    CHECK(error_of("x = [for (i = [0:2000]) i];", opt) == "test.sdl:1:25: error: list size limit 1000 exceeded");
+    CHECK(value_of("len([for (i = [1:1000]) i])") == "1000");
+    kerf::EvalOptions prims;
+    prims.limits.primitives = 50;
+    CHECK(error_of("for (i = [1:51]) sphere();", prims) == "test.sdl:1:18: error: primitive limit 50 exceeded");
+    CHECK(error_of("for (i = [1:50]) sphere();", prims) == "no error");
+}
+
+// CPU time (the machine may be shared); hidden: run with "[.perf]".
+TEST_CASE("a million primitives evaluate quickly", "[limits][.perf]") {
+    std::clock_t c0 = std::clock();
+    auto r = kerf::test::run("for (i = [0:999], j = [0:999]) translate([i, j, 0]) cube(0.5);");
+    double t = double(std::clock() - c0) / CLOCKS_PER_SEC;
+    CHECK(r.graph.nodes.size() > 2'000'000);
+    WARN("1e6 primitives: " << t << " s CPU");
+    CHECK(t < 2.0);
+}

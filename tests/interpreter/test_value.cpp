@@ -1,0 +1,66 @@
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "interpreter/value.hpp"
+
+using kerf::Value;
+
+TEST_CASE("numbers print like OpenSCAD (6 significant digits)", "[value]") {
+    CHECK(kerf::to_str(Value(1.0)) == "1");
+    CHECK(kerf::to_str(Value(0.5)) == "0.5");
+    CHECK(kerf::to_str(Value(1.0 / 3.0)) == "0.333333");
+    CHECK(kerf::to_str(Value(1e6)) == "1e+06");
+    CHECK(kerf::to_str(Value(100000.0)) == "100000");
+    CHECK(kerf::to_str(Value(-2.5)) == "-2.5");
+    CHECK(kerf::to_str(Value(1e-5)) == "1e-05");
+    CHECK(kerf::to_str(Value(INFINITY)) == "inf");
+    CHECK(kerf::to_str(Value(-INFINITY)) == "-inf");
+    CHECK(kerf::to_str(Value(NAN)) == "nan");
+}
+
+TEST_CASE("str and echo text of compound values", "[value]") {
+    Value l = Value::list({Value(1), Value::string("a"), Value(true), Value(), Value::list({})});
+    CHECK(kerf::to_str(l) == "[1, \"a\", true, undef, []]");
+    CHECK(kerf::to_str(Value::string("hi")) == "hi");
+    CHECK(kerf::to_repr(Value::string("hi")) == "\"hi\"");
+    CHECK(kerf::to_repr(Value::string("a\"b")) == "\"a\\\"b\"");
+    CHECK(kerf::to_str(Value::range(0, 1, 5)) == "[0 : 1 : 5]");
+    CHECK(kerf::to_str(Value(false)) == "false");
+}
+
+TEST_CASE("truthiness per spec", "[value]") {
+    CHECK_FALSE(Value().truthy());
+    CHECK_FALSE(Value(false).truthy());
+    CHECK_FALSE(Value(0).truthy());
+    CHECK_FALSE(Value::string("").truthy());
+    CHECK_FALSE(Value::list({}).truthy());
+    CHECK(Value(true).truthy());
+    CHECK(Value(-1).truthy());
+    CHECK(Value::string("0").truthy());
+    CHECK(Value::list({Value()}).truthy());
+    CHECK(Value::range(0, 1, -1).truthy());
+}
+
+TEST_CASE("equality is structural and type-strict", "[value]") {
+    CHECK(Value(1) == Value(1.0));
+    CHECK(Value(1) != Value(true));
+    CHECK(Value() == Value());
+    CHECK(Value::list({Value(1), Value::string("x")}) == Value::list({Value(1), Value::string("x")}));
+    CHECK(Value::list({Value(1)}) != Value::list({Value(1), Value(2)}));
+    CHECK(Value(NAN) != Value(NAN));
+    CHECK(Value::string("a") != Value::string("b"));
+}
+
+TEST_CASE("ranges are lazy and count inclusively", "[value]") {
+    CHECK(kerf::Range{0, 1, 5}.size() == 6);
+    CHECK(kerf::Range{0, 2, 5}.size() == 3);
+    CHECK(kerf::Range{5, -1, 0}.size() == 6);
+    CHECK(kerf::Range{5, 1, 0}.size() == 0);
+    CHECK(kerf::Range{0, -1, 5}.size() == 0);
+    CHECK(kerf::Range{0, 0.1, 0.3}.size() == 4);
+    CHECK(kerf::Range{0, 1, 1e12}.size() == 1000000000001ull);
+    CHECK(kerf::Range{0, 0, 1}.size() == 0);
+    CHECK(kerf::Range{0, 1, 0}.size() == 1);
+    CHECK(kerf::Range{1, 0.5, 2}.at(2) == 2.0);
+}
