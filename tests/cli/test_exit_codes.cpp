@@ -90,7 +90,7 @@ TEST_CASE("render writes the image, and exits 3 when it cannot") {
     CHECK(first_line(r.err).rfind("kerf: error: ", 0) == 0);
 }
 
-TEST_CASE("-D overrides a top-level binding") {
+TEST_CASE("defines (-D) on the command line override a top-level binding") {
     auto dir = test_dir("define");
     auto path = write_file(dir / "d.sdl", "n = 1;\nassert(n == 3, \"n is not 3\");\ncube(n);\n");
     CHECK(run_kerf("check '" + path + "'", dir).status == 1);

@@ -114,7 +114,7 @@ TEST_CASE("include and use cycles are errors naming the chain", "[include]") {
     CHECK(error_file(uc) == uc3 + ":1:1: error: use cycle: " + uc2 + " -> " + uc3 + " -> " + uc2);
 }
 
-TEST_CASE("-D overrides top-level bindings", "[include]") {
+TEST_CASE("defines (-D) override top-level bindings", "[include]") {
     kerf::EvalOptions opt;
     opt.defines = {{"size", "[1, 2] * 3"}, {"name", "\"kerf\""}};
     CHECK(kerf::test::echoes("size = 1;\nname = \"x\";\nhalf = size / 2;\necho(size, name, half);", opt) ==
