@@ -169,8 +169,10 @@ private:
     }
 
     void add_subtrahend(Frame& f, std::uint32_t n) {
-        // A subtrahend whose box misses the minuend's cannot remove anything.
+        // A subtrahend whose box misses the minuend's cannot remove anything;
+        // nor can a (tilted, so unbounded-box) half-space missing that box.
         if (Aabb::overlap(nodes[n].bounds, f.bounds).empty()) return;
+        if (is_plane(n) && clip_by_halfspace(f.bounds, world_halfspace(leaves[nodes[n].leaf])).empty()) return;
         append(f, n);
     }
 
@@ -252,9 +254,30 @@ private:
         for (std::uint32_t c = f.head; c != kNone && !box.empty(); c = nodes[c].next)
             if (is_plane(c)) box = clip_by_halfspace(box, world_halfspace(leaves[nodes[c].leaf]));
         if (box.empty()) return kNone;
+        drop_redundant_halfspaces(f, box);
         if (f.count == 1) return single(f.head);
         if (!trim_union_operands(f, box)) return kNone;
         return make_op(csg::Op::Intersection, f.head, f.tail, f.count, box);
+    }
+
+    // A half-space containing the whole box of the intersection changes
+    // nothing; drop it (keeping at least one operand).
+    void drop_redundant_halfspaces(Frame& f, const Aabb& box) {
+        std::uint32_t c = f.head;
+        f.head = f.tail = kNone;
+        const std::uint32_t total = f.count;
+        f.count = 0;
+        std::uint32_t dropped = 0;
+        while (c != kNone) {
+            const std::uint32_t next = nodes[c].next;
+            bool redundant = false;
+            if (is_plane(c) && dropped + 1 < total) {
+                const HalfSpace h = world_halfspace(leaves[nodes[c].leaf]);
+                redundant = clip_by_halfspace(box, {-h.normal, -h.offset}).empty();
+            }
+            if (redundant) ++dropped; else append(f, c);
+            c = next;
+        }
     }
 
     // Only the parts of a union operand inside the intersection's box can
