@@ -1,6 +1,7 @@
 #include "grammar/builder.hpp"
 
 #include <algorithm>
+#include <iterator>
 #include <limits>
 #include <stdexcept>
 
@@ -114,6 +115,7 @@ void Builder::unary(SourceLoc at) {
     if (ops_.empty()) internal_error("operator");
     std::uint32_t h = 0;
     auto e = make(ExprKind::Unary, std::move(at));
+    e->items.reserve(1);
     e->text = std::move(ops_.back());
     ops_.pop_back();
     e->items.push_back(pop(h));
@@ -124,6 +126,7 @@ void Builder::binary(SourceLoc at) {
     if (ops_.empty()) internal_error("operator");
     std::uint32_t h = 0;
     auto e = make(ExprKind::Binary, std::move(at));
+    e->items.reserve(2);
     e->text = std::move(ops_.back());
     ops_.pop_back();
     auto rhs = pop(h);
@@ -136,6 +139,7 @@ void Builder::binary(SourceLoc at) {
 void Builder::ternary(SourceLoc at) {
     std::uint32_t h = 0;
     auto e = make(ExprKind::Ternary, std::move(at));
+    e->items.reserve(3);
     auto otherwise = pop(h);
     auto then = pop(h);
     auto cond = pop(h);
@@ -148,6 +152,7 @@ void Builder::ternary(SourceLoc at) {
 void Builder::index(SourceLoc at) {
     std::uint32_t h = 0;
     auto e = make(ExprKind::Index, std::move(at));
+    e->items.reserve(2);
     auto i = pop(h);
     auto object = pop(h);
     e->items.push_back(std::move(object));
@@ -160,6 +165,7 @@ void Builder::member_name(char c) { member_ = c; }
 void Builder::member(SourceLoc at) {
     std::uint32_t h = 0;
     auto e = make(ExprKind::Member, std::move(at));
+    e->items.reserve(1);
     e->text = std::string(1, member_);
     e->items.push_back(pop(h));
     push(std::move(e), h + 1);
@@ -192,6 +198,7 @@ void Builder::list_for(SourceLoc at) {
     auto element = pop(h);
     BindingList b = pop_bindings();
     e->bindings = std::move(b.items);
+    e->items.reserve(1);
     e->items.push_back(std::move(element));
     push(std::move(e), std::max(h, b.height) + 1);
 }
@@ -212,6 +219,7 @@ void Builder::echo(SourceLoc at) {
     auto body = pop(h);
     BindingList b = pop_bindings();
     e->args = std::move(b.items);
+    e->items.reserve(1);
     e->items.push_back(std::move(body));
     push(std::move(e), std::max(h, b.height) + 1);
 }
@@ -241,34 +249,45 @@ void Builder::call() {
 
 // ---- binding lists ----------------------------------------------------------------
 
-void Builder::open_bindings() { bindings_.emplace_back(); }
+// Binding lists are collected in scratch vectors that keep their capacity
+// (one per open list level) and copied out at their exact size: one
+// allocation per non-empty list instead of one per growth step.
+void Builder::open_bindings() {
+    if (open_bindings_ == bindings_.size()) bindings_.emplace_back();
+    ++open_bindings_;
+}
 
 Builder::BindingList Builder::pop_bindings() {
-    if (bindings_.empty()) internal_error("binding list");
-    BindingList b = std::move(bindings_.back());
-    bindings_.pop_back();
-    return b;
+    if (open_bindings_ == 0) internal_error("binding list");
+    BindingList& scratch = bindings_[--open_bindings_];
+    BindingList out;
+    out.height = scratch.height;
+    out.items.reserve(scratch.items.size());
+    std::move(scratch.items.begin(), scratch.items.end(), std::back_inserter(out.items));
+    scratch.items.clear();
+    scratch.height = 0;
+    return out;
 }
 
 void Builder::binding_name(std::string_view name, SourceLoc at) {
-    if (bindings_.empty()) internal_error("binding list");
-    bindings_.back().items.push_back(ast::Binding{std::string(name), nullptr, std::move(at)});
+    if (open_bindings_ == 0) internal_error("binding list");
+    bindings_[open_bindings_ - 1].items.push_back(ast::Binding{std::string(name), nullptr, std::move(at)});
 }
 
 void Builder::binding_value() {
-    if (bindings_.empty() || bindings_.back().items.empty()) internal_error("binding");
+    if (open_bindings_ == 0 || bindings_[open_bindings_ - 1].items.empty()) internal_error("binding");
     std::uint32_t h = 0;
     auto value = pop(h);
-    auto& list = bindings_.back();
+    auto& list = bindings_[open_bindings_ - 1];
     list.items.back().value = std::move(value);
     list.height = std::max(list.height, h);
 }
 
 void Builder::positional(SourceLoc at) {
-    if (bindings_.empty()) internal_error("binding list");
+    if (open_bindings_ == 0) internal_error("binding list");
     std::uint32_t h = 0;
     auto value = pop(h);
-    auto& list = bindings_.back();
+    auto& list = bindings_[open_bindings_ - 1];
     list.items.push_back(ast::Binding{std::string(), std::move(value), std::move(at)});
     list.height = std::max(list.height, h);
 }
@@ -360,7 +379,7 @@ void Builder::include(StmtKind kind, SourceLoc at) {
 }
 
 ast::Program Builder::finish() {
-    if (open_.size() != 1 || !exprs_.empty() || !marks_.empty() || !bindings_.empty() || !names_.empty() ||
+    if (open_.size() != 1 || !exprs_.empty() || !marks_.empty() || open_bindings_ != 0 || !names_.empty() ||
         !ops_.empty())
         internal_error("leftovers at end of input");
     ast::Program p;

@@ -97,7 +97,8 @@ private:
     std::shared_ptr<const SourceFile> file_;
     std::vector<Slot> exprs_;
     std::vector<std::size_t> marks_;
-    std::vector<BindingList> bindings_;
+    std::vector<BindingList> bindings_;  // scratch lists, [0, open_bindings_) in use
+    std::size_t open_bindings_ = 0;
     std::vector<Name> names_;
     std::vector<std::string> ops_;
     std::vector<ast::StmtPtr> open_;  // open_[0] is the program's root block

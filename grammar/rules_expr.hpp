@@ -41,7 +41,7 @@ struct string_tok : pg::seq<string_lit, ws> {};
 struct true_lit : pg::keyword<'t', 'r', 'u', 'e'> {};
 struct false_lit : pg::keyword<'f', 'a', 'l', 's', 'e'> {};
 struct undef_lit : pg::keyword<'u', 'n', 'd', 'e', 'f'> {};
-struct literal_tok : pg::seq<pg::sor<true_lit, false_lit, undef_lit>, ws> {};
+struct literal_tok : pg::seq<pg::at<pg::one<'t', 'f', 'u'>>, pg::sor<true_lit, false_lit, undef_lit>, ws> {};
 
 struct paren_expr : nest<lparen, pg::must<expr>, pg::must<rparen>> {};
 
@@ -81,8 +81,10 @@ struct call_expr : pg::if_must<pg::seq<pg::at<name, ws, pg::one<'('>>, callee, w
 struct ident_name : name {};
 struct ident_expr : pg::seq<ident_name, ws> {};
 
-struct primary : pg::sor<number_tok, string_tok, literal_tok, paren_expr, list_expr, let_expr, echo_expr,
-                         assert_expr, call_expr, ident_expr> {};
+// Everything that starts with a letter is tried only after a one-byte test.
+struct word_primary : pg::sor<literal_tok, let_expr, echo_expr, assert_expr, call_expr, ident_expr> {};
+struct primary : pg::sor<number_tok, string_tok, paren_expr, list_expr,
+                         pg::seq<pg::at<pg::ranges<'a', 'z', 'A', 'Z', '_', '_', '$', '$'>>, word_primary>> {};
 
 // ---- postfix and operators -------------------------------------------------
 struct index_op : nest<lbracket, pg::must<expr>, pg::must<rbracket>> {};

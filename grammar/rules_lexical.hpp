@@ -75,15 +75,37 @@ struct blank : pg::plus<pg::one<' ', '\t', '\r', '\n'>> {};
 struct ws : pg::star<pg::sor<blank, line_comment, block_comment>> {};
 
 // ---- names and keywords -------------------------------------------------
-struct keyword
-    : pg::sor<pg::keyword<'m', 'o', 'd', 'u', 'l', 'e'>, pg::keyword<'f', 'u', 'n', 'c', 't', 'i', 'o', 'n'>,
-              pg::keyword<'i', 'f'>, pg::keyword<'e', 'l', 's', 'e'>, pg::keyword<'f', 'o', 'r'>,
-              pg::keyword<'l', 'e', 't'>, pg::keyword<'i', 'n', 'c', 'l', 'u', 'd', 'e'>,
-              pg::keyword<'u', 's', 'e'>, pg::keyword<'t', 'r', 'u', 'e'>,
-              pg::keyword<'f', 'a', 'l', 's', 'e'>, pg::keyword<'u', 'n', 'd', 'e', 'f'>> {};
+// True for module function if else for let include use true false undef.
+bool is_keyword(std::string_view word) noexcept;
 
-// `[A-Za-z_][A-Za-z0-9_]*`, or `$` followed by the same (special variables).
-struct name : pg::sor<pg::seq<pg::one<'$'>, pg::identifier>, pg::seq<pg::not_at<keyword>, pg::identifier>> {};
+// `[A-Za-z_][A-Za-z0-9_]*` that is not a keyword, or `$` followed by the
+// same pattern (special variables; `$if` is fine). Hand-written because a
+// name is matched several times per statement (lookaheads for `=` and `(`):
+// one scan and one keyword test by length instead of eleven string compares.
+struct name {
+    using rule_t = name;
+    using subs_t = pg::empty_list;
+
+    static bool first(char c) noexcept { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
+    static bool other(char c) noexcept { return first(c) || (c >= '0' && c <= '9'); }
+
+    template <pg::apply_mode, pg::rewind_mode, template <typename...> class,
+              template <typename...> class, typename Input, typename... States>
+    static bool match(Input& in, States&&...) {
+        const char* const begin = in.current();
+        const char* const end = in.end();
+        const char* p = begin;
+        const bool special = p < end && *p == '$';
+        if (special) ++p;
+        if (p == end || !first(*p)) return false;
+        const char* const word = p;
+        while (++p < end && other(*p)) {
+        }
+        if (!special && is_keyword(std::string_view(word, static_cast<std::size_t>(p - word)))) return false;
+        in.bump_in_this_line(static_cast<std::size_t>(p - begin));
+        return true;
+    }
+};
 
 template <char... Cs>
 struct kw : pg::seq<pg::keyword<Cs...>, ws> {};
@@ -117,3 +139,5 @@ template <typename Name>
 struct tao::pegtl::analyze_traits<Name, kerf::grammar::block_comment> : tao::pegtl::analyze_any_traits<> {};
 template <typename Name>
 struct tao::pegtl::analyze_traits<Name, kerf::grammar::string_lit> : tao::pegtl::analyze_any_traits<> {};
+template <typename Name>
+struct tao::pegtl::analyze_traits<Name, kerf::grammar::name> : tao::pegtl::analyze_any_traits<> {};

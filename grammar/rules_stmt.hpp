@@ -3,7 +3,8 @@
 // A statement that can own children (instantiation, if, module body) takes a
 // `child`: `;`, a `{ ... }` block whose statements become its children
 // directly, or one more instantiation/if. Each child counts one nesting
-// level; bare blocks count one at their `{`.
+// level (a child block too, once); bare blocks count one at their `{`;
+// argument lists count one at their `(` like any parenthesis.
 #pragma once
 #include "grammar/rules_expr.hpp"
 
@@ -45,7 +46,8 @@ struct modified_stmt : pg::if_must<pg::plus<modifier>, plain_instantiation> {};
 struct instantiation : pg::sor<modified_stmt, plain_instantiation> {};
 
 struct child_empty : pg::seq<pg::one<';'>, ws> {};
-struct child_block : nest<lbrace, block_items, pg::must<rbrace>> {};
+// Not a nest<>: the `child` around it already counts this level.
+struct child_block : pg::seq<lbrace, block_items, pg::must<rbrace>> {};
 struct child_stmt : pg::sor<child_empty, child_block, instantiation> {};
 struct child : counted<child_stmt> {};
 

@@ -232,8 +232,13 @@ void Evaluator::expand_element(const ast::Expr& e, Scope& s, ValueList& out) {
     }
 }
 
+thread_local const char* stack_floor = nullptr;
+
 Value Evaluator::eval(const ast::Expr& e, Scope& s) {
     using K = ast::ExprKind;
+    char probe;
+    if (stack_floor && &probe < stack_floor)
+        throw SourceError(e.loc, "evaluation nested too deeply (stack exhausted; lower the call depth limit)");
     switch (e.kind) {
         case K::Number: return Value(e.number);
         case K::String: return Value::string(e.text);

@@ -74,7 +74,7 @@ inline void collect(const scene::SceneGraph& g, std::uint32_t id, const glm::dma
             collect(g, g.child_refs.at(n.first_child), m * g.matrices.at(n.index), mat, out);
             return;
         case scene::NodeKind::Appearance:
-            collect(g, g.child_refs.at(n.first_child), m, mat ? mat : &g.materials.at(n.index), out);
+            collect(g, g.child_refs.at(n.first_child), m, &g.materials.at(n.index), out);  // innermost wins
             return;
         default:
             for (std::uint32_t i = 0; i < n.child_count; ++i) collect(g, g.child_refs.at(n.first_child + i), m, mat, out);

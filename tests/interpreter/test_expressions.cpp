@@ -76,13 +76,14 @@ TEST_CASE("indexing and members", "[expr]") {
     CHECK(value_of("\"héllo\"[1]") == "\"é\"");
     CHECK(value_of("[0:2:10][3]") == "6");
     CHECK(value_of("[4, 5, 6].x + [4, 5, 6].y + [4, 5, 6].z") == "15");
-    CHECK(error_of("x = [1, 2][2];") == "test.sdl:1:5: error: index 2 out of range (length 2)");
-    CHECK(error_of("x = [1, 2][-1];") == "test.sdl:1:5: error: index -1 out of range (length 2)");
-    CHECK(error_of("x = [1, 2][0.5];") == "test.sdl:1:5: error: index 0.5 is not an integer");
-    CHECK(error_of("x = [1, 2][\"a\"];") == "test.sdl:1:5: error: index must be a number, got string");
-    CHECK(error_of("x = 5[0];") == "test.sdl:1:5: error: cannot index a number");
-    CHECK(error_of("x = [1, 2].z;") == "test.sdl:1:5: error: index 2 out of range (length 2)");
-    CHECK(error_of("x = 3.x;") == "test.sdl:1:5: error: '.x' needs a list, got number");
+    // Located at the `[` or `.` of the access.
+    CHECK(error_of("x = [1, 2][2];") == "test.sdl:1:11: error: index 2 out of range (length 2)");
+    CHECK(error_of("x = [1, 2][-1];") == "test.sdl:1:11: error: index -1 out of range (length 2)");
+    CHECK(error_of("x = [1, 2][0.5];") == "test.sdl:1:11: error: index 0.5 is not an integer");
+    CHECK(error_of("x = [1, 2][\"a\"];") == "test.sdl:1:11: error: index must be a number, got string");
+    CHECK(error_of("x = 5[0];") == "test.sdl:1:6: error: cannot index a number");
+    CHECK(error_of("x = [1, 2].z;") == "test.sdl:1:11: error: index 2 out of range (length 2)");
+    CHECK(error_of("x = 3;\ny = x.x;") == "test.sdl:2:6: error: '.x' needs a list, got number");
 }
 
 TEST_CASE("ranges are end-inclusive and lazy", "[expr]") {
@@ -95,7 +96,7 @@ TEST_CASE("ranges are end-inclusive and lazy", "[expr]") {
     CHECK(value_of("[0:1e12]") == "[0 : 1 : 1e+12]");  // never materialised
     CHECK(error_of("x = [0:0:5];") == "test.sdl:1:8: error: range step must not be 0");
     CHECK(error_of("x = [0:\"a\"];") == "test.sdl:1:8: error: range bound must be a number, got string");
-    CHECK(error_of("x = [0:1/0];") == "test.sdl:1:8: error: range bound must be finite, got inf");
+    CHECK(error_of("x = [0:1/0];") == "test.sdl:1:9: error: range bound must be finite, got inf");
 }
 
 TEST_CASE("list comprehensions", "[expr]") {

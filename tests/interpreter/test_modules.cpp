@@ -15,7 +15,8 @@ TEST_CASE("function arguments: positional, named, defaults", "[modules]") {
     CHECK(value_of("f(1, 5)", defs) == "[1, 5, 2]");
     CHECK(value_of("f(c = 0, a = 4)", defs) == "[4, 2, 0]");
     CHECK(value_of("f(10, c = 3)", defs) == "[10, 2, 3]");
-    CHECK(value_of("f()", defs) == "[undef, 2, undef]");  // missing without default: undef
+    CHECK(value_of("g(1)", "function g(a, b) = [a, b];") == "[1, undef]");  // missing without default: undef
+    CHECK(error_of(std::string(defs) + "\nx = f();") == "test.sdl:1:28: error: cannot apply '+' to undef and number");
     CHECK(error_of(std::string(defs) + "\nx = f(1, 2, 3, 4);") == "test.sdl:2:16: error: too many arguments for 'f' (takes 3)");
     CHECK(error_of(std::string(defs) + "\nx = f(q = 1);") == "test.sdl:2:7: error: unknown argument 'q' for 'f'");
     CHECK(error_of(std::string(defs) + "\nx = f(1, a = 2);") == "test.sdl:2:10: error: argument 'a' given twice to 'f'");

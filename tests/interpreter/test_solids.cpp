@@ -45,7 +45,7 @@ TEST_CASE("cube", "[solids]") {
     CHECK(params("cube();", 6) == std::vector<double>{0, 0, 0, 1, 1, 1});
     CHECK(params("cube(2);", 6) == std::vector<double>{0, 0, 0, 2, 2, 2});
     CHECK(params("cube([1, 2, 3], center = true);", 6) == std::vector<double>{-0.5, -1, -1.5, 0.5, 1, 1.5});
-    CHECK(params("cube(size = [4, 2, 2], true);", 6) == std::vector<double>{-2, -1, -1, 2, 1, 1});
+    CHECK(params("cube(center = true, size = [4, 2, 2]);", 6) == std::vector<double>{-2, -1, -1, 2, 1, 1});
     CHECK(one("cube();").prim == PrimKind::Box);
     CHECK(error_of("cube([1, 0, 1]);") == "test.sdl:1:1: error: cube: size must be positive, got 0");
     CHECK(error_of("cube([1, 1]);") == "test.sdl:1:1: error: cube: size must be a vector of 3 numbers, got [1, 1]");
@@ -224,7 +224,7 @@ TEST_CASE("scene statements only at top level", "[scene]") {
     CHECK(error_of("module m() camera(position = [1, 1, 1]);\nm();") ==
           "test.sdl:1:12: error: camera is only allowed at the top level");
     CHECK(error_of("if (true) light(position = [1, 1, 1]);") == "test.sdl:1:11: error: light is only allowed at the top level");
-    CHECK(error_of("translate([1, 0, 0]) background([0, 0, 0]);") == "test.sdl:1:23: error: background is only allowed at the top level");
+    CHECK(error_of("translate([1, 0, 0]) background([0, 0, 0]);") == "test.sdl:1:22: error: background is only allowed at the top level");
     CHECK(error_of("camera(position = [1, 1, 1]);\ncamera(position = [2, 2, 2]);") ==
           "test.sdl:2:1: error: camera is already defined at line 1");
     CHECK(error_of("camera(position = [0, 0, 5]);") == "test.sdl:1:1: error: camera: up must not be parallel to the view direction");
