@@ -66,6 +66,12 @@ scene::SceneGraph Evaluator::run(ast::Program program) {
     for (const Define& d : defines_) {
         bool found = false;
         for (const ast::Stmt* a : info.assigns) found = found || a->name == d.name;
+        // A `$` variable ($fn, $t...) may be set for the whole run even when
+        // the script never assigns it, as with OpenSCAD's -D '$fn=64'.
+        if (!found && !d.name.empty() && d.name[0] == '$') {
+            dyn_.push_back(DynVar{d.name, d.value});
+            continue;
+        }
         if (!found) throw SourceError(SourceLoc{}, "-D " + d.name + ": the script has no top-level binding '" + d.name + "'");
     }
     eval_block(prog.stmts, root_, true);

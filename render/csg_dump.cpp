@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <ostream>
 #include <vector>
 
 namespace kerf::csg {
@@ -117,7 +118,10 @@ void leaf_line(std::string& out, const Scene& s, std::uint32_t index) {
     }
 }
 
-void tree(std::string& out, const Scene& s) {
+// `flush` hands over the text so far (the tree of a million-leaf scene is
+// hundreds of MB: streamed, it never has to exist as one string).
+template <typename Flush>
+void tree(std::string& out, const Scene& s, Flush&& flush) {
     if (s.root == kNone || s.root >= s.nodes.size()) {
         out += "tree empty\n";
         return;
@@ -129,6 +133,7 @@ void tree(std::string& out, const Scene& s) {
         const Item it = stack.back();
         stack.pop_back();
         const Node& n = s.nodes[it.node];
+        if (out.size() > (1u << 16)) flush(out);
         out.append(2 * it.depth, ' ');
         if (n.op == Op::Leaf) {
             if (n.first < s.leaves.size()) leaf_line(out, s, n.first);
@@ -148,10 +153,9 @@ void tree(std::string& out, const Scene& s) {
     }
 }
 
-}  // namespace
-
-std::string dump_scene(const Scene& s) {
-    std::string out = "kerf-dump 1\n";
+template <typename Flush>
+void dump(const Scene& s, std::string& out, Flush&& flush) {
+    out += "kerf-dump 1\n";
     out += "scene leaves=" + std::to_string(s.leaves.size()) + " nodes=" + std::to_string(s.nodes.size()) +
            " materials=" + std::to_string(s.materials.size()) + " meshes=" + std::to_string(s.meshes.size()) + '\n';
     const Camera& c = s.camera;
@@ -193,8 +197,25 @@ std::string dump_scene(const Scene& s) {
         out += "mesh " + std::to_string(i) + " points=" + std::to_string(m.points.size()) +
                " triangles=" + std::to_string(m.triangles.size() / 3) + (m.solid ? " solid\n" : " shell\n");
     }
-    tree(out, s);
+    tree(out, s, flush);
+}
+
+}  // namespace
+
+std::string dump_scene(const Scene& s) {
+    std::string out;
+    dump(s, out, [](std::string&) {});
     return out;
+}
+
+void dump_scene(const Scene& s, std::ostream& os) {
+    std::string buf;
+    auto flush = [&os](std::string& text) {
+        os.write(text.data(), static_cast<std::streamsize>(text.size()));
+        text.clear();
+    };
+    dump(s, buf, flush);
+    flush(buf);
 }
 
 }  // namespace kerf::csg

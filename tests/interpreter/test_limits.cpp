@@ -86,3 +86,17 @@ TEST_CASE("a million primitives evaluate quickly", "[limits][.perf]") {
     WARN("1e6 primitives: " << t << " s CPU");
     CHECK(t < 2.0);
 }
+
+TEST_CASE("shared nested lists cannot blow up memory or output", "[limits]") {
+    // f(n) is a list of 2^n ones built in n steps by sharing.
+    const char* f = "function f(n) = n == 0 ? 1 : let (l = f(n - 1)) [l, l];\n";
+    kerf::EvalOptions opt;
+    opt.limits.list_elements = 100000;
+    auto t0 = std::chrono::steady_clock::now();
+    CHECK(error_of(std::string(f) + "x = f(40) + f(40);", opt) == "test.sdl:2:11: error: list size limit 100000 exceeded");
+    CHECK(error_of(std::string(f) + "x = -f(40);", opt) == "test.sdl:2:5: error: list size limit 100000 exceeded");
+    CHECK(error_of(std::string(f) + "x = f(40) * 2;", opt) == "test.sdl:2:11: error: list size limit 100000 exceeded");
+    CHECK(error_of(std::string(f) + "echo(f(40));", opt) == "test.sdl:2:6: error: echo: text longer than 100000 characters");
+    CHECK(kerf::test::value_of("f(2) + f(2)", f) == "[[2, 2], [2, 2]]");
+    CHECK(seconds_since(t0) < 2);
+}

@@ -6,6 +6,8 @@
 #include "interpreter/lower.hpp"
 #include "render/csg_dump.hpp"
 
+#include <sstream>
+
 using namespace kerf;
 using kerf::test::GraphBuilder;
 
@@ -56,4 +58,15 @@ TEST_CASE("dump of an empty scene and of half-spaces") {
     GraphBuilder b2;
     const std::string text = csg::dump_scene(lower_to_csg(b2.finish({b2.plane({0, 0, 1}, 0)})));
     CHECK(text.find("plane normal=[0 0 1] offset=0 leaf=0 material=0 lo=[-inf -inf -inf] hi=[inf inf 0]") != std::string::npos);
+}
+
+TEST_CASE("the streamed dump is the same text") {
+    GraphBuilder b;
+    std::vector<std::uint32_t> many;
+    for (int i = 0; i < 2000; ++i) many.push_back(b.translate({3.0 * i, 0, 0}, b.sphere(1)));
+    const csg::Scene s = lower_to_csg(b.finish(many));
+    std::ostringstream os;
+    csg::dump_scene(s, os);
+    CHECK(os.str() == csg::dump_scene(s));
+    CHECK(os.str().size() > (1u << 17));  // long enough to be flushed in pieces
 }

@@ -203,3 +203,30 @@ TEST_CASE("union members outside an intersection's box are dropped") {
         CHECK(t.root == csg::kNone);
     }
 }
+
+TEST_CASE("half-spaces that cannot change the result are dropped") {
+    SECTION("a tilted half-space subtracted far from the minuend") {
+        GraphBuilder b;
+        // {x + y <= -10}: its box is unbounded, but it misses the unit sphere
+        const auto top = b.diff({b.sphere(1), b.plane(glm::normalize(glm::dvec3(1, 1, 0)), -10), b.sphere(0.5)});
+        const csg::Scene s = lower_to_csg(b.finish({top}));
+        REQUIRE(s.nodes[0].op == csg::Op::Difference);
+        CHECK(s.nodes[0].count == 2);
+        CHECK(s.leaves[1].kind == csg::PrimKind::Sphere);
+    }
+    SECTION("a half-space containing an intersection's whole box") {
+        GraphBuilder b;
+        const auto top = b.inter({b.sphere(1), b.plane(glm::normalize(glm::dvec3(1, 1, 1)), 5), b.translate({0.5, 0, 0}, b.sphere(1))});
+        const csg::Scene s = lower_to_csg(b.finish({top}));
+        REQUIRE(s.nodes[0].op == csg::Op::Intersection);
+        CHECK(s.nodes[0].count == 2);
+        for (const auto& l : s.leaves) CHECK(l.kind == csg::PrimKind::Sphere);
+    }
+    SECTION("a half-space cutting the box is kept") {
+        GraphBuilder b;
+        const auto top = b.inter({b.sphere(1), b.plane(glm::normalize(glm::dvec3(1, 1, 1)), 0.2)});
+        const csg::Scene s = lower_to_csg(b.finish({top}));
+        REQUIRE(s.nodes[0].op == csg::Op::Intersection);
+        CHECK(s.nodes[0].count == 2);
+    }
+}
