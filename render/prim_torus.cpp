@@ -1,0 +1,108 @@
+// Torus in the XY plane: (ρ - R)² + z² < r². Work in units of R along a unit
+// direction from the point of the line closest to the centre, so every
+// quantity is O(1) whatever the scale, distance or ray length. The quartic
+// (|x|² + 1 - r²)² - 4ρ² only locates the turning points that separate the
+// roots; signs and roots come from F = (ρ - 1)² + z² - r², which has the same
+// sign and roots but no cancellation of O(1) terms for thin tori (r << R).
+#include <cmath>
+
+#include "render/prim_kinds.hpp"
+#include "render/quartic.hpp"
+
+namespace kerf::csg {
+
+namespace {
+
+template <typename T>
+struct TorusLine {
+    Vec3<T> q, u;  // line q + λ·u, torus R = 1, minor radius rr
+    T rr2;
+    // F(λ) and F'(λ); F < 0 strictly inside.
+    T operator()(T lambda, T& deriv) const {
+        const Vec3<T> x = q + lambda * u;
+        const T rho = std::sqrt(x.x * x.x + x.y * x.y);
+        const T e = rho - T(1);
+        const T drho = rho > T(0) ? (x.x * u.x + x.y * u.y) / rho : T(0);
+        deriv = T(2) * (e * drho + x.z * u.z);
+        return e * e + x.z * x.z - rr2;
+    }
+};
+
+}  // namespace
+
+template <typename T>
+int intersect_torus(const double* p, const Vec3<T>& o, const Vec3<T>& d, Span<T>* out) {
+    constexpr T eps = std::numeric_limits<T>::epsilon();
+    const T R = T(p[0]);
+    const T rr = T(p[1] / p[0]);
+    const T dd = glm::dot(d, d);
+    const T tc = -glm::dot(o, d) / dd;
+    const Vec3<T> q = (o + tc * d) / R;
+    // Cheap rejection: bounding sphere (radius 1 + rr), then the slab |z| < rr.
+    const T outer = T(1) + rr;
+    const T q2 = glm::dot(q, q);
+    if (q2 >= outer * outer) return 0;
+    const T len = std::sqrt(dd);
+    const Vec3<T> u = d / len;
+    T half = std::sqrt((outer - std::sqrt(q2)) * (outer + std::sqrt(q2)));
+    T lo = -half, hi = half;
+    if (u.z != T(0)) {
+        T za = (-rr - q.z) / u.z, zb = (rr - q.z) / u.z;
+        if (za > zb) { const T t = za; za = zb; zb = t; }
+        lo = std::max(lo, za);
+        hi = std::min(hi, zb);
+    } else if (!(std::abs(q.z) < rr)) {
+        return 0;
+    }
+    if (!(lo < hi)) return 0;
+    // Widen by a few ulps so the ends are surely outside the torus (they are
+    // on its bounding surfaces): the sign walk below assumes they are.
+    const T margin = T(8) * eps * (T(1) + half);
+    lo -= margin;
+    hi += margin;
+
+    const TorusLine<T> line{q, u, rr * rr};
+    const T uu = glm::dot(u, u), b = glm::dot(q, u);
+    const T k = q2 + T(1) - rr * rr;
+    const T alpha = u.x * u.x + u.y * u.y, beta = q.x * u.x + q.y * u.y, gamma = q.x * q.x + q.y * q.y;
+    const T c[5] = {k * k - T(4) * gamma, T(4) * b * k - T(8) * beta,
+                    T(4) * b * b + T(2) * uu * k - T(4) * alpha, T(4) * uu * b, uu * uu};
+    T cuts[5];
+    cuts[0] = lo;
+    const int nturn = quartic_turning_points(c, lo, hi, T(4) * eps, cuts + 1);
+    cuts[nturn + 1] = hi;
+
+    // Walk the monotone pieces; the ends are outside, each sign change of F
+    // is one crossing. F == 0 counts as outside (the surface is not inside).
+    const T scale = R / len;  // λ -> t
+    const T tol = eps;
+    bool inside = false;
+    T enter = T(0);
+    int n = 0;
+    for (int i = 1; i <= nturn + 1; ++i) {
+        T dummy;
+        const bool in_b = i <= nturn && line(cuts[i], dummy) < T(0);
+        if (in_b == inside) continue;
+        const T root = bracketed_root<T>(line, cuts[i - 1], cuts[i], inside, tol, 80);
+        if (in_b) {
+            enter = root;
+        } else if (n < kMaxSpans) {
+            emit_span(out, n, tc, enter * scale, root * scale, kPartSide, kPartSide);
+        }
+        inside = in_b;
+    }
+    return n;
+}
+
+glm::dvec3 normal_torus(const double* p, const glm::dvec3& x, std::uint8_t) {
+    // From the nearest point of the core circle out to x.
+    const double rho = std::sqrt(x.x * x.x + x.y * x.y);
+    if (rho == 0) return {0, 0, x.z >= 0 ? 1.0 : -1.0};
+    const double s = p[0] / rho;
+    return {x.x - s * x.x, x.y - s * x.y, x.z};
+}
+
+template int intersect_torus<float>(const double*, const Vec3<float>&, const Vec3<float>&, Span<float>*);
+template int intersect_torus<double>(const double*, const Vec3<double>&, const Vec3<double>&, Span<double>*);
+
+}  // namespace kerf::csg

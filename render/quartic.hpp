@@ -1,0 +1,80 @@
+// Root isolation for a quartic on a bounded interval, after Yuksel, "High-
+// performance polynomial root finding for graphics" (HPG 2022): the roots of
+// the derivative split the interval into pieces where the polynomial is
+// monotone, so each piece holds at most one root and a bracketed Newton
+// iteration finds it. No closed-form Ferrari/Cardano step, whose cancellation
+// is what ruins thin tori; no complex arithmetic; cost bounded by the interval.
+#pragma once
+#include <cmath>
+#include <limits>
+
+#include "render/quadratic.hpp"
+
+namespace kerf::csg {
+
+// c[0] + c[1]·x + ... + c[N]·x^N and its derivative (Horner).
+template <typename T, int N>
+inline T poly_eval(const T* c, T x, T& deriv) {
+    T v = c[N], dv = T(0);
+    for (int i = N - 1; i >= 0; --i) {
+        dv = dv * x + v;
+        v = v * x + c[i];
+    }
+    deriv = dv;
+    return v;
+}
+
+// A root of f in [a, b], where f(a) and f(b) have opposite signs (`a_negative`
+// says which): Newton from the midpoint, falling back to bisection whenever a
+// step leaves the shrinking bracket. f(x, deriv) returns f and sets f'.
+template <typename T, typename F>
+inline T bracketed_root(F&& f, T a, T b, bool a_negative, T tol, int max_iter) {
+    T x = T(0.5) * (a + b);
+    for (int it = 0; it < max_iter; ++it) {
+        T df;
+        const T fx = f(x, df);
+        if (fx == T(0)) return x;
+        if ((fx < T(0)) == a_negative) a = x; else b = x;
+        T next = x - fx / df;
+        if (!(next > a && next < b)) next = T(0.5) * (a + b);  // also catches df == 0 / NaN
+        if (std::abs(next - x) <= tol) return next;
+        x = next;
+    }
+    return x;
+}
+
+// Sorted points in (lo, hi) where the quartic c[0..4] may turn (roots of its
+// cubic derivative); between consecutive ones it is monotone. Returns count.
+template <typename T>
+inline int quartic_turning_points(const T c[5], T lo, T hi, T tol, T out[3]) {
+    const T d1[4] = {c[1], T(2) * c[2], T(3) * c[3], T(4) * c[4]};  // P'
+    // Turning points of P' itself: roots of P'' = 12c4·x² + 6c3·x + 2c2.
+    T cut[4] = {lo, hi, hi, hi};
+    int ncut = 1;
+    const T qa = T(12) * c[4], qhb = T(3) * c[3], qc = T(2) * c[2];
+    const T disc = discriminant(qhb, qa, qc);
+    if (disc > T(0) && qa != T(0)) {
+        const T q = -(qhb + std::copysign(std::sqrt(disc), qhb));
+        T x1 = q / qa, x2 = qc / q;
+        if (x1 > x2) { const T t = x1; x1 = x2; x2 = t; }
+        if (x1 > lo && x1 < hi) cut[ncut++] = x1;
+        if (x2 > lo && x2 < hi) cut[ncut++] = x2;
+    }
+    cut[ncut++] = hi;
+    int n = 0;
+    T dummy;
+    T va = poly_eval<T, 3>(d1, cut[0], dummy);
+    for (int i = 0; i + 1 < ncut; ++i) {
+        const T vb = poly_eval<T, 3>(d1, cut[i + 1], dummy);
+        if ((va < T(0)) != (vb < T(0)) && va != T(0) && vb != T(0)) {
+            auto fd = [&](T x, T& df) { return poly_eval<T, 3>(d1, x, df); };
+            out[n++] = bracketed_root<T>(fd, cut[i], cut[i + 1], va < T(0), tol, 60);
+        } else if (vb == T(0) && i + 2 < ncut) {
+            out[n++] = cut[i + 1];  // an exact turning point at a cut
+        }
+        va = vb;
+    }
+    return n;
+}
+
+}  // namespace kerf::csg

@@ -1,0 +1,87 @@
+#include <catch2/catch.hpp>
+
+#include "prim_check.hpp"
+
+using namespace kerf::test;
+using kerf::csg::PrimKind;
+
+TEST_CASE("torus: random rays against the oracle, all scales and thin tori", "[prim][torus][accuracy]") {
+    random_suite("torus r/R=0.25", [](double s) { return make_leaf(PrimKind::Torus, {s, 0.25 * s}); }, 16, 16, 12000,
+                 3000, 501);
+    random_suite("torus r/R=0.9", [](double s) { return make_leaf(PrimKind::Torus, {s, 0.9 * s}); }, 16, 16, 6000,
+                 2000, 502);
+    random_suite("torus r/R=1e-3", [](double s) { return make_leaf(PrimKind::Torus, {s, 1e-3 * s}); }, 16, 16, 6000,
+                 2000, 503);
+}
+
+TEST_CASE("thin tori: rays aimed at the tube", "[prim][torus][accuracy]") {
+    // Random rays rarely meet a thin tube; aim at points of the core circle.
+    for (double ratio : {1e-2, 1e-3}) {
+        for (double s : {1e-6, 1.0, 1e6}) {
+            const auto leaf = make_leaf(PrimKind::Torus, {s, ratio * s});
+            RayGen gen(509);
+            CheckStats st, sf;
+            for (int i = 0; i < 20000; ++i) {
+                const double phi = gen.uniform(0, 6.283185307179586);
+                const dvec3 aim = s * dvec3(std::cos(phi), std::sin(phi), 0) + ratio * s * gen.unit() * 1.2;
+                const dvec3 u = gen.unit();
+                const double back = i % 4 == 0 ? 1e3 * s : s * gen.uniform(0, 3);
+                check_ray<double>(leaf, aim - back * u, u * gen.uniform(0.1, 10), 16, s, st);
+                check_ray<float>(leaf, aim - back * u, u * gen.uniform(0.1, 10), 16, s, sf);
+            }
+            INFO("ratio " << ratio << " scale " << s << ": " << st.first_failure << " / " << sf.first_failure);
+            CHECK(st.failures == 0);
+            CHECK(sf.failures == 0);
+            CHECK(st.hits > 5000);
+            CHECK(st.flips > st.crossings * 9 / 10);
+            report(ratio == 1e-2 ? "torus-aimed r/R=1e-2" : "torus-aimed r/R=1e-3", "double", "near", s, st);
+            report(ratio == 1e-2 ? "torus-aimed r/R=1e-2" : "torus-aimed r/R=1e-3", "float", "near", s, sf);
+        }
+    }
+}
+
+TEMPLATE_TEST_CASE("torus: closed-form crossings", "[prim][torus]", float, double) {
+    const double eps = std::numeric_limits<TestType>::epsilon();
+    for (double s : {1e-6, 1.0, 1e6}) {
+        for (double ratio : {0.25, 1e-3}) {
+            const double R = s, r = ratio * s;
+            const auto leaf = make_leaf(PrimKind::Torus, {R, r});
+            const double tol = 64 * eps * s;
+            INFO("scale " << s << " ratio " << ratio);
+            // Through the centre along x: both sides of the tube.
+            CHECK(compare_spans<TestType>(leaf, {-3 * s, 0, 0}, {1, 0, 0},
+                                          {{3 * s - R - r, 3 * s - R + r}, {3 * s + R - r, 3 * s + R + r}}, tol) == "");
+            // The same from far away (1e3 sizes), un-normalised direction.
+            CHECK(compare_spans<TestType>(leaf, {0, -1e3 * s, 0}, {0, 4, 0},
+                                          {{(1e3 * s - R - r) / 4, (1e3 * s - R + r) / 4},
+                                           {(1e3 * s + R - r) / 4, (1e3 * s + R + r) / 4}},
+                                          1e3 * tol) == "");
+            // Down the axis through the hole: no span.
+            CHECK(compare_spans<TestType>(leaf, {0, 0, 5 * s}, {0, 0, -1}, {}, 0) == "");
+            // Vertically through the tube's core circle.
+            CHECK(compare_spans<TestType>(leaf, {R, 0, 2 * s}, {0, 0, -1}, {{2 * s - r, 2 * s + r}}, tol) == "");
+            // Starting on the outer equator, going inward along -x.
+            CHECK(compare_spans<TestType>(leaf, {R + r, 0, 0}, {-1, 0, 0}, {{0, 2 * r}, {2 * R, 2 * R + 2 * r}},
+                                          tol) == "");
+        }
+    }
+}
+
+TEST_CASE("torus: grazing the top of the tube down to 1e-9", "[prim][torus]") {
+    for (double s : {1e-6, 1.0, 1e6}) {
+        for (double ratio : {0.25, 1e-3}) {
+            const double R = s, r = ratio * s;
+            const auto leaf = make_leaf(PrimKind::Torus, {R, r});
+            for (double delta : {1e-3, 1e-6, 1e-9}) {
+                // Along x at height z: crosses the tube where (|x| - R)² = r² - z².
+                const double z = r * (1 - delta), w = std::sqrt((r - z) * (r + z));
+                const double x0 = -3 * s;
+                const double tol = 8 * 0x1p-52 * s * s / w;
+                INFO("scale " << s << " ratio " << ratio << " delta " << delta);
+                CHECK(compare_spans<double>(leaf, {x0, 0, z}, {1, 0, 0},
+                                            {{-x0 - R - w, -x0 - R + w}, {-x0 + R - w, -x0 + R + w}}, tol) == "");
+                CHECK(compare_spans<double>(leaf, {x0, 0, r * (1 + delta)}, {1, 0, 0}, {}, 0) == "");
+            }
+        }
+    }
+}
