@@ -25,10 +25,12 @@ public:
                scale(s.x, s.y, s.z);
     }
 
-    csg::Leaf primitive(std::uint32_t material) {
+    csg::Leaf primitive(std::uint32_t material, bool allow_plane = true) {
         using K = csg::PrimKind;
         const glm::dmat4 m = transform();
-        switch (pick(7)) {
+        int kind = pick(7);
+        if (!allow_plane && kind == 4) kind = 0;
+        switch (kind) {
             case 0: return make_leaf(K::Sphere, {uni(0.3, 1.0)}, m, material);
             case 1: return make_leaf(K::Box, {uni(-1, -0.2), uni(-1, -0.2), uni(-1, -0.2), uni(0.2, 1), uni(0.2, 1), uni(0.2, 1)}, m, material);
             case 2: {
@@ -60,7 +62,49 @@ public:
         return t;
     }
 
+    // Wide nodes (more children than the tracer evaluates directly, so they
+    // go through per-node BVHs): a union of a few differences, each a random
+    // minuend minus many small random solids (some themselves composite).
+    Tree wide() {
+        Tree u = op(csg::Op::Union, {});
+        const int parts = 1 + pick(3);
+        for (int p = 0; p < parts; ++p) {
+            const csg::Leaf minuend = primitive(0, false);
+            Tree d = op(csg::Op::Difference, {leaf(minuend)});
+            const int n = 10 + pick(30);
+            for (int k = 0; k < n; ++k) {
+                Tree small = pick(4) == 0 ? tree(3, 5) : leaf(primitive(1, false));
+                const glm::dvec3 at(uni(minuend.bounds.lo.x, minuend.bounds.hi.x), uni(minuend.bounds.lo.y, minuend.bounds.hi.y),
+                                    uni(minuend.bounds.lo.z, minuend.bounds.hi.z));
+                d.kids.push_back(shrink(std::move(small), uni(0.15, 0.4), at));
+            }
+            u.kids.push_back(std::move(d));
+        }
+        for (int k = 0; k < 10; ++k)
+            u.kids.push_back(shrink(leaf(primitive(2, false)), 0.3, {uni(-1.2, 1.2), uni(-1.2, 1.2), uni(-1.2, 1.2)}));
+        return u;
+    }
+
 private:
+    // Scales a subtree by f and moves its origin to `at`.
+    Tree shrink(Tree t, double f, glm::dvec3 at) {
+        const glm::dmat4 m = translate(at.x, at.y, at.z) * scale(f, f, f);
+        apply(t, m);
+        return t;
+    }
+    static void apply(Tree& t, const glm::dmat4& m) {
+        if (t.op != csg::Op::Leaf) {
+            for (Tree& k : t.kids) apply(k, m);
+            return;
+        }
+        if (t.leaf.kind == csg::PrimKind::Plane) return;  // half-spaces stay as they are
+        const csg::Leaf& l = t.leaf;
+        glm::dmat4 w(l.world_from_object.linear);
+        w[3] = glm::dvec4(l.world_from_object.offset, 1.0);
+        std::vector<double> p(l.p, l.p + 6);
+        t.leaf = make_leaf(l.kind, p, m * w, l.material);
+    }
+
     std::mt19937_64 rng_;
 };
 
