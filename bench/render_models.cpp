@@ -3,6 +3,7 @@
 // the tracer alone:  render_models MODEL [size] [spp] [threads] [out.png]
 // MODEL: shell65 | shell16 | checkered | holesN (e.g. holes40) | grooved
 #include <cstdio>
+#include <ctime>
 #include <cstdlib>
 #include <string>
 
@@ -107,10 +108,12 @@ int main(int argc, char** argv) {
     else if (model.rfind("holes", 0) == 0) s = holes(std::atoi(model.c_str() + 5));
     else { std::fprintf(stderr, "unknown model\n"); return 2; }
     render::RenderStats st;
+    const std::clock_t cpu0 = std::clock();
     const render::Image im = render::render(s, o, &st);
+    const double cpu = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
     const double rays = double(st.rays());
-    std::printf("%s %dx%d spp %d: %.3f s, %.2f MRay/s, rays %.0f (primary %llu), per ray: union %.2f diff %.2f inter %.2f tests %.2f\n",
-                model.c_str(), o.width, o.height, o.spp, st.seconds, rays / st.seconds * 1e-6, rays,
+    std::printf("%s %dx%d spp %d: cpu %.3f s, wall %.3f s, %.2f MRay/s, rays %.0f (primary %llu), per ray: union %.2f diff %.2f inter %.2f tests %.2f\n",
+                model.c_str(), o.width, o.height, o.spp, cpu, st.seconds, rays / st.seconds * 1e-6, rays,
                 (unsigned long long)st.primary_rays, st.union_ops / rays, st.difference_ops / rays,
                 st.intersection_ops / rays, st.interval_tests / rays);
     if (argc > 5) render::write_image(im, argv[5]);

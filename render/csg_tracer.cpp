@@ -77,6 +77,7 @@ struct EvalState {
     std::uint32_t eval(std::uint32_t node, double a, double b, Need need);
     bool box_hit(const csg::Aabb& box, double a, double b) const;
     std::uint32_t eval_leaf(const Node& n, double a, double b);
+    std::uint32_t eval_mesh(std::uint32_t leaf_id, double a, double b);
     std::uint32_t eval_union(std::uint32_t node, const Node& n, double a, double b);
     std::uint32_t eval_intersection(const Node& n, double a, double b);
     std::uint32_t eval_difference(std::uint32_t node, const Node& n, double a, double b, Need need);
@@ -91,15 +92,20 @@ struct CsgTracer::Impl {
     Accel top;
     std::vector<std::int32_t> accel_of_node;  // -1: children evaluated directly
     std::vector<std::unique_ptr<Accel>> node_accels;
+    std::vector<RTCScene> mesh_scenes;        // per csg::Mesh used by a leaf (object space)
+    std::vector<csg::Aabb> mesh_boxes;        // object-space bounds of each mesh
 
     Impl(const csg::Scene& s, bool f) : scene(s), use_float(f) {}
     ~Impl() {
         if (top.scene) rtcReleaseScene(top.scene);
         for (auto& a : node_accels)
             if (a->scene) rtcReleaseScene(a->scene);
+        for (RTCScene m : mesh_scenes)
+            if (m) rtcReleaseScene(m);
         if (device) rtcReleaseDevice(device);
     }
     void build_accel(Accel& accel, const std::vector<std::uint32_t>& nodes, bool top_level, double scale);
+    void build_meshes();
 };
 
 namespace {
@@ -209,7 +215,70 @@ RTCRayHit make_rayhit(const EvalState& st, double a, double b) {
     return rh;
 }
 
+struct MeshContext {
+    RTCIntersectContext rtc;
+    SpanStack* stack;
+    std::uint32_t leaf;
+    double t_offset;
+};
+
+// Records every triangle crossed (t, triangle, entering or leaving) and
+// rejects it, so Embree goes on to the next one.
+void mesh_filter(const RTCFilterFunctionNArguments* args) {
+    if (!args->valid[0]) return;
+    auto* ctx = reinterpret_cast<MeshContext*>(args->context);
+    const float t = RTCRayN_tfar(args->ray, args->N, 0);
+    const unsigned prim = RTCHitN_primID(args->hit, args->N, 0);
+    // Orientation from our own outward (CCW) winding, not Embree's Ng convention.
+    const csg::Mesh& m = *static_cast<const csg::Mesh*>(args->geometryUserPtr);
+    const std::uint32_t* tri = &m.triangles[std::size_t(prim) * 3];
+    const glm::dvec3 n = glm::cross(m.points[tri[1]] - m.points[tri[0]], m.points[tri[2]] - m.points[tri[0]]);
+    const double dn = n.x * RTCRayN_dir_x(args->ray, args->N, 0) + n.y * RTCRayN_dir_y(args->ray, args->N, 0) +
+                      n.z * RTCRayN_dir_z(args->ray, args->N, 0);
+    Span s;
+    s.t0 = s.t1 = ctx->t_offset + double(t);
+    s.e0 = SpanEnd{ctx->leaf, ctx->leaf, std::uint8_t(dn < 0 ? 1 : 0), 0, 0, prim};  // part 1: entering
+    s.e1 = s.e0;
+    s.inner = ctx->leaf;
+    ctx->stack->push(s);
+    args->valid[0] = 0;
+}
+
 }  // namespace
+
+void CsgTracer::Impl::build_meshes() {
+    mesh_scenes.assign(scene.meshes.size(), nullptr);
+    mesh_boxes.assign(scene.meshes.size(), csg::Aabb{});
+    for (const csg::Leaf& leaf : scene.leaves) {
+        if (leaf.kind != csg::PrimKind::Mesh || leaf.mesh >= scene.meshes.size() || mesh_scenes[leaf.mesh]) continue;
+        const csg::Mesh& mesh = scene.meshes[leaf.mesh];
+        RTCScene ms = rtcNewScene(device);
+        rtcSetSceneFlags(ms, RTC_SCENE_FLAG_ROBUST);
+        RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                               3 * sizeof(float), mesh.points.size()));
+        csg::Aabb box;
+        for (std::size_t i = 0; i < mesh.points.size(); ++i) {
+            for (int c = 0; c < 3; ++c) v[3 * i + c] = float(mesh.points[i][c]);
+            box.extend(mesh.points[i]);
+        }
+        const std::size_t tris = mesh.triangles.size() / 3;
+        auto* idx = static_cast<unsigned*>(
+            rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), tris));
+        for (std::size_t i = 0; i < 3 * tris; ++i)
+            idx[i] = mesh.triangles[i] < mesh.points.size() ? mesh.triangles[i] : 0;  // lowering validates; stay in range
+        rtcSetGeometryUserData(g, const_cast<csg::Mesh*>(&mesh));
+        rtcSetGeometryIntersectFilterFunction(g, mesh_filter);
+        rtcCommitGeometry(g);
+        rtcAttachGeometry(ms, g);
+        rtcReleaseGeometry(g);
+        rtcCommitScene(ms);
+        mesh_scenes[leaf.mesh] = ms;
+        mesh_boxes[leaf.mesh] = box;
+    }
+    if (RTCError e = rtcGetDeviceError(device); e != RTC_ERROR_NONE)
+        throw std::runtime_error("embree failed to build a mesh (error " + std::to_string(int(e)) + ")");
+}
 
 void CsgTracer::Impl::build_accel(Accel& accel, const std::vector<std::uint32_t>& nodes, bool top_level,
                                   double scale) {
@@ -267,6 +336,7 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
 
     impl_->accel_of_node.assign(scene.nodes.size(), -1);
     if (scene.root == csg::kNone) return;
+    impl_->build_meshes();
     std::vector<std::uint32_t> units, stack{scene.root};
     while (!stack.empty()) {  // operands of the root's union chain, in order
         const std::uint32_t id = stack.back();
@@ -325,6 +395,7 @@ std::uint32_t EvalState::eval(std::uint32_t node, double a, double b, Need need)
 
 std::uint32_t EvalState::eval_leaf(const Node& n, double a, double b) {
     const csg::Leaf& leaf = impl->scene.leaves[n.first];
+    if (leaf.kind == csg::PrimKind::Mesh) return eval_mesh(n.first, a, b);
     const glm::dvec3 lo = leaf.object_from_world.point(o);
     const glm::dvec3 ld = leaf.object_from_world.vector(d);
     csg::Span<double> spans[csg::kMaxSpans];
@@ -345,13 +416,82 @@ std::uint32_t EvalState::eval_leaf(const Node& n, double a, double b) {
         Span s;
         s.t0 = spans[i].t0;
         s.t1 = spans[i].t1;
-        s.e0 = SpanEnd{leaf_id, leaf_id, spans[i].part0, 0, 0};
-        s.e1 = SpanEnd{leaf_id, leaf_id, spans[i].part1, 0, 0};
+        s.e0 = SpanEnd{leaf_id, leaf_id, spans[i].part0, 0, 0, 0};
+        s.e1 = SpanEnd{leaf_id, leaf_id, spans[i].part1, 0, 0, 0};
         s.inner = leaf_id;
         scratch->stack.push(s);
         ++pushed;
     }
     return pushed;
+}
+
+// A mesh's spans along the whole chord of its box (so a window starting
+// inside the mesh still knows it is inside): all crossings, sorted, paired
+// by orientation with a depth count (robust to nested shells).
+std::uint32_t EvalState::eval_mesh(std::uint32_t leaf_id, double a, double b) {
+    const csg::Leaf& leaf = impl->scene.leaves[leaf_id];
+    if (leaf.mesh >= impl->mesh_scenes.size() || !impl->mesh_scenes[leaf.mesh]) return 0;
+    const csg::Aabb& box = impl->mesh_boxes[leaf.mesh];
+    const glm::dvec3 lo = leaf.object_from_world.point(o);
+    const glm::dvec3 ld = leaf.object_from_world.vector(d);
+    double t0 = -kInf, t1 = kInf;
+    const double pad = 1e-6 * (glm::length(box.hi - box.lo) + 1e-300);
+    for (int i = 0; i < 3; ++i) {
+        if (ld[i] == 0) {
+            if (lo[i] < box.lo[i] - pad || lo[i] > box.hi[i] + pad) return 0;
+            continue;
+        }
+        double ta = (box.lo[i] - pad - lo[i]) / ld[i], tb = (box.hi[i] + pad - lo[i]) / ld[i];
+        if (ta > tb) std::swap(ta, tb);
+        t0 = std::max(t0, ta);
+        t1 = std::min(t1, tb);
+    }
+    if (!(t0 < t1) || t1 < a || t0 > b) return 0;
+    SpanStack& st = scratch->stack;
+    const std::uint32_t base = st.size();
+    MeshContext ctx;
+    rtcInitIntersectContext(&ctx.rtc);
+    ctx.stack = &st;
+    ctx.leaf = leaf_id;
+    ctx.t_offset = t0;
+    RTCRayHit rh;
+    const glm::dvec3 start = lo + t0 * ld;
+    rh.ray.org_x = float(start.x), rh.ray.org_y = float(start.y), rh.ray.org_z = float(start.z);
+    rh.ray.dir_x = float(ld.x), rh.ray.dir_y = float(ld.y), rh.ray.dir_z = float(ld.z);
+    rh.ray.tnear = 0;
+    rh.ray.tfar = round_up(t1 - t0);
+    rh.ray.time = 0;
+    rh.ray.mask = 0xFFFFFFFFu;
+    rh.ray.id = 0;
+    rh.ray.flags = 0;
+    rh.hit.geomID = rh.hit.primID = rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(impl->mesh_scenes[leaf.mesh], &ctx.rtc, &rh);
+    const std::uint32_t hits = st.size() - base;
+
+    scratch->counters.interval_tests++;
+    Span* h = st.at(base);
+    std::sort(h, h + hits, [](const Span& x, const Span& y) { return x.t0 < y.t0; });
+    // Pair crossings: entering raises the depth, leaving lowers it; a
+    // duplicate crossing on a shared edge (same direction, same t) counts once.
+    const double same = 1e-6 * (t1 - t0);
+    std::uint32_t out = 0;
+    int depth = 0;
+    Span cur{};
+    for (std::uint32_t i = 0; i < hits; ++i) {
+        const Span x = h[i];
+        const bool entering = x.e0.part == 1;
+        if (i > 0 && h[i - 1].e0.part == x.e0.part && x.t0 - h[i - 1].t0 <= same) continue;
+        if (entering) {
+            if (depth++ == 0) cur = x;
+        } else if (depth > 0 && --depth == 0) {
+            cur.t1 = x.t0;
+            cur.e1 = x.e0;
+            if (cur.t1 - cur.t0 > eps && cur.t1 >= a && cur.t0 <= b) h[out++] = cur;
+        }
+    }
+    st.resize(base + out);
+    scratch->counters.spans_found += out;
+    return out;
 }
 
 void EvalState::collect(const Accel& accel, double a, double b) {
@@ -522,7 +662,14 @@ bool CsgTracer::occluded(const TraceRay& ray, TraceScratch& scratch) const {
 
 glm::dvec3 CsgTracer::normal(const TraceHit& hit, const glm::dvec3& world_point) const {
     const csg::Leaf& leaf = impl_->scene.leaves[hit.surface.leaf];
-    const glm::dvec3 n_obj = csg::object_normal(leaf, leaf.object_from_world.point(world_point), hit.surface.part);
+    glm::dvec3 n_obj;
+    if (leaf.kind == csg::PrimKind::Mesh) {  // the triangle's own normal (CCW seen from outside)
+        const csg::Mesh& m = impl_->scene.meshes[leaf.mesh];
+        const std::uint32_t* tri = &m.triangles[std::size_t(hit.surface.prim) * 3];
+        n_obj = glm::cross(m.points[tri[1]] - m.points[tri[0]], m.points[tri[2]] - m.points[tri[0]]);
+    } else {
+        n_obj = csg::object_normal(leaf, leaf.object_from_world.point(world_point), hit.surface.part);
+    }
     glm::dvec3 n = leaf.normal_to_world * n_obj;
     const double len = glm::length(n);
     n = len > 0 ? n / len : glm::dvec3(0, 0, 1);

@@ -14,6 +14,7 @@ struct SpanEnd {
     std::uint8_t part = 0;       // surface piece, for object_normal()
     std::uint8_t flip = 0;       // 1: the final solid's normal is -(leaf's outward normal)
     std::uint8_t cut = 0;        // 1: a cut face: show mat_leaf's interior colour
+    std::uint32_t prim = 0;      // mesh leaves: the triangle hit
 };
 
 struct Span {
