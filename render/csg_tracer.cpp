@@ -467,7 +467,6 @@ std::uint32_t EvalState::eval_mesh(std::uint32_t leaf_id, double a, double b) {
     rh.hit.geomID = rh.hit.primID = rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(impl->mesh_scenes[leaf.mesh], &ctx.rtc, &rh);
     const std::uint32_t hits = st.size() - base;
-
     scratch->counters.interval_tests++;
     Span* h = st.at(base);
     std::sort(h, h + hits, [](const Span& x, const Span& y) { return x.t0 < y.t0; });

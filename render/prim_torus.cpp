@@ -75,21 +75,25 @@ int intersect_torus(const double* p, const Vec3<T>& o, const Vec3<T>& d, Span<T>
     // Walk the monotone pieces; the ends are outside, each sign change of F
     // is one crossing. F == 0 counts as outside (the surface is not inside).
     const T scale = R / len;  // λ -> t
-    const T tol = eps;
+    const T tol = T(2) * eps;
     bool inside = false;
     T enter = T(0);
+    T f_prev = T(1);  // the ends are outside: any positive value does
     int n = 0;
     for (int i = 1; i <= nturn + 1; ++i) {
         T dummy;
-        const bool in_b = i <= nturn && line(cuts[i], dummy) < T(0);
-        if (in_b == inside) continue;
-        const T root = bracketed_root<T>(line, cuts[i - 1], cuts[i], inside, tol, 80);
-        if (in_b) {
-            enter = root;
-        } else if (n < kMaxSpans) {
-            emit_span(out, n, tc, enter * scale, root * scale, kPartSide, kPartSide);
+        const T f = i <= nturn ? line(cuts[i], dummy) : T(1);
+        const bool in_b = f < T(0);
+        if (in_b != inside) {
+            const T root = bracketed_root<T>(line, cuts[i - 1], cuts[i], f_prev, f, tol, 80);
+            if (in_b) {
+                enter = root;
+            } else if (n < kMaxSpans) {
+                emit_span(out, n, tc, enter * scale, root * scale, kPartSide, kPartSide);
+            }
+            inside = in_b;
         }
-        inside = in_b;
+        f_prev = f;
     }
     return n;
 }

@@ -14,15 +14,34 @@ struct Interval {
     T lo, hi;
 };
 
-// b² - a·c with the rounding error of both products compensated (Kahan 2004,
+// a·b = p + e exactly (Dekker's product; fma where the target has it —
+// the default x86-64 target does not, and libm's software fma is slow).
+inline void two_product(double a, double b, double& p, double& e) {
+    p = a * b;
+#if defined(FP_FAST_FMA)
+    e = std::fma(a, b, -p);
+#else
+    constexpr double split = 134217729.0;  // 2^27 + 1
+    const double ca = split * a, cb = split * b;
+    const double ahi = ca - (ca - a), alo = a - ahi;
+    const double bhi = cb - (cb - b), blo = b - bhi;
+    e = ((ahi * bhi - p) + ahi * blo + alo * bhi) + alo * blo;
+#endif
+}
+
+// b² - a·c with the rounding error of both products compensated (Kahan,
 // "On the cost of floating-point computation without extra-precise
 // arithmetic"): accurate to a few ulps unless the result itself is tiny.
-template <typename T>
-inline T discriminant(T b, T a, T c) {
-    const T w = a * c;
-    const T e = std::fma(-a, c, w);   // w - a·c exactly
-    const T f = std::fma(b, b, -w);  // b² - w with one rounding
-    return f + e;
+inline double discriminant(double b, double a, double c) {
+    double pb, eb, pac, eac;
+    two_product(b, b, pb, eb);
+    two_product(a, c, pac, eac);
+    return (pb - pac) + (eb - eac);
+}
+
+// Float: the products of two floats are exact in double, so one rounding.
+inline float discriminant(float b, float a, float c) {
+    return float(double(b) * double(b) - double(a) * double(c));
 }
 
 // Intervals of s where a·s² + 2·hb·s + c < 0 (the open interior; note the half

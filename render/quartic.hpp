@@ -5,6 +5,7 @@
 // iteration finds it. No closed-form Ferrari/Cardano step, whose cancellation
 // is what ruins thin tori; no complex arithmetic; cost bounded by the interval.
 #pragma once
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -24,20 +25,28 @@ inline T poly_eval(const T* c, T x, T& deriv) {
     return v;
 }
 
-// A root of f in [a, b], where f(a) and f(b) have opposite signs (`a_negative`
-// says which): Newton from the midpoint, falling back to bisection whenever a
-// step leaves the shrinking bracket. f(x, deriv) returns f and sets f'.
+// A root of f in [a, b], where fa = f(a) and fb = f(b) have opposite signs:
+// Newton from the secant point, falling back to bisection whenever a step
+// leaves the shrinking bracket. f(x, deriv) returns f and sets f'. Stops once
+// a step is below tol·max(1, |x|) (tol: a few eps, relative, so Newton cannot
+// cycle between neighbouring floats until max_iter).
 template <typename T, typename F>
-inline T bracketed_root(F&& f, T a, T b, bool a_negative, T tol, int max_iter) {
-    T x = T(0.5) * (a + b);
+inline T bracketed_root(F&& f, T a, T b, T fa, T fb, T tol, int max_iter) {
+    const bool a_negative = fa < T(0);
+    T x = a - fa * (b - a) / (fb - fa);
+    if (!(x > a && x < b)) x = T(0.5) * (a + b);
     for (int it = 0; it < max_iter; ++it) {
         T df;
         const T fx = f(x, df);
         if (fx == T(0)) return x;
         if ((fx < T(0)) == a_negative) a = x; else b = x;
-        T next = x - fx / df;
+        const T step = fx / df;
+        // Converged: checked before the bracket test, since at the root the
+        // rounding noise in f may point a tiny step just outside the bracket.
+        if (std::abs(step) <= tol * std::max(T(1), std::abs(x))) return x;
+        T next = x - step;
         if (!(next > a && next < b)) next = T(0.5) * (a + b);  // also catches df == 0 / NaN
-        if (std::abs(next - x) <= tol) return next;
+        if (!(a < next && next < b)) return x;  // the bracket has collapsed
         x = next;
     }
     return x;
@@ -68,7 +77,7 @@ inline int quartic_turning_points(const T c[5], T lo, T hi, T tol, T out[3]) {
         const T vb = poly_eval<T, 3>(d1, cut[i + 1], dummy);
         if ((va < T(0)) != (vb < T(0)) && va != T(0) && vb != T(0)) {
             auto fd = [&](T x, T& df) { return poly_eval<T, 3>(d1, x, df); };
-            out[n++] = bracketed_root<T>(fd, cut[i], cut[i + 1], va < T(0), tol, 60);
+            out[n++] = bracketed_root<T>(fd, cut[i], cut[i + 1], va, vb, tol, 60);
         } else if (vb == T(0) && i + 2 < ncut) {
             out[n++] = cut[i + 1];  // an exact turning point at a cut
         }

@@ -209,12 +209,14 @@ inline double median(std::vector<double> v) {
     return v[v.size() / 2];
 }
 
-// Prints one accuracy-table row when KERF_ACCURACY_REPORT is set (docs/accuracy.md).
+// Prints one accuracy row when KERF_ACCURACY_REPORT is set, as CSV:
+// shape,precision,ray set,scale,crossings,max err/size,median err/size,max units
+// (bench/accuracy_table.py turns these into the table of docs/accuracy.md).
 inline void report(const char* prim, const char* precision, const char* rays, double scale, const CheckStats& st) {
     if (!std::getenv("KERF_ACCURACY_REPORT")) return;
     const double mx = st.rel_err.empty() ? 0 : *std::max_element(st.rel_err.begin(), st.rel_err.end());
-    std::printf("| %s | %s | %s | %.0e | %ld | %.2e | %.2e | %.1f |\n", prim, precision, rays, scale, st.crossings,
-                mx, median(st.rel_err), st.max_units);
+    std::printf("ACC,%s,%s,%s,%.0e,%ld,%.2e,%.2e,%.2f\n", prim, precision, rays, scale, st.crossings, mx,
+                median(st.rel_err), st.max_units);
 }
 
 // The standard random suite for one shape family: for every scale 1e-6..1e6
@@ -228,7 +230,7 @@ void random_suite(const char* name, MakeLeaf make, double K, double Kf, int near
         const double scale = std::pow(10.0, e);
         const Leaf leaf = make(scale);
         const Ball ball = bounding_ball(leaf, scale);
-        CheckStats nd, nf, fd, ff;
+        CheckStats nd, nf, ad, af, rd, rf;  // near; 1e6 away (absolute); 1e6 sizes away
         for (int i = 0; i < near; ++i) {
             dvec3 o, d;
             gen.ray(ball, ball.radius * gen.uniform(0, 3), o, d);
@@ -238,10 +240,10 @@ void random_suite(const char* name, MakeLeaf make, double K, double Kf, int near
         for (int i = 0; i < far; ++i) {
             dvec3 o, d;
             gen.ray(ball, i % 2 ? 1e6 : 1e6 * scale, o, d);
-            check_ray<double>(leaf, o, d, K, scale, fd);
-            check_ray<float>(leaf, o, d, Kf, scale, ff);
+            check_ray<double>(leaf, o, d, K, scale, i % 2 ? ad : rd);
+            check_ray<float>(leaf, o, d, Kf, scale, i % 2 ? af : rf);
         }
-        for (const CheckStats* st : {&nd, &nf, &fd, &ff}) {
+        for (const CheckStats* st : {&nd, &nf, &ad, &af, &rd, &rf}) {
             INFO(name << " scale " << scale << ": " << st->first_failure);
             CHECK(st->failures == 0);
         }
@@ -250,8 +252,10 @@ void random_suite(const char* name, MakeLeaf make, double K, double Kf, int near
         CHECK(nd.hits > 0);  // thin shapes (1e-3 tori) are rarely hit by chance: aimed tests cover them
         report(name, "double", "near", scale, nd);
         report(name, "float", "near", scale, nf);
-        report(name, "double", "far", scale, fd);
-        report(name, "float", "far", scale, ff);
+        report(name, "double", "far-abs", scale, ad);
+        report(name, "float", "far-abs", scale, af);
+        report(name, "double", "far-rel", scale, rd);
+        report(name, "float", "far-rel", scale, rf);
     }
 }
 
@@ -293,6 +297,138 @@ std::string compare_spans(const Leaf& leaf, const dvec3& o, const dvec3& d, std:
         w += b;
     }
     return "got" + got + " want" + w + " | " + describe(leaf, o, d);
+}
+
+}  // namespace kerf::test
+
+namespace kerf::test {
+
+// A point of the surface from the solid's own parametrisation (not from the
+// ray code): uniform enough to reach every part (sides, caps, faces).
+inline dvec3 surface_point(const Leaf& l, RayGen& g) {
+    const double* p = l.p;
+    const double phi = g.uniform(0, 6.283185307179586);
+    const dvec3 radial(std::cos(phi), std::sin(phi), 0);
+    switch (l.kind) {
+        case PrimKind::Sphere: return p[0] * g.unit();
+        case PrimKind::Box: {
+            const int face = int(g.uniform(0, 6)) % 6, axis = face % 3;
+            dvec3 x(g.uniform(p[0], p[3]), g.uniform(p[1], p[4]), g.uniform(p[2], p[5]));
+            x[axis] = face < 3 ? p[axis] : p[axis + 3];
+            return x;
+        }
+        case PrimKind::Cylinder: {
+            const double pick = g.uniform(0, 1);
+            if (pick < 0.2) return radial * p[2] * std::sqrt(g.uniform(0, 1)) + dvec3(0, 0, p[0]);
+            if (pick < 0.4) return radial * p[3] * std::sqrt(g.uniform(0, 1)) + dvec3(0, 0, p[1]);
+            const double z = g.uniform(p[0], p[1]);
+            return radial * (p[2] + (p[3] - p[2]) * (z - p[0]) / (p[1] - p[0])) + dvec3(0, 0, z);
+        }
+        case PrimKind::Torus: {
+            const double v = g.uniform(0, 6.283185307179586);
+            return radial * (p[0] + p[1] * std::cos(v)) + dvec3(0, 0, p[1] * std::sin(v));
+        }
+        case PrimKind::Plane: {
+            const dvec3 n(p[0], p[1], p[2]);
+            const dvec3 t1 = glm::normalize(glm::cross(n, g.unit())), t2 = glm::cross(n, t1);
+            return p[3] * n + g.uniform(-1, 1) * t1 + g.uniform(-1, 1) * t2;
+        }
+        case PrimKind::Paraboloid: {
+            const double rho = p[1] * std::sqrt(g.uniform(0, 1));
+            if (g.uniform(0, 1) < 0.3) return radial * rho + dvec3(0, 0, p[0]);
+            return radial * rho + dvec3(0, 0, p[0] * rho * rho / (p[1] * p[1]));
+        }
+        case PrimKind::Hyperboloid: {
+            const double half = 0.5 * p[0], pick = g.uniform(0, 1);
+            if (pick < 0.3) return radial * p[1] * std::sqrt(g.uniform(0, 1)) + dvec3(0, 0, pick < 0.15 ? -half : half);
+            const double z = g.uniform(-half, half), s = z / half;
+            return radial * std::sqrt(p[2] * p[2] + (p[1] * p[1] - p[2] * p[2]) * s * s) + dvec3(0, 0, z);
+        }
+        case PrimKind::Mesh: break;
+    }
+    return dvec3(0);
+}
+
+// Poles, edges, corners, rims, apexes: where the surface is singular or a
+// ray is most likely to meet two parts at once.
+inline std::vector<dvec3> special_points(const Leaf& l) {
+    const double* p = l.p;
+    std::vector<dvec3> v;
+    switch (l.kind) {
+        case PrimKind::Sphere:
+            for (int a = 0; a < 3; ++a)
+                for (double sgn : {-1.0, 1.0}) {
+                    dvec3 x(0);
+                    x[a] = sgn * p[0];
+                    v.push_back(x);
+                }
+            break;
+        case PrimKind::Box:
+            for (int c = 0; c < 8; ++c)  // corners
+                v.push_back({c & 1 ? p[3] : p[0], c & 2 ? p[4] : p[1], c & 4 ? p[5] : p[2]});
+            for (int a = 0; a < 3; ++a)  // edge midpoints
+                for (int c = 0; c < 4; ++c) {
+                    dvec3 x;
+                    const int b1 = (a + 1) % 3, b2 = (a + 2) % 3;
+                    x[a] = 0.5 * (p[a] + p[a + 3]);
+                    x[b1] = c & 1 ? p[b1 + 3] : p[b1];
+                    x[b2] = c & 2 ? p[b2 + 3] : p[b2];
+                    v.push_back(x);
+                }
+            break;
+        case PrimKind::Cylinder:
+            for (double a = 0; a < 6.28; a += 1.5707963267948966) {
+                v.push_back({p[2] * std::cos(a), p[2] * std::sin(a), p[0]});  // rims (or the apex)
+                v.push_back({p[3] * std::cos(a), p[3] * std::sin(a), p[1]});
+            }
+            v.push_back({0, 0, p[0]});
+            v.push_back({0, 0, p[1]});
+            break;
+        case PrimKind::Torus:
+            for (double a = 0; a < 6.28; a += 1.5707963267948966) {
+                const dvec3 r(std::cos(a), std::sin(a), 0);
+                v.push_back(r * (p[0] - p[1]));
+                v.push_back(r * (p[0] + p[1]));
+                v.push_back(r * p[0] + dvec3(0, 0, p[1]));
+                v.push_back(r * p[0] - dvec3(0, 0, p[1]));
+            }
+            break;
+        case PrimKind::Plane: v.push_back(p[3] * dvec3(p[0], p[1], p[2])); break;
+        case PrimKind::Paraboloid:
+            v.push_back({0, 0, 0});
+            v.push_back({0, 0, p[0]});
+            for (double a = 0; a < 6.28; a += 1.5707963267948966) v.push_back({p[1] * std::cos(a), p[1] * std::sin(a), p[0]});
+            break;
+        case PrimKind::Hyperboloid:
+            for (double a = 0; a < 6.28; a += 1.5707963267948966) {
+                const dvec3 r(std::cos(a), std::sin(a), 0);
+                v.push_back(r * p[1] + dvec3(0, 0, 0.5 * p[0]));
+                v.push_back(r * p[1] - dvec3(0, 0, 0.5 * p[0]));
+                v.push_back(r * p[2]);
+            }
+            v.push_back({0, 0, 0.5 * p[0]});
+            v.push_back({0, 0, -0.5 * p[0]});
+            break;
+        case PrimKind::Mesh: break;
+    }
+    return v;
+}
+
+// One leaf per shape family at scale s (the families of the random suites).
+inline std::vector<std::pair<const char*, Leaf>> all_shapes(double s) {
+    return {
+        {"sphere", make_leaf(PrimKind::Sphere, {s})},
+        {"box", make_leaf(PrimKind::Box, {-0.3 * s, -0.6 * s, -0.2 * s, 0.7 * s, 0.4 * s, 0.9 * s})},
+        {"cylinder", make_leaf(PrimKind::Cylinder, {-0.5 * s, 0.7 * s, 0.6 * s, 0.6 * s})},
+        {"frustum", make_leaf(PrimKind::Cylinder, {-0.5 * s, 0.7 * s, 0.6 * s, 0.3 * s})},
+        {"cone", make_leaf(PrimKind::Cylinder, {0, s, 0.5 * s, 0})},
+        {"torus", make_leaf(PrimKind::Torus, {s, 0.25 * s})},
+        {"thin torus", make_leaf(PrimKind::Torus, {s, 1e-3 * s})},
+        {"plane", make_leaf(PrimKind::Plane, {0.6, 0, 0.8, 0.2 * s})},
+        {"paraboloid", make_leaf(PrimKind::Paraboloid, {s, 0.7 * s})},
+        {"hyperboloid", make_leaf(PrimKind::Hyperboloid, {s, 0.6 * s, 0.3 * s})},
+        {"double cone", make_leaf(PrimKind::Hyperboloid, {s, 0.6 * s, 0})},
+    };
 }
 
 }  // namespace kerf::test
