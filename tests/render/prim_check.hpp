@@ -209,12 +209,14 @@ inline double median(std::vector<double> v) {
     return v[v.size() / 2];
 }
 
-// Prints one accuracy-table row when KERF_ACCURACY_REPORT is set (docs/accuracy.md).
+// Prints one accuracy row when KERF_ACCURACY_REPORT is set, as CSV:
+// shape,precision,ray set,scale,crossings,max err/size,median err/size,max units
+// (bench/accuracy_table.py turns these into the table of docs/accuracy.md).
 inline void report(const char* prim, const char* precision, const char* rays, double scale, const CheckStats& st) {
     if (!std::getenv("KERF_ACCURACY_REPORT")) return;
     const double mx = st.rel_err.empty() ? 0 : *std::max_element(st.rel_err.begin(), st.rel_err.end());
-    std::printf("| %s | %s | %s | %.0e | %ld | %.2e | %.2e | %.1f |\n", prim, precision, rays, scale, st.crossings,
-                mx, median(st.rel_err), st.max_units);
+    std::printf("ACC,%s,%s,%s,%.0e,%ld,%.2e,%.2e,%.2f\n", prim, precision, rays, scale, st.crossings, mx,
+                median(st.rel_err), st.max_units);
 }
 
 // The standard random suite for one shape family: for every scale 1e-6..1e6
@@ -228,7 +230,7 @@ void random_suite(const char* name, MakeLeaf make, double K, double Kf, int near
         const double scale = std::pow(10.0, e);
         const Leaf leaf = make(scale);
         const Ball ball = bounding_ball(leaf, scale);
-        CheckStats nd, nf, fd, ff;
+        CheckStats nd, nf, ad, af, rd, rf;  // near; 1e6 away (absolute); 1e6 sizes away
         for (int i = 0; i < near; ++i) {
             dvec3 o, d;
             gen.ray(ball, ball.radius * gen.uniform(0, 3), o, d);
@@ -238,10 +240,10 @@ void random_suite(const char* name, MakeLeaf make, double K, double Kf, int near
         for (int i = 0; i < far; ++i) {
             dvec3 o, d;
             gen.ray(ball, i % 2 ? 1e6 : 1e6 * scale, o, d);
-            check_ray<double>(leaf, o, d, K, scale, fd);
-            check_ray<float>(leaf, o, d, Kf, scale, ff);
+            check_ray<double>(leaf, o, d, K, scale, i % 2 ? ad : rd);
+            check_ray<float>(leaf, o, d, Kf, scale, i % 2 ? af : rf);
         }
-        for (const CheckStats* st : {&nd, &nf, &fd, &ff}) {
+        for (const CheckStats* st : {&nd, &nf, &ad, &af, &rd, &rf}) {
             INFO(name << " scale " << scale << ": " << st->first_failure);
             CHECK(st->failures == 0);
         }
@@ -250,8 +252,10 @@ void random_suite(const char* name, MakeLeaf make, double K, double Kf, int near
         CHECK(nd.hits > 0);  // thin shapes (1e-3 tori) are rarely hit by chance: aimed tests cover them
         report(name, "double", "near", scale, nd);
         report(name, "float", "near", scale, nf);
-        report(name, "double", "far", scale, fd);
-        report(name, "float", "far", scale, ff);
+        report(name, "double", "far-abs", scale, ad);
+        report(name, "float", "far-abs", scale, af);
+        report(name, "double", "far-rel", scale, rd);
+        report(name, "float", "far-rel", scale, rf);
     }
 }
 

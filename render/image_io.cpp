@@ -1,0 +1,108 @@
+// Image output through OpenImageIO, written atomically (temporary file in the
+// destination folder, then rename), so readers never see half a file and a
+// failed write keeps the previous image.
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <string>
+#include <system_error>
+
+#include <unistd.h>
+
+#include <OpenImageIO/imageio.h>
+
+#include "render/render.hpp"
+
+namespace kerf::render {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+bool is_float_format(std::string ext) {
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return ext == ".exr" || ext == ".tif" || ext == ".tiff" || ext == ".hdr" || ext == ".pfm";
+}
+
+float srgb_encode(float linear) {
+    const float c = std::clamp(linear, 0.0f, 1.0f);
+    return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+}
+
+// 8-bit files cannot hold linear floats or +inf: encode what the pixels mean
+// (spec §7: depth normalised to the nearest and farthest hit, misses 0).
+std::vector<float> encode_8bit(const Image& im) {
+    std::vector<float> out(im.pixels.size());
+    switch (im.content) {
+        case ImageContent::Color:
+            for (std::size_t i = 0; i < out.size(); ++i) out[i] = srgb_encode(im.pixels[i]);
+            break;
+        case ImageContent::Normal:
+            for (std::size_t i = 0; i < out.size(); ++i) out[i] = std::clamp(0.5f * im.pixels[i] + 0.5f, 0.0f, 1.0f);
+            break;
+        case ImageContent::Depth: {
+            float near = std::numeric_limits<float>::infinity(), far = -near;
+            for (float v : im.pixels)
+                if (std::isfinite(v)) near = std::min(near, v), far = std::max(far, v);
+            const float range = far > near ? far - near : 1.0f;
+            // Nearest hit white, farthest still visibly grey, misses black.
+            for (std::size_t i = 0; i < out.size(); ++i)
+                out[i] = std::isfinite(im.pixels[i]) ? 1.0f - 0.8f * (im.pixels[i] - near) / range : 0.0f;
+            break;
+        }
+        case ImageContent::Hits: {
+            float most = 0;
+            for (float v : im.pixels) most = std::max(most, v);
+            for (std::size_t i = 0; i < out.size(); ++i) out[i] = most > 0 ? im.pixels[i] / most : 0.0f;
+            break;
+        }
+    }
+    return out;
+}
+
+std::string temp_name(const fs::path& target) {
+    static std::atomic<unsigned> counter{0};
+    // Keeps the extension: OpenImageIO picks the writer by the file name.
+    return (target.parent_path() / ("." + target.stem().string() + ".kerf-tmp-" + std::to_string(::getpid()) + "-" +
+                                    std::to_string(counter++) + target.extension().string()))
+        .string();
+}
+
+}  // namespace
+
+void write_image(const Image& image, const std::string& path) {
+    if (image.width < 1 || image.height < 1 || image.channels < 1 ||
+        image.pixels.size() != std::size_t(image.width) * image.height * image.channels)
+        throw ImageWriteError("cannot write " + path + ": the image is empty or inconsistent");
+    const fs::path target(path);
+    const bool as_float = is_float_format(target.extension().string());
+    auto out = OIIO::ImageOutput::create(path);
+    if (!out) throw ImageWriteError("cannot write " + path + ": unknown image format");
+    OIIO::ImageSpec spec(image.width, image.height, image.channels,
+                         as_float ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+    if (!as_float && image.content == ImageContent::Color) spec.attribute("oiio:ColorSpace", "sRGB");
+    const std::string tmp = temp_name(target);
+    std::vector<float> encoded;
+    if (!as_float) encoded = encode_8bit(image);
+    const float* data = as_float ? image.pixels.data() : encoded.data();
+    bool ok = out->open(tmp, spec) && out->write_image(OIIO::TypeDesc::FLOAT, data);
+    ok = out->close() && ok;
+    std::error_code ec;
+    if (!ok) {
+        std::string message = out->geterror();
+        fs::remove(tmp, ec);
+        if (message.empty()) message = "write failed";
+        std::replace(message.begin(), message.end(), '\n', ' ');
+        throw ImageWriteError("cannot write " + path + ": " + message);
+    }
+    fs::rename(tmp, target, ec);
+    if (ec) {
+        std::error_code ignored;
+        fs::remove(tmp, ignored);
+        throw ImageWriteError("cannot write " + path + ": " + ec.message());
+    }
+}
+
+}  // namespace kerf::render

@@ -1,0 +1,58 @@
+#include "render/shading.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace kerf::render {
+
+namespace {
+constexpr double kAmbient = 0.1;  // POV-Ray's default ambient: shadows are not pitch black
+}
+
+Shader::Shader(const csg::Scene& scene, const CsgTracer& tracer, int max_reflect_depth)
+    : scene_(scene), tracer_(tracer), max_depth_(max_reflect_depth), offset_(100 * tracer.epsilon()) {}
+
+glm::dvec3 Shader::radiance(const TraceRay& ray, int depth, ThreadState& ts) const {
+    TraceHit hit;
+    if (!tracer_.intersect(ray, hit, ts.scratch)) return scene_.background;
+    const glm::dvec3 p = ray.o + hit.t * ray.d;
+    glm::dvec3 n = tracer_.normal(hit, p);
+    if (glm::dot(n, ray.d) > 0) n = -n;  // grazing round-off: light the side we see
+    const csg::Leaf& leaf = scene_.leaves[hit.surface.mat_leaf];
+    const csg::Material& m = scene_.materials[leaf.material < scene_.materials.size() ? leaf.material : 0];
+    const glm::dvec3 albedo = hit.surface.cut ? m.interior : m.color;
+    const glm::dvec3 origin = p + offset_ * n;
+    const glm::dvec3 view = -glm::normalize(ray.d);
+
+    glm::dvec3 c = kAmbient * albedo;
+    for (const csg::Light& light : scene_.lights) {
+        glm::dvec3 l;
+        double dist;
+        if (light.directional) {
+            l = -glm::normalize(light.direction);
+            dist = std::numeric_limits<double>::infinity();
+        } else {
+            l = light.position - origin;
+            dist = glm::length(l);
+            if (dist == 0) continue;
+            l /= dist;
+        }
+        const double ndl = glm::dot(n, l);
+        if (ndl <= 0) continue;
+        ++ts.rays.shadow;
+        if (tracer_.occluded(TraceRay{origin, l, 0, dist}, ts.scratch)) continue;
+        const glm::dvec3 h = glm::normalize(l + view);
+        const double spec = std::pow(std::max(0.0, glm::dot(n, h)), m.shininess);
+        c += light.color * light.intensity * (m.diffuse * ndl * albedo + m.specular * spec);
+    }
+    if (m.reflect > 0 && depth < max_depth_) {
+        ++ts.rays.reflect;
+        const glm::dvec3 r = ray.d - 2 * glm::dot(ray.d, n) * n;
+        const glm::dvec3 rc = radiance(TraceRay{origin, r, 0, std::numeric_limits<double>::infinity()}, depth + 1, ts);
+        c = (1 - m.reflect) * c + m.reflect * rc;
+    }
+    return c;
+}
+
+}  // namespace kerf::render

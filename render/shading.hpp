@@ -1,0 +1,40 @@
+// Blinn–Phong shading with hard shadows and mirror reflection (spec §5–6),
+// on top of the CSG tracer. One Shader is shared by all render threads.
+#pragma once
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include "render/csg_scene.hpp"
+#include "render/csg_tracer.hpp"
+
+namespace kerf::render {
+
+struct RayCounts {
+    std::uint64_t primary = 0, shadow = 0, reflect = 0;
+};
+
+// Everything one render thread owns: no sharing, no locks per ray.
+struct ThreadState {
+    TraceScratch scratch;
+    RayCounts rays;
+};
+
+class Shader {
+public:
+    Shader(const csg::Scene& scene, const CsgTracer& tracer, int max_reflect_depth);
+    // Linear RGB seen along the ray; `depth` counts reflections so far.
+    glm::dvec3 radiance(const TraceRay& ray, int depth, ThreadState& ts) const;
+
+    // Shadow and reflection rays start this far off the surface, along the
+    // normal: proportional to the scene's coordinates, not a fixed epsilon.
+    double surface_offset() const { return offset_; }
+
+private:
+    const csg::Scene& scene_;
+    const CsgTracer& tracer_;
+    int max_depth_;
+    double offset_;
+};
+
+}  // namespace kerf::render

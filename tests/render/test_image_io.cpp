@@ -1,0 +1,138 @@
+// write_image: formats, encodings, atomic replacement, errors.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <limits>
+
+#include <unistd.h>
+
+#include <OpenImageIO/imageio.h>
+
+#include "render/render.hpp"
+
+using namespace kerf;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path fresh_dir(const std::string& name) {
+    const fs::path dir = fs::temp_directory_path() / ("kerf_image_io_" + std::to_string(::getpid()) + "_" + name);
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+render::Image gradient(int channels, render::ImageContent content) {
+    render::Image im;
+    im.width = 4;
+    im.height = 3;
+    im.channels = channels;
+    im.content = content;
+    for (int i = 0; i < 4 * 3 * channels; ++i) im.pixels.push_back(float(i) / (4 * 3 * channels));
+    return im;
+}
+
+std::vector<float> read_back(const fs::path& p, int& w, int& h, int& c, OIIO::TypeDesc& stored) {
+    auto in = OIIO::ImageInput::open(p.string());
+    REQUIRE(in);
+    const OIIO::ImageSpec& spec = in->spec();
+    w = spec.width, h = spec.height, c = spec.nchannels;
+    stored = spec.format;
+    std::vector<float> px(std::size_t(w) * h * c);
+    REQUIRE(in->read_image(0, 0, 0, c, OIIO::TypeDesc::FLOAT, px.data()));
+    in->close();
+    return px;
+}
+
+std::string slurp(const fs::path& p) {
+    std::ifstream f(p, std::ios::binary);
+    return {std::istreambuf_iterator<char>(f), {}};
+}
+
+}  // namespace
+
+TEST_CASE("PNG is 8-bit sRGB-encoded", "[image_io]") {
+    const fs::path dir = fresh_dir("png");
+    render::Image im = gradient(3, render::ImageContent::Color);
+    im.pixels[0] = 0.5f;  // linear 0.5 is sRGB 0.7354 -> 188/255
+    im.pixels[1] = 0.0f;
+    im.pixels[2] = 1.0f;
+    render::write_image(im, (dir / "a.png").string());
+    int w, h, c;
+    OIIO::TypeDesc t;
+    const auto px = read_back(dir / "a.png", w, h, c, t);
+    CHECK(w == 4);
+    CHECK(h == 3);
+    CHECK(c == 3);
+    CHECK(t == OIIO::TypeDesc::UINT8);
+    CHECK(std::lround(px[0] * 255) == 188);
+    CHECK(px[1] == 0.0f);
+    CHECK(px[2] == 1.0f);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("EXR and TIFF keep linear floats, +inf included", "[image_io]") {
+    const fs::path dir = fresh_dir("exr");
+    render::Image im = gradient(1, render::ImageContent::Depth);
+    im.pixels[5] = std::numeric_limits<float>::infinity();
+    for (const char* name : {"d.exr", "d.tif"}) {
+        render::write_image(im, (dir / name).string());
+        int w, h, c;
+        OIIO::TypeDesc t;
+        const auto px = read_back(dir / name, w, h, c, t);
+        REQUIRE(px.size() == im.pixels.size());
+        CHECK(t == OIIO::TypeDesc::FLOAT);
+        CHECK(std::isinf(px[5]));
+        for (std::size_t i = 0; i < px.size(); ++i)
+            if (i != 5) CHECK(px[i] == im.pixels[i]);
+    }
+    fs::remove_all(dir);
+}
+
+TEST_CASE("8-bit depth is normalised: nearest white, misses black", "[image_io]") {
+    const fs::path dir = fresh_dir("depth8");
+    render::Image im = gradient(1, render::ImageContent::Depth);
+    im.pixels[0] = std::numeric_limits<float>::infinity();
+    render::write_image(im, (dir / "d.png").string());
+    int w, h, c;
+    OIIO::TypeDesc t;
+    const auto px = read_back(dir / "d.png", w, h, c, t);
+    CHECK(px[0] == 0.0f);  // miss
+    CHECK(px[1] == 1.0f);  // nearest hit
+    CHECK(px[11] > 0.1f);  // farthest hit: still distinguishable from a miss
+    CHECK(px[11] < px[1]);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("a failed write leaves the old file intact and no temporary behind", "[image_io]") {
+    const fs::path dir = fresh_dir("atomic");
+    const fs::path target = dir / "out.png";
+    render::write_image(gradient(3, render::ImageContent::Color), target.string());
+    const std::string before = slurp(target);
+    REQUIRE(!before.empty());
+    // PNG cannot hold 7 channels: the writer fails after the file was chosen.
+    render::Image bad = gradient(7, render::ImageContent::Color);
+    CHECK_THROWS_AS(render::write_image(bad, target.string()), render::ImageWriteError);
+    CHECK(slurp(target) == before);
+    int files = 0;
+    for (const auto& e : fs::directory_iterator(dir)) files += e.is_regular_file() ? 1 : 0;
+    CHECK(files == 1);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("writing to a missing folder or an unknown format throws a one-line error", "[image_io]") {
+    const fs::path dir = fresh_dir("missing");
+    try {
+        render::write_image(gradient(3, render::ImageContent::Color), (dir / "no" / "such" / "x.png").string());
+        FAIL("no exception");
+    } catch (const render::ImageWriteError& e) {
+        CHECK(std::string(e.what()).find('\n') == std::string::npos);
+        CHECK(std::string(e.what()).find("x.png") != std::string::npos);
+    }
+    CHECK_THROWS_AS(render::write_image(gradient(3, render::ImageContent::Color), (dir / "x.nosuchformat").string()),
+                    render::ImageWriteError);
+    fs::remove_all(dir);
+}
