@@ -115,7 +115,15 @@ void Evaluator::do_echo(const std::vector<ast::Binding>& args, Scope& s) {
         if (!first) line += ", ";
         first = false;
         if (!a.name.empty()) line += a.name + " = ";
-        line += a.value ? to_repr(eval(*a.value, s)) : std::string("undef");
+        if (!a.value) {
+            line += "undef";
+            continue;
+        }
+        auto text = to_repr_bounded(eval(*a.value, s), opt_.limits.list_elements);
+        if (!text)
+            throw SourceError(a.loc, "echo: text longer than " + std::to_string(opt_.limits.list_elements) +
+                                         " characters");
+        line += *text;
     }
     if (opt_.echo) opt_.echo(line);
     else std::cerr << line << '\n';
@@ -232,8 +240,13 @@ void Evaluator::expand_element(const ast::Expr& e, Scope& s, ValueList& out) {
     }
 }
 
+thread_local const char* stack_floor = nullptr;
+
 Value Evaluator::eval(const ast::Expr& e, Scope& s) {
     using K = ast::ExprKind;
+    char probe;
+    if (stack_floor && &probe < stack_floor)
+        throw SourceError(e.loc, "evaluation nested too deeply (stack exhausted; lower the call depth limit)");
     switch (e.kind) {
         case K::Number: return Value(e.number);
         case K::String: return Value::string(e.text);
@@ -261,14 +274,16 @@ Value Evaluator::eval(const ast::Expr& e, Scope& s) {
         case K::Unary: {
             Value a = eval(*e.items[0], s);
             if (e.text == "!") return Value(!a.truthy());
-            return unary_op(e.text, a, e.loc);
+            OpBudget budget{opt_.limits.list_elements};
+            return unary_op(e.text, a, e.loc, &budget);
         }
         case K::Binary: {
             if (e.text == "&&") return Value(eval(*e.items[0], s).truthy() && eval(*e.items[1], s).truthy());
             if (e.text == "||") return Value(eval(*e.items[0], s).truthy() || eval(*e.items[1], s).truthy());
             Value a = eval(*e.items[0], s);
             Value b = eval(*e.items[1], s);
-            return binary_op(e.text, a, b, e.loc);
+            OpBudget budget{opt_.limits.list_elements};
+            return binary_op(e.text, a, b, e.loc, &budget);
         }
         case K::Ternary: return eval(*e.items[eval(*e.items[0], s).truthy() ? 1 : 2], s);
         case K::Index: {

@@ -434,6 +434,9 @@ void Evaluator::instantiate(const ast::Stmt& st, Scope& s, bool top_level) {
 }
 
 void Evaluator::eval_stmt(const ast::Stmt& st, Scope& s, bool top_level) {
+    char probe;
+    if (stack_floor && &probe < stack_floor)
+        throw SourceError(st.loc, "evaluation nested too deeply (stack exhausted; lower the call depth limit)");
     switch (st.kind) {
         case ast::StmtKind::Instantiate: {
             switch (st.modifier) {

@@ -30,6 +30,11 @@
 
 namespace kerf::eval {
 
+// The lowest address evaluation may use on this thread's stack (set by the
+// thread that runs it, with a safety margin): a raised call-depth limit or
+// a pathological expression ends in a located error, never in a crash.
+extern thread_local const char* stack_floor;
+
 // A statement list after `include` expansion, with its definitions sorted
 // out: computed once per list and cached.
 struct BlockInfo {

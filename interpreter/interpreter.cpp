@@ -5,7 +5,9 @@
 
 #include <pthread.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <exception>
 #include <functional>
 
@@ -18,6 +20,10 @@ namespace eval {
 Evaluator::Evaluator(const EvalOptions& options) : opt_(options) {
     static const SourceLoc builtin_loc{};
     root_.vars.push_back(VarSlot{"PI", Value(M_PI), &builtin_loc, true});
+    // Typical large scenes: a transform (and maybe an appearance) per leaf.
+    std::size_t prims = static_cast<std::size_t>(std::min<std::uint64_t>(options.limits.primitives, 1u << 24));
+    out_.max_nodes = 3 * prims + 1024;
+    out_.max_matrices = prims + 1024;
 }
 
 Evaluator::~Evaluator() = default;
@@ -60,6 +66,12 @@ scene::SceneGraph Evaluator::run(ast::Program program) {
     for (const Define& d : defines_) {
         bool found = false;
         for (const ast::Stmt* a : info.assigns) found = found || a->name == d.name;
+        // A `$` variable ($fn, $t...) may be set for the whole run even when
+        // the script never assigns it, as with OpenSCAD's -D '$fn=64'.
+        if (!found && !d.name.empty() && d.name[0] == '$') {
+            dyn_.push_back(DynVar{d.name, d.value});
+            continue;
+        }
         if (!found) throw SourceError(SourceLoc{}, "-D " + d.name + ": the script has no top-level binding '" + d.name + "'");
     }
     eval_block(prog.stmts, root_, true);
@@ -78,28 +90,41 @@ namespace {
 
 // Runs fn on a thread with a 512 MB stack (address space only; pages are
 // committed as they are touched) and rethrows what it threw.
+constexpr std::size_t big_stack = std::size_t(512) << 20;
+
 void run_with_big_stack(const std::function<void()>& fn) {
     struct Task {
         const std::function<void()>* fn;
         std::exception_ptr error;
-    } task{&fn, nullptr};
+        std::size_t stack;
+    } task{&fn, nullptr, big_stack};
     auto body = [](void* p) -> void* {
         auto* t = static_cast<Task*>(p);
+        char top;
+        // Keep 1/8 of the stack (at least 1 MB) for what runs below the
+        // last check: builtins, formatting, exception unwinding.
+        std::size_t margin = std::max<std::size_t>(t->stack / 8, std::size_t(1) << 20);
+        auto top_addr = reinterpret_cast<std::uintptr_t>(&top);
+        eval::stack_floor = reinterpret_cast<const char*>(top_addr - (t->stack - margin));
         try {
             (*t->fn)();
         } catch (...) {
             t->error = std::current_exception();
         }
+        eval::stack_floor = nullptr;
         return nullptr;
     };
     pthread_attr_t attr;
     pthread_t thread;
     bool started = pthread_attr_init(&attr) == 0 &&
-                   pthread_attr_setstacksize(&attr, std::size_t(512) << 20) == 0 &&
+                   pthread_attr_setstacksize(&attr, big_stack) == 0 &&
                    pthread_create(&thread, &attr, body, &task) == 0;
     pthread_attr_destroy(&attr);
     if (started) pthread_join(thread, nullptr);
-    else body(&task);  // no thread available: use the current stack
+    if (!started) {  // no thread available: use the current (default 8 MB) stack
+        task.stack = std::size_t(8) << 20;
+        body(&task);
+    }
     if (task.error) std::rethrow_exception(task.error);
 }
 

@@ -17,6 +17,29 @@ namespace {
                                std::to_string(n) + " and " + std::to_string(m) + ")");
 }
 
+void spend(OpBudget* b, std::size_t n, const SourceLoc& loc) {
+    if (!b) return;
+    b->used += n;
+    if (b->used > b->limit) throw SourceError(loc, "list size limit " + std::to_string(b->limit) + " exceeded");
+}
+
+// Values in a (possibly shared) list tree, counting stops past cap: lets an
+// operation refuse an exponentially large operand before building anything.
+std::uint64_t tree_size(const Value& v, std::uint64_t cap, std::uint64_t n = 0) {
+    if (!v.is_list()) return n;
+    for (const Value& e : v.as_list()) {
+        if (++n > cap) return n;
+        n = tree_size(e, cap, n);
+        if (n > cap) return n;
+    }
+    return n;
+}
+
+void precheck(OpBudget* b, const Value& v, const SourceLoc& loc) {
+    if (b && v.is_list() && tree_size(v, b->limit) > b->limit)
+        throw SourceError(loc, "list size limit " + std::to_string(b->limit) + " exceeded");
+}
+
 double num_op(char op, double x, double y) {
     switch (op) {
         case '+': return x + y;
@@ -29,27 +52,29 @@ double num_op(char op, double x, double y) {
 }
 
 // Element-wise + and - on numbers or (nested) lists of equal shape.
-Value elementwise(std::string_view op, const Value& a, const Value& b, const SourceLoc& loc) {
+Value elementwise(std::string_view op, const Value& a, const Value& b, const SourceLoc& loc, OpBudget* budget) {
     if (a.is_number() && b.is_number()) return Value(num_op(op[0], a.as_number(), b.as_number()));
     if (!a.is_list() || !b.is_list()) type_error(op, a, b, loc);
     const ValueList& x = a.as_list();
     const ValueList& y = b.as_list();
     if (x.size() != y.size()) length_error(op, x.size(), y.size(), loc);
+    spend(budget, x.size(), loc);
     ValueList out;
     out.reserve(x.size());
-    for (std::size_t i = 0; i < x.size(); ++i) out.push_back(elementwise(op, x[i], y[i], loc));
+    for (std::size_t i = 0; i < x.size(); ++i) out.push_back(elementwise(op, x[i], y[i], loc, budget));
     return Value::list(std::move(out));
 }
 
 // list op scalar (or scalar op list when scalar_left), recursively.
 Value scale_list(char op, const Value& v, double s, bool scalar_left, const Value& a, const Value& b,
-                 const SourceLoc& loc) {
+                 const SourceLoc& loc, OpBudget* budget) {
     if (v.is_number())
         return Value(scalar_left ? num_op(op, s, v.as_number()) : num_op(op, v.as_number(), s));
     if (!v.is_list()) type_error(std::string(1, op), a, b, loc);
+    spend(budget, v.as_list().size(), loc);
     ValueList out;
     out.reserve(v.as_list().size());
-    for (const Value& e : v.as_list()) out.push_back(scale_list(op, e, s, scalar_left, a, b, loc));
+    for (const Value& e : v.as_list()) out.push_back(scale_list(op, e, s, scalar_left, a, b, loc, budget));
     return Value::list(std::move(out));
 }
 
@@ -70,13 +95,14 @@ double dot(const ValueList& x, const ValueList& y, const Value& a, const Value& 
 }
 
 // vector·vector, matrix·vector, vector·matrix, matrix·matrix.
-Value multiply_lists(const Value& a, const Value& b, const SourceLoc& loc) {
+Value multiply_lists(const Value& a, const Value& b, const SourceLoc& loc, OpBudget* budget) {
     const ValueList& x = a.as_list();
     const ValueList& y = b.as_list();
     bool a_vec = a.is_vector(), b_vec = b.is_vector();
     bool a_mat = !x.empty() && all_lists(x), b_mat = !y.empty() && all_lists(y);
     if (a_vec && b_vec) return Value(dot(x, y, a, b, loc));
     if (a_mat && b_vec) {
+        spend(budget, x.size(), loc);
         ValueList out;
         out.reserve(x.size());
         for (const Value& row : x) out.push_back(Value(dot(row.as_list(), y, a, b, loc)));
@@ -91,6 +117,7 @@ Value multiply_lists(const Value& a, const Value& b, const SourceLoc& loc) {
         }
         auto times_vector = [&](const ValueList& v) {
             if (v.size() != y.size()) length_error("*", v.size(), y.size(), loc);
+            spend(budget, cols, loc);
             ValueList out;
             out.reserve(cols);
             for (std::size_t j = 0; j < cols; ++j) {
@@ -128,20 +155,26 @@ int compare(std::string_view op, const Value& a, const Value& b, const SourceLoc
 
 }  // namespace
 
-Value unary_op(std::string_view op, const Value& a, const SourceLoc& loc) {
+Value unary_op(std::string_view op, const Value& a, const SourceLoc& loc, OpBudget* budget) {
     if (a.is_number()) return Value(op == "-" ? -a.as_number() : a.as_number());
     if (a.is_list()) {
+        if (budget && budget->used == 0) precheck(budget, a, loc);
+        spend(budget, a.as_list().size(), loc);
         ValueList out;
         out.reserve(a.as_list().size());
-        for (const Value& e : a.as_list()) out.push_back(unary_op(op, e, loc));
+        for (const Value& e : a.as_list()) out.push_back(unary_op(op, e, loc, budget));
         return Value::list(std::move(out));
     }
     throw SourceError(loc, "cannot apply unary '" + std::string(op) + "' to " + a.type_name());
 }
 
-Value binary_op(std::string_view op, const Value& a, const Value& b, const SourceLoc& loc) {
-    if (op == "==") return Value(a == b);
-    if (op == "!=") return Value(a != b);
+Value binary_op(std::string_view op, const Value& a, const Value& b, const SourceLoc& loc, OpBudget* budget) {
+    if (op == "==" || op == "!=") {
+        // Shared nested lists could make the comparison exponentially long.
+        precheck(budget, a, loc);
+        precheck(budget, b, loc);
+        return Value((a == b) == (op == "=="));
+    }
     if (op == "<" || op == "<=" || op == ">" || op == ">=") {
         bool unordered;
         int c = compare(op, a, b, loc, unordered);
@@ -154,16 +187,18 @@ Value binary_op(std::string_view op, const Value& a, const Value& b, const Sourc
     if (op.size() != 1) throw SourceError(loc, "unknown operator '" + std::string(op) + "'");
     char o = op[0];
     if (a.is_number() && b.is_number()) return Value(num_op(o, a.as_number(), b.as_number()));
+    precheck(budget, a, loc);
+    precheck(budget, b, loc);
     switch (o) {
         case '+':
-        case '-': return elementwise(op, a, b, loc);
+        case '-': return elementwise(op, a, b, loc, budget);
         case '*':
-            if (a.is_list() && b.is_number()) return scale_list('*', a, b.as_number(), false, a, b, loc);
-            if (a.is_number() && b.is_list()) return scale_list('*', b, a.as_number(), true, a, b, loc);
-            if (a.is_list() && b.is_list()) return multiply_lists(a, b, loc);
+            if (a.is_list() && b.is_number()) return scale_list('*', a, b.as_number(), false, a, b, loc, budget);
+            if (a.is_number() && b.is_list()) return scale_list('*', b, a.as_number(), true, a, b, loc, budget);
+            if (a.is_list() && b.is_list()) return multiply_lists(a, b, loc, budget);
             break;
         case '/':
-            if (a.is_list() && b.is_number()) return scale_list('/', a, b.as_number(), false, a, b, loc);
+            if (a.is_list() && b.is_number()) return scale_list('/', a, b.as_number(), false, a, b, loc, budget);
             break;
         default: break;
     }

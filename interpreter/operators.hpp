@@ -3,6 +3,7 @@
 // `undef * 2`, vectors of different lengths) is a located error, where
 // OpenSCAD would warn and yield undef.
 #pragma once
+#include <cstdint>
 #include <string_view>
 
 #include "grammar/source.hpp"
@@ -10,12 +11,20 @@
 
 namespace kerf {
 
+// Bounds the number of values one operation may create: nested lists share
+// structure, so `[l, l] + [l, l]` can stand for exponentially many numbers;
+// past `limit` the operation is the error "list size limit N exceeded".
+struct OpBudget {
+    std::uint64_t limit;
+    std::uint64_t used = 0;
+};
+
 // op is one of "-", "+" (unary).
-Value unary_op(std::string_view op, const Value& a, const SourceLoc& loc);
+Value unary_op(std::string_view op, const Value& a, const SourceLoc& loc, OpBudget* budget = nullptr);
 
 // op is one of "+ - * / % ^ < <= > >= == !=" (&& and || short-circuit in the
-// evaluator). A list result is never longer than its list operands.
-Value binary_op(std::string_view op, const Value& a, const Value& b, const SourceLoc& loc);
+// evaluator).
+Value binary_op(std::string_view op, const Value& a, const Value& b, const SourceLoc& loc, OpBudget* budget = nullptr);
 
 // list[i], string[i] (one UTF-8 character), range[i]. The index must be an
 // integral number inside the bounds: out of range is an error (kerf is

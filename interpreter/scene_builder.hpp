@@ -19,7 +19,22 @@ public:
     std::size_t mark() const { return pending.size(); }
     std::size_t produced_since(std::size_t mark) const { return pending.size() - mark; }
 
+    // Large scenes: once an array passes 64K entries it is reserved at the
+    // size the primitive limit allows (address space only; pages are touched
+    // as nodes arrive), so a million-primitive loop never copies the arena
+    // while it grows.
+    std::size_t max_nodes = 0, max_matrices = 0;
+    template <class V>
+    static void grow(V& v, std::size_t max) {
+        if (v.size() == v.capacity() && v.size() >= 65536 && max > v.capacity()) v.reserve(max);
+    }
+    void add_matrix(const glm::dmat4& m) {
+        grow(graph.matrices, max_matrices);
+        graph.matrices.push_back(m);
+    }
+
     std::uint32_t add(scene::Node&& n) {
+        grow(graph.nodes, max_nodes);
         graph.nodes.push_back(std::move(n));
         return static_cast<std::uint32_t>(graph.nodes.size() - 1);
     }
@@ -33,6 +48,7 @@ public:
         n.first_child = static_cast<std::uint32_t>(graph.child_refs.size());
         n.child_count = static_cast<std::uint32_t>(pending.size() - mark);
         n.loc = loc;
+        grow(graph.child_refs, max_nodes);
         graph.child_refs.insert(graph.child_refs.end(), pending.begin() + static_cast<std::ptrdiff_t>(mark),
                                 pending.end());
         pending.resize(mark);

@@ -141,7 +141,7 @@ void Evaluator::transform(std::string_view name, const ast::Stmt& st, Scope& s) 
     }
     eval_block(st.body, s, false);
     if (out_.mark() == mark) return;
-    out_.graph.matrices.push_back(m);
+    out_.add_matrix(m);
     out_.wrap(mark, NK::Transform, static_cast<std::uint32_t>(out_.graph.matrices.size() - 1), st.loc);
 }
 

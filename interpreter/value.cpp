@@ -113,45 +113,62 @@ void append_quoted(std::string& out, const std::string& s) {
     out += '"';
 }
 
-void append(std::string& out, const Value& v, bool quote_strings) {
+constexpr std::size_t unbounded = static_cast<std::size_t>(-1);
+
+// False once out is longer than max (the text is then incomplete).
+bool append(std::string& out, const Value& v, bool quote_strings, std::size_t max) {
+    if (out.size() > max) return false;
     switch (v.type()) {
-        case ValueType::Undef: out += "undef"; return;
-        case ValueType::Bool: out += v.as_bool() ? "true" : "false"; return;
-        case ValueType::Number: out += format_number(v.as_number()); return;
+        case ValueType::Undef: out += "undef"; break;
+        case ValueType::Bool: out += v.as_bool() ? "true" : "false"; break;
+        case ValueType::Number: out += format_number(v.as_number()); break;
         case ValueType::String:
             if (quote_strings) append_quoted(out, v.as_string());
             else out += v.as_string();
-            return;
+            break;
         case ValueType::List: {
             out += '[';
             bool first = true;
             for (const Value& e : v.as_list()) {
                 if (!first) out += ", ";
                 first = false;
-                append(out, e, true);
+                if (!append(out, e, true, max)) return false;
             }
             out += ']';
-            return;
+            break;
         }
         case ValueType::Range: {
             const Range& r = v.as_range();
             out += '[' + format_number(r.start) + " : " + format_number(r.step) + " : " +
                    format_number(r.end) + ']';
-            return;
+            break;
         }
     }
+    return out.size() <= max;
 }
 }  // namespace
 
 std::string to_str(const Value& v) {
     std::string out;
-    append(out, v, false);
+    append(out, v, false, unbounded);
     return out;
 }
 
 std::string to_repr(const Value& v) {
     std::string out;
-    append(out, v, true);
+    append(out, v, true, unbounded);
+    return out;
+}
+
+std::optional<std::string> to_str_bounded(const Value& v, std::size_t max_chars) {
+    std::string out;
+    if (!append(out, v, false, max_chars)) return std::nullopt;
+    return out;
+}
+
+std::optional<std::string> to_repr_bounded(const Value& v, std::size_t max_chars) {
+    std::string out;
+    if (!append(out, v, true, max_chars)) return std::nullopt;
     return out;
 }
 

@@ -5,6 +5,7 @@
 #pragma once
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -102,5 +103,11 @@ std::string to_str(const Value& v);
 
 // The text `echo(v)` shows: like to_str, but a top-level string is quoted too.
 std::string to_repr(const Value& v);
+
+// The same, but giving up (nullopt) as soon as the text would pass
+// max_chars: lists share structure, so a small value can stand for an
+// exponentially long text.
+std::optional<std::string> to_str_bounded(const Value& v, std::size_t max_chars);
+std::optional<std::string> to_repr_bounded(const Value& v, std::size_t max_chars);
 
 }  // namespace kerf

@@ -126,6 +126,10 @@ TEST_CASE("-D overrides top-level bindings", "[include]") {
     CHECK(kerf::test::error_of("size = 1;", bad) == "<command line>: error: -D other: the script has no top-level binding 'other'");
     bad.defines = {{"size", "1 +"}};
     CHECK(kerf::test::error_of("size = 1;", bad).rfind("<command line>: error: -D size=1 +: ", 0) == 0);
+    // A $ variable may be set without a binding in the script.
+    kerf::EvalOptions dollar;
+    dollar.defines = {{"$fn", "64"}};
+    CHECK(kerf::test::echoes("module m() echo($fn);\nm();", dollar) == std::vector<std::string>{"ECHO: 64"});
     // Only top-level bindings are overridden.
     opt.defines = {{"v", "5"}};
     CHECK(kerf::test::echoes("v = 1;\nmodule m() { v = 2; echo(v); }\nm();\necho(v);", opt) ==

@@ -1,0 +1,51 @@
+// Statement forms beyond the basics: echo/assert with children, render and
+// group, $-loop variables, scene statements from an included file.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+#include "eval_helpers.hpp"
+
+using kerf::test::echoes;
+using kerf::test::error_of;
+using kerf::test::shape_of;
+
+TEST_CASE("echo and assert statements pass their children through", "[statements]") {
+    CHECK(shape_of("echo(\"x\") cube();") == "U(box)");
+    CHECK(shape_of("assert(true) { cube(); sphere(); }") == "U(U(box,sphere))");
+    CHECK(error_of("assert(false) nosuch();") == "test.sdl:1:1: error: assertion failed");
+    CHECK(error_of("assert(1, \"a\", 3);") == "test.sdl:1:16: error: too many arguments for 'assert' (takes 2)");
+}
+
+TEST_CASE("render and group are plain unions", "[statements]") {
+    CHECK(shape_of("render(convexity = 2) { cube(); sphere(); }") == "U(U(box,sphere))");
+    CHECK(shape_of("group() cube();") == "U(box)");
+}
+
+TEST_CASE("let statements bind for their block", "[statements]") {
+    CHECK(echoes("let (a = 1, b = a + 1) { echo(a, b); }") == std::vector<std::string>{"ECHO: 1, 2"});
+    CHECK(error_of("let (a = 1) cube(a);\necho(a);") == "test.sdl:2:6: error: undefined name 'a'");
+    CHECK(echoes("module show() echo($r);\nlet ($r = 4) show();") == std::vector<std::string>{"ECHO: 4"});
+}
+
+TEST_CASE("$ loop variables are visible to called modules", "[statements]") {
+    CHECK(echoes("module show() echo($i);\nfor ($i = [1:2]) show();") == std::vector<std::string>{"ECHO: 1", "ECHO: 2"});
+}
+
+TEST_CASE("a module's own use and nested definitions", "[statements]") {
+    CHECK(echoes("module outer() {\n  module inner(x) echo(x);\n  inner(5);\n}\nouter();") == std::vector<std::string>{"ECHO: 5"});
+    CHECK(error_of("module outer() { module inner() {} }\ninner();") == "test.sdl:2:1: error: unknown module 'inner'");
+}
+
+TEST_CASE("scene statements from an included file are at top level", "[statements]") {
+    namespace fs = std::filesystem;
+    fs::path dir = fs::temp_directory_path() / "kerf_interp_scene_inc";
+    fs::create_directories(dir);
+    std::ofstream(dir / "setup.sdl") << "camera(position = [5, 5, 5]);\nbackground(\"black\");\n";
+    std::ofstream(dir / "main.sdl") << "include <setup.sdl>\nsphere();\n";
+    auto r = kerf::evaluate_file((dir / "main.sdl").string());
+    CHECK(r.graph.camera.has_value());
+    CHECK(r.graph.background == glm::dvec3(0, 0, 0));
+    fs::remove_all(dir);
+}
