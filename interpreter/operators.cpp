@@ -169,8 +169,12 @@ Value unary_op(std::string_view op, const Value& a, const SourceLoc& loc, OpBudg
 }
 
 Value binary_op(std::string_view op, const Value& a, const Value& b, const SourceLoc& loc, OpBudget* budget) {
-    if (op == "==") return Value(a == b);
-    if (op == "!=") return Value(a != b);
+    if (op == "==" || op == "!=") {
+        // Shared nested lists could make the comparison exponentially long.
+        precheck(budget, a, loc);
+        precheck(budget, b, loc);
+        return Value((a == b) == (op == "=="));
+    }
     if (op == "<" || op == "<=" || op == ">" || op == ">=") {
         bool unordered;
         int c = compare(op, a, b, loc, unordered);

@@ -2,6 +2,9 @@
 // ρ < r(z) = r0 + m·(z - z0). The side is the quadric ρ² = r(z)²; its mirror
 // nappe (r(z) < 0) lies beyond the apex, outside the caps, so clipping the
 // quadric's interior by the slab gives exactly the solid.
+#include <algorithm>
+#include <cmath>
+
 #include "render/prim_kinds.hpp"
 
 namespace kerf::csg {
@@ -13,9 +16,14 @@ int intersect_cylinder(const double* p, const Vec3<T>& o, const Vec3<T>& d, Span
     // Expand around the apex of a cone: rays through or near it meet a
     // (near) double root, which the quadratic only resolves to sqrt(eps)
     // unless its coefficients are small there. Otherwise around the middle.
+    const bool apex = p[2] == 0 || p[3] == 0;
     const double zc = p[3] == 0 ? p[1] : p[2] == 0 ? p[0] : 0.5 * (p[0] + p[1]);
-    const T tc = closest_t(o, d, Vec3<T>(0, 0, T(zc)));
+    const Vec3<T> centre(0, 0, T(zc));
+    const T tc = closest_t(o, d, centre);
     const Vec3<T> c0 = o + tc * d;
+    // Bounding ball around the expansion point: the rims lie on it.
+    const double hz = apex ? p[1] - p[0] : 0.5 * (p[1] - p[0]), rmax = std::max(p[2], p[3]);
+    if (misses_ball(c0, centre, T(hz * hz + rmax * rmax))) return 0;
     const T e0 = r0 + m * (c0.z - z0);  // r(z) at the shifted origin
     const T e1 = m * d.z;               // its rate along the ray
     const T a = d.x * d.x + d.y * d.y - e1 * e1;

@@ -13,6 +13,8 @@ int intersect_hyperboloid(const double* p, const Vec3<T>& o, const Vec3<T>& d, S
     const T kappa = T((p[1] * p[1] - p[2] * p[2]) / (half_h * half_h));
     const T tc = closest_t(o, d, Vec3<T>(0));
     const Vec3<T> c0 = o + tc * d;
+    const double rmax = p[1] > p[2] ? p[1] : p[2];
+    if (misses_ball(c0, Vec3<T>(0), T(half_h * half_h + rmax * rmax))) return 0;  // rims (or waist) inside it
     const T a = d.x * d.x + d.y * d.y - kappa * d.z * d.z;
     const T hb = c0.x * d.x + c0.y * d.y - kappa * c0.z * d.z;
     const T c = c0.x * c0.x + c0.y * c0.y - w * w - kappa * c0.z * c0.z;

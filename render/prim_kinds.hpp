@@ -48,6 +48,15 @@ inline T closest_t(const Vec3<T>& o, const Vec3<T>& d, const Vec3<T>& centre) {
     return -glm::dot(o - centre, d) / glm::dot(d, d);
 }
 
+// Cheap rejection before the quadratic: the line's point closest to `centre`
+// lies outside the ball of radius² r2 around it (with a few ulps to spare, so
+// a line grazing a rim that touches the ball is still solved exactly).
+template <typename T>
+inline bool misses_ball(const Vec3<T>& closest, const Vec3<T>& centre, T r2) {
+    const Vec3<T> v = closest - centre;
+    return glm::dot(v, v) > r2 * (T(1) + T(16) * std::numeric_limits<T>::epsilon());
+}
+
 // Appends the span [tc + s0, tc + s1] (spans come in increasing order) if it
 // keeps a positive length once shifted back; a gap that rounds to nothing
 // merges it with the previous span (degenerate rule, docs/accuracy.md).

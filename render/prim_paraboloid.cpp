@@ -11,8 +11,10 @@ template <typename T>
 int intersect_paraboloid(const double* p, const Vec3<T>& o, const Vec3<T>& d, Span<T>* out) {
     const T h = T(p[0]);
     const T k = T(p[0] / (p[1] * p[1]));
-    const T tc = closest_t(o, d, Vec3<T>(0, 0, h / T(2)));
+    const Vec3<T> centre(0, 0, h / T(2));
+    const T tc = closest_t(o, d, centre);
     const Vec3<T> c0 = o + tc * d;
+    if (misses_ball(c0, centre, T(0.25 * p[0] * p[0] + p[1] * p[1]))) return 0;  // the rim lies on it
     const T a = k * (d.x * d.x + d.y * d.y);
     const T hb = k * (c0.x * d.x + c0.y * d.y) - d.z / T(2);
     const T c = k * (c0.x * c0.x + c0.y * c0.y) - c0.z;

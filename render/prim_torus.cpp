@@ -17,14 +17,20 @@ template <typename T>
 struct TorusLine {
     Vec3<T> q, u;  // line q + λ·u, torus R = 1, minor radius rr
     T rr2;
-    // F(λ) and F'(λ); F < 0 strictly inside.
+    // F(λ)·ρ and F'(λ)·ρ: same sign and same Newton step F/F' as F itself,
+    // without a division by ρ (ρ > 0 except on the axis, far from the tube).
+    // F < 0 strictly inside.
     T operator()(T lambda, T& deriv) const {
         const Vec3<T> x = q + lambda * u;
         const T rho = std::sqrt(x.x * x.x + x.y * x.y);
         const T e = rho - T(1);
-        const T drho = rho > T(0) ? (x.x * u.x + x.y * u.y) / rho : T(0);
-        deriv = T(2) * (e * drho + x.z * u.z);
-        return e * e + x.z * x.z - rr2;
+        const T f = e * e + x.z * x.z - rr2;
+        if (rho == T(0)) {  // on the axis: F > 0 there, keep it unscaled
+            deriv = T(2) * x.z * u.z;
+            return f;
+        }
+        deriv = T(2) * (e * (x.x * u.x + x.y * u.y) + x.z * u.z * rho);
+        return f * rho;
     }
 };
 

@@ -96,6 +96,7 @@ TEST_CASE("shared nested lists cannot blow up memory or output", "[limits]") {
     CHECK(error_of(std::string(f) + "x = f(40) + f(40);", opt) == "test.sdl:2:11: error: list size limit 100000 exceeded");
     CHECK(error_of(std::string(f) + "x = -f(40);", opt) == "test.sdl:2:5: error: list size limit 100000 exceeded");
     CHECK(error_of(std::string(f) + "x = f(40) * 2;", opt) == "test.sdl:2:11: error: list size limit 100000 exceeded");
+    CHECK(error_of(std::string(f) + "x = f(40) == f(40);", opt) == "test.sdl:2:11: error: list size limit 100000 exceeded");
     CHECK(error_of(std::string(f) + "echo(f(40));", opt) == "test.sdl:2:6: error: echo: text longer than 100000 characters");
     CHECK(kerf::test::value_of("f(2) + f(2)", f) == "[[2, 2], [2, 2]]");
     CHECK(seconds_since(t0) < 2);

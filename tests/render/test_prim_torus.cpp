@@ -85,3 +85,31 @@ TEST_CASE("torus: grazing the top of the tube down to 1e-9", "[prim][torus]") {
         }
     }
 }
+
+TEST_CASE("torus: grazing the outer and inner equators down to 1e-9", "[prim][torus]") {
+    for (double s : {1e-6, 1.0, 1e6}) {
+        for (double ratio : {0.25, 1e-3}) {
+            const double R = s, r = ratio * s;
+            const auto leaf = make_leaf(PrimKind::Torus, {R, r});
+            const double x0 = -3 * s;
+            for (double delta : {1e-3, 1e-6, 1e-9}) {
+                INFO("scale " << s << " ratio " << ratio << " delta " << delta);
+                // In the plane z = 0 along x at y = y0: inside where (R-r)² < x² + y0² < (R+r)².
+                // Outer silhouette: one short span, or nothing.
+                const double yo = (R + r) * (1 - delta), wo = std::sqrt((R + r - yo) * (R + r + yo));
+                CHECK(compare_spans<double>(leaf, {x0, yo, 0}, {1, 0, 0}, {{-x0 - wo, -x0 + wo}},
+                                            8 * 0x1p-52 * s * s / wo) == "");
+                CHECK(compare_spans<double>(leaf, {x0, (R + r) * (1 + delta), 0}, {1, 0, 0}, {}, 0) == "");
+                // Inner silhouette: just inside the hole two spans with a short gap;
+                // just past it one span (the line touches the hole's wall from inside).
+                const double yi = (R - r) * (1 - delta), gi = std::sqrt((R - r - yi) * (R - r + yi));
+                const double wi = std::sqrt((R + r - yi) * (R + r + yi));
+                CHECK(compare_spans<double>(leaf, {x0, yi, 0}, {1, 0, 0}, {{-x0 - wi, -x0 - gi}, {-x0 + gi, -x0 + wi}},
+                                            8 * 0x1p-52 * s * s / gi) == "");
+                const double yp = (R - r) * (1 + delta), wp = std::sqrt((R + r - yp) * (R + r + yp));
+                CHECK(compare_spans<double>(leaf, {x0, yp, 0}, {1, 0, 0}, {{-x0 - wp, -x0 + wp}},
+                                            64 * 0x1p-52 * s) == "");
+            }
+        }
+    }
+}
