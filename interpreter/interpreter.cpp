@@ -29,7 +29,10 @@ Evaluator::Evaluator(const EvalOptions& options) : opt_(options) {
 Evaluator::~Evaluator() = default;
 
 void Evaluator::parse_defines() {
-    for (const auto& [name, text] : opt_.defines) {
+    for (const auto& define : opt_.defines) {
+        // Not a structured binding: clang 14 (the fuzz build) cannot capture those.
+        const std::string& name = define.first;
+        const std::string& text = define.second;
         auto file = std::make_shared<SourceFile>();
         file->path = "-D " + name;
         file->text = name + " = " + text + ";";
