@@ -1,6 +1,7 @@
 // Renders the reference models of spec §9, built directly as csg::Scene (no
 // interpreter), and prints timing and per-ray operation counts. For profiling
 // the tracer alone:  render_models MODEL [size] [spp] [threads] [out.png]
+// KERF_FLOAT=1 measures the float path.
 // MODEL: shell65 | shell16 | checkered | holesN (e.g. holes40; radius 4/N, i.e. 0.1 at N = 40) | grooved
 #include <cstdio>
 #include <ctime>
@@ -100,6 +101,7 @@ int main(int argc, char** argv) {
     o.width = o.height = argc > 2 ? std::atoi(argv[2]) : 512;
     o.spp = argc > 3 ? std::atoi(argv[3]) : 1;
     o.threads = argc > 4 ? std::atoi(argv[4]) : 0;
+    o.double_precision = std::getenv("KERF_FLOAT") == nullptr;  // KERF_FLOAT=1: the float path
     csg::Scene s;
     if (model == "shell65") s = large_shell();
     else if (model == "shell16") s = small_shell();
