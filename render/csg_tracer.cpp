@@ -325,11 +325,13 @@ void CsgTracer::Impl::build_accel(Accel& accel, const std::vector<std::uint32_t>
 
 CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_unique<Impl>(scene, use_float)) {
     // Scale: the magnitude of coordinates that matter, for relative tolerances.
-    double scale = glm::length(scene.camera.position);
+    // (The camera is left out: a far camera must not coarsen the geometry's
+    // tolerance; its distance enters per ray, see make_state.)
+    double scale = 0;
     for (const csg::Leaf& leaf : scene.leaves)
         if (finite_box(leaf.bounds))
             scale = std::max({scale, glm::length(leaf.bounds.lo), glm::length(leaf.bounds.hi)});
-    scale_ = std::max(scale, 1e-300);
+    scale_ = scale > 0 ? scale : std::max(1.0, glm::length(scene.camera.position));
     eps_ = (use_float ? 2e-5 : 1e-9) * scale_;
 
     impl_->device = rtcNewDevice(nullptr);
@@ -664,7 +666,8 @@ EvalState make_state(const CsgTracer::Impl* impl, const TraceRay& ray, double ep
         st.dir[i] = float(ray.d[i]);
     }
     const double len = glm::length(ray.d);
-    st.eps = eps_world / len;
+    // Round-off of t also grows with the origin's distance (far cameras).
+    st.eps = (eps_world + (impl->use_float ? 1e-6 : 1e-13) * glm::length(ray.o)) / len;
     st.box_pad = eps_world;
     st.t_pad = 1e-5 * (scale + glm::length(ray.o)) / len;
     st.scratch = &scratch;
