@@ -254,6 +254,7 @@ void CsgTracer::Impl::build_meshes() {
     for (const csg::Leaf& leaf : scene.leaves) {
         if (leaf.kind != csg::PrimKind::Mesh || leaf.mesh >= scene.meshes.size() || mesh_scenes[leaf.mesh]) continue;
         const csg::Mesh& mesh = scene.meshes[leaf.mesh];
+        if (mesh.points.empty() || mesh.triangles.size() < 3) continue;  // an empty mesh is an empty solid
         RTCScene ms = rtcNewScene(device);
         rtcSetSceneFlags(ms, RTC_SCENE_FLAG_ROBUST);
         RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);

@@ -88,3 +88,21 @@ TEST_CASE("mesh leaves combine in CSG like analytic ones (cut faces, inside-out 
     CHECK(compare(meshed2, analytic2, hits) == 0);
     CHECK(hits > 200);
 }
+
+TEST_CASE("an empty mesh is an empty solid", "[render][mesh]") {
+    csg::Mesh empty;
+    csg::Leaf l = make_leaf(csg::PrimKind::Mesh, {});
+    l.mesh = 0;
+    l.bounds = {glm::dvec3(-1), glm::dvec3(1)};
+    csg::Scene s = make_scene(op(Op::Union, {leaf(l), leaf(sphere(0.5, translate(3, 0, 0)))}));
+    s.meshes = {empty};
+    render::RenderOptions o;
+    o.width = 16;
+    o.height = 12;
+    o.aov = render::Aov::Depth;
+    const render::Image im = render::render(s, o);
+    int hits = 0;
+    for (float v : im.pixels) hits += std::isfinite(v) ? 1 : 0;
+    CHECK(hits > 0);  // the sphere
+    CHECK(!std::isfinite(im.at(8, 6, 0)));  // nothing where the mesh's box is
+}
