@@ -183,8 +183,10 @@ TEST_CASE("depth AOV agrees with point-membership classification on random CSG s
 
 // The float path (RenderOptions::double_precision = false) is a speed option:
 // besides the wider band, isolated misses from float round-off (grazing
-// half-spaces far away, thin slivers of float-solved quartics) are tolerated
-// up to 1 in 1000 pixels. The double path above tolerates none.
+// half-spaces far away) and slivers thinner than the wider band (which the
+// tracer finds correctly but the band check cannot confirm, e.g. a grazing
+// paraboloid rim: seed 607) are tolerated up to 1 in 1000 pixels. The
+// double path above tolerates none.
 TEST_CASE("the float path agrees with the oracle within its wider band", "[render][oracle]") {
     const int wanted = wanted_scenes(30) / 3;
     Tally tally;
