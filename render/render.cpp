@@ -135,6 +135,8 @@ Image render(const csg::Scene& scene, const RenderOptions& options, RenderStats*
         tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1), [&](const tbb::blocked_range<int>& r) {
             // Denormals only slow the quartic solvers down; every thread uses
             // the same mode, so results stay thread-count independent.
+            // The caller's thread may run tiles too: restore its mode after.
+            const unsigned saved_ftz = _MM_GET_FLUSH_ZERO_MODE(), saved_daz = _MM_GET_DENORMALS_ZERO_MODE();
             _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
             _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
             ThreadState& ts = states.local();
@@ -148,6 +150,8 @@ Image render(const csg::Scene& scene, const RenderOptions& options, RenderStats*
                     progress(double(++tiles_done) / tiles);
                 }
             }
+            _MM_SET_FLUSH_ZERO_MODE(saved_ftz);
+            _MM_SET_DENORMALS_ZERO_MODE(saved_daz);
         });
     });
 
