@@ -479,6 +479,28 @@ std::uint32_t EvalState::eval_mesh(std::uint32_t leaf_id, double a, double b) {
     // duplicate crossing on a shared edge (same direction, same t) counts once.
     const double same = 1e-6 * (t1 - t0);
     std::uint32_t out = 0;
+    if (!impl->scene.meshes[leaf.mesh].solid) {
+        // A thin shell has no inside: each crossing becomes a sliver just
+        // thicker than the degenerate rule drops, whose entry faces the ray.
+        for (std::uint32_t i = 0; i < hits; ++i) {
+            Span x = h[i];
+            if (i > 0 && h[i - 1].e0.part == x.e0.part && x.t0 - h[i - 1].t0 <= same) continue;
+            x.e0.flip = x.e0.part == 1 ? 0 : 1;
+            x.e1 = x.e0;
+            x.e1.flip ^= 1;
+            x.t1 = x.t0 + 4 * eps;
+            if (x.t1 < a || x.t0 > b) continue;
+            if (out > 0 && x.t0 <= h[out - 1].t1) {
+                h[out - 1].t1 = x.t1;
+                h[out - 1].e1 = x.e1;
+            } else {
+                h[out++] = x;
+            }
+        }
+        st.resize(base + out);
+        scratch->counters.spans_found += out;
+        return out;
+    }
     int depth = 0;
     Span cur{};
     for (std::uint32_t i = 0; i < hits; ++i) {
