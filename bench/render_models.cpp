@@ -1,7 +1,8 @@
 // Renders the reference models of spec §9, built directly as csg::Scene (no
 // interpreter), and prints timing and per-ray operation counts. For profiling
 // the tracer alone:  render_models MODEL [size] [spp] [threads] [out.png]
-// MODEL: shell65 | shell16 | checkered | holesN (e.g. holes40) | grooved
+// KERF_FLOAT=1 measures the float path.
+// MODEL: shell65 | shell16 | checkered | holesN (e.g. holes40; radius 4/N, i.e. 0.1 at N = 40) | grooved
 #include <cstdio>
 #include <ctime>
 #include <cstdlib>
@@ -74,7 +75,7 @@ csg::Scene holes(int n) {
     std::vector<Tree> kids{leaf(box({0, 0, 0}, {10, 10, 1}))};
     for (int i = 0; i < n; ++i)
         for (int j = 0; j < n; ++j)
-            kids.push_back(leaf(make_leaf(csg::PrimKind::Cylinder, {0, 3, 0.1, 0.1}, translate((i + 0.5) * 10 / n, (j + 0.5) * 10 / n, -1))));
+            kids.push_back(leaf(make_leaf(csg::PrimKind::Cylinder, {0, 3, 4.0 / n, 4.0 / n}, translate((i + 0.5) * 10 / n, (j + 0.5) * 10 / n, -1))));
     csg::Scene sc = make_scene(op(Op::Difference, kids));
     frame(sc, {0.5, -1, 1.5});
     return sc;
@@ -100,6 +101,7 @@ int main(int argc, char** argv) {
     o.width = o.height = argc > 2 ? std::atoi(argv[2]) : 512;
     o.spp = argc > 3 ? std::atoi(argv[3]) : 1;
     o.threads = argc > 4 ? std::atoi(argv[4]) : 0;
+    o.double_precision = std::getenv("KERF_FLOAT") == nullptr;  // KERF_FLOAT=1: the float path
     csg::Scene s;
     if (model == "shell65") s = large_shell();
     else if (model == "shell16") s = small_shell();

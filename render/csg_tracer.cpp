@@ -74,7 +74,8 @@ struct EvalState {
     double t_pad;     // t slack of float Embree windows
     TraceScratch* scratch;
 
-    std::uint32_t eval(std::uint32_t node, double a, double b, Need need);
+    // `boxed`: the caller (an Embree BVH) has already found the node's box on the ray.
+    std::uint32_t eval(std::uint32_t node, double a, double b, Need need, bool boxed = false);
     bool box_hit(const csg::Aabb& box, double a, double b) const;
     std::uint32_t eval_leaf(const Node& n, double a, double b);
     std::uint32_t eval_mesh(std::uint32_t leaf_id, double a, double b);
@@ -82,6 +83,7 @@ struct EvalState {
     std::uint32_t eval_intersection(const Node& n, double a, double b);
     std::uint32_t eval_difference(std::uint32_t node, const Node& n, double a, double b, Need need);
     void collect(const Accel& accel, double a, double b);
+    std::uint32_t first_entry_by_points(const Accel& subtrahends, std::uint32_t base, std::uint32_t i, double b);
     void collect_children(std::uint32_t node, const Node& n, std::uint32_t skip, double a, double b);
 };
 
@@ -137,15 +139,15 @@ void collect_callback(const RTCIntersectFunctionNArguments* args) {
     if (!args->valid[0]) return;
     auto* ctx = reinterpret_cast<CollectContext*>(args->context);
     // Never accepts: every crossed child is gathered, tfar stays.
-    ctx->state->eval(ctx->accel->items[args->primID], ctx->a, ctx->b, Need::All);
+    ctx->state->eval(ctx->accel->items[args->primID], ctx->a, ctx->b, Need::All, true);
 }
 
 // The unit's first entry in (tnear, best): closest-hit semantics, so the BVH
 // culls every unit behind it.
-bool try_unit_entry(TopContext& ctx, std::uint32_t unit_index, std::uint32_t node) {
+bool try_unit_entry(TopContext& ctx, std::uint32_t unit_index, std::uint32_t node, bool boxed) {
     TraceScratch& s = *ctx.state->scratch;
     const std::uint32_t base = s.stack.size();
-    const std::uint32_t n = ctx.state->eval(node, ctx.tnear, ctx.best, Need::First);
+    const std::uint32_t n = ctx.state->eval(node, ctx.tnear, ctx.best, Need::First, boxed);
     bool better = false;
     for (std::uint32_t i = 0; i < n; ++i) {
         const Span& sp = *s.stack.at(base + i);
@@ -162,10 +164,10 @@ bool try_unit_entry(TopContext& ctx, std::uint32_t unit_index, std::uint32_t nod
     return better;
 }
 
-bool unit_blocks(TopContext& ctx, std::uint32_t node) {
+bool unit_blocks(TopContext& ctx, std::uint32_t node, bool boxed) {
     TraceScratch& s = *ctx.state->scratch;
     const std::uint32_t base = s.stack.size();
-    const std::uint32_t n = ctx.state->eval(node, ctx.tnear, ctx.best, Need::Any);
+    const std::uint32_t n = ctx.state->eval(node, ctx.tnear, ctx.best, Need::Any, boxed);
     bool blocks = false;
     for (std::uint32_t i = 0; i < n && !blocks; ++i) {
         const Span& sp = *s.stack.at(base + i);
@@ -178,7 +180,7 @@ bool unit_blocks(TopContext& ctx, std::uint32_t node) {
 void top_intersect_callback(const RTCIntersectFunctionNArguments* args) {
     if (!args->valid[0]) return;
     auto* ctx = reinterpret_cast<TopContext*>(args->context);
-    if (try_unit_entry(*ctx, args->primID, ctx->accel->items[args->primID])) {
+    if (try_unit_entry(*ctx, args->primID, ctx->accel->items[args->primID], true)) {
         RTCRayHit* rh = reinterpret_cast<RTCRayHit*>(args->rayhit);
         rh->ray.tfar = std::min(rh->ray.tfar, round_up(ctx->best) + float(ctx->state->t_pad));
         rh->hit.geomID = args->geomID;
@@ -189,7 +191,7 @@ void top_intersect_callback(const RTCIntersectFunctionNArguments* args) {
 void top_occluded_callback(const RTCOccludedFunctionNArguments* args) {
     if (!args->valid[0]) return;
     auto* ctx = reinterpret_cast<TopContext*>(args->context);
-    if (unit_blocks(*ctx, ctx->accel->items[args->primID])) {
+    if (unit_blocks(*ctx, ctx->accel->items[args->primID], true)) {
         ctx->found = true;
         reinterpret_cast<RTCRay*>(args->ray)->tfar = -std::numeric_limits<float>::infinity();
     }
@@ -252,6 +254,7 @@ void CsgTracer::Impl::build_meshes() {
     for (const csg::Leaf& leaf : scene.leaves) {
         if (leaf.kind != csg::PrimKind::Mesh || leaf.mesh >= scene.meshes.size() || mesh_scenes[leaf.mesh]) continue;
         const csg::Mesh& mesh = scene.meshes[leaf.mesh];
+        if (mesh.points.empty() || mesh.triangles.size() < 3) continue;  // an empty mesh is an empty solid
         RTCScene ms = rtcNewScene(device);
         rtcSetSceneFlags(ms, RTC_SCENE_FLAG_ROBUST);
         RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
@@ -323,11 +326,13 @@ void CsgTracer::Impl::build_accel(Accel& accel, const std::vector<std::uint32_t>
 
 CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_unique<Impl>(scene, use_float)) {
     // Scale: the magnitude of coordinates that matter, for relative tolerances.
-    double scale = glm::length(scene.camera.position);
+    // (The camera is left out: a far camera must not coarsen the geometry's
+    // tolerance; its distance enters per ray, see make_state.)
+    double scale = 0;
     for (const csg::Leaf& leaf : scene.leaves)
         if (finite_box(leaf.bounds))
             scale = std::max({scale, glm::length(leaf.bounds.lo), glm::length(leaf.bounds.hi)});
-    scale_ = std::max(scale, 1e-300);
+    scale_ = scale > 0 ? scale : std::max(1.0, glm::length(scene.camera.position));
     eps_ = (use_float ? 2e-5 : 1e-9) * scale_;
 
     impl_->device = rtcNewDevice(nullptr);
@@ -381,9 +386,9 @@ bool EvalState::box_hit(const csg::Aabb& box, double a, double b) const {
     return true;
 }
 
-std::uint32_t EvalState::eval(std::uint32_t node, double a, double b, Need need) {
+std::uint32_t EvalState::eval(std::uint32_t node, double a, double b, Need need, bool boxed) {
     const Node& n = impl->scene.nodes[node];
-    if (!box_hit(n.bounds, a, b)) return 0;
+    if (!boxed && !box_hit(n.bounds, a, b)) return 0;
     switch (n.op) {
         case Op::Leaf: return eval_leaf(n, a, b);
         case Op::Union: return eval_union(node, n, a, b);
@@ -474,6 +479,28 @@ std::uint32_t EvalState::eval_mesh(std::uint32_t leaf_id, double a, double b) {
     // duplicate crossing on a shared edge (same direction, same t) counts once.
     const double same = 1e-6 * (t1 - t0);
     std::uint32_t out = 0;
+    if (!impl->scene.meshes[leaf.mesh].solid) {
+        // A thin shell has no inside: each crossing becomes a sliver just
+        // thicker than the degenerate rule drops, whose entry faces the ray.
+        for (std::uint32_t i = 0; i < hits; ++i) {
+            Span x = h[i];
+            if (i > 0 && h[i - 1].e0.part == x.e0.part && x.t0 - h[i - 1].t0 <= same) continue;
+            x.e0.flip = x.e0.part == 1 ? 0 : 1;
+            x.e1 = x.e0;
+            x.e1.flip ^= 1;
+            x.t1 = x.t0 + 4 * eps;
+            if (x.t1 < a || x.t0 > b) continue;
+            if (out > 0 && x.t0 <= h[out - 1].t1) {
+                h[out - 1].t1 = x.t1;
+                h[out - 1].e1 = x.e1;
+            } else {
+                h[out++] = x;
+            }
+        }
+        st.resize(base + out);
+        scratch->counters.spans_found += out;
+        return out;
+    }
     int depth = 0;
     Span cur{};
     for (std::uint32_t i = 0; i < hits; ++i) {
@@ -571,7 +598,18 @@ std::uint32_t EvalState::eval_difference(std::uint32_t node, const Node& n, doub
     }
     // First/Any: one minuend span at a time, stopping at the first piece that
     // answers the question; only that piece is returned.
+    const std::int32_t ai = impl->accel_of_node[node];
     for (std::uint32_t i = 0; i < count; ++i) {
+        if (need == Need::First && ai >= 0 && st.at(base + i)->t0 > a) {
+            // Many subtrahends: walk from the minuend's entry with point
+            // queries ("which subtrahends cover c?") instead of gathering all
+            // of them along the chord, so the cost does not grow with the
+            // number of holes the chord passes.
+            const std::uint32_t found = first_entry_by_points(*impl->node_accels[std::size_t(ai)], base, i, b);
+            if (found == 1) return 1;
+            if (found == 2) break;  // beyond the window: nothing to find
+            continue;
+        }
         const double wa = std::max(a, st.at(base + i)->t0), wb = std::min(b, st.at(base + i)->t1);
         st.resize(sbase);
         collect_children(node, n, 1, wa, wb);
@@ -595,6 +633,48 @@ std::uint32_t EvalState::eval_difference(std::uint32_t node, const Node& n, doub
     return 0;
 }
 
+// Minuend span i lies at base + i (spans after base + count are scratch).
+// Returns 1 with the entry written at base, 0 if this minuend span has no
+// entry, 2 if the search passed the window's end.
+//
+// Spans gathered on a window are only true inside it (a composite
+// subtrahend's far end may still be uncut), so only crossings strictly
+// inside the current window [c, end] are trusted. The window starts as the
+// point c (most rays: "is the minuend's entry covered?"), then grows to the
+// covering spans' claimed exit, then doubles, until it decides.
+std::uint32_t EvalState::first_entry_by_points(const Accel& subtrahends, std::uint32_t base, std::uint32_t i,
+                                               double b) {
+    SpanStack& st = scratch->stack;
+    const std::uint32_t sbase = st.size();
+    const Span rest = *st.at(base + i);
+    const double c = rest.t0;
+    const double stop = std::min(b, rest.t1) + 2 * eps;  // nothing past this matters
+    double end = c + 2 * eps;
+    for (;;) {
+        st.resize(sbase);
+        collect(subtrahends, c - 2 * eps, end);
+        const int ns = span_normalize_union(st.at(sbase), int(st.size() - sbase), eps);
+        double claimed = end;  // where the gathered spans say coverage from c ends
+        for (int k = 0; k < ns; ++k) claimed = std::max(claimed, st.at(sbase + std::uint32_t(k))->t1);
+        const std::uint32_t rbase = sbase + std::uint32_t(ns);
+        st.resize(rbase + 1 + std::uint32_t(ns));
+        const int r = span_difference(&rest, 1, st.at(sbase), ns, st.at(rbase), eps);
+        if (r > 0 && (st.at(rbase)->t0 == c || st.at(rbase)->t0 < end - eps)) {
+            const Span piece = *st.at(rbase);
+            st.resize(sbase);
+            if (piece.t0 > b) return 2;
+            *st.at(base) = piece;
+            st.resize(base + 1);
+            return 1;
+        }
+        if (end >= stop) {  // the window covered everything that matters: no entry
+            st.resize(sbase);
+            return rest.t1 + 2 * eps > stop ? 2 : 0;
+        }
+        end = std::min(stop, std::max(claimed + 2 * eps, c + 2 * (end - c)));
+    }
+}
+
 namespace {
 
 EvalState make_state(const CsgTracer::Impl* impl, const TraceRay& ray, double eps_world, double scale,
@@ -609,7 +689,8 @@ EvalState make_state(const CsgTracer::Impl* impl, const TraceRay& ray, double ep
         st.dir[i] = float(ray.d[i]);
     }
     const double len = glm::length(ray.d);
-    st.eps = eps_world / len;
+    // Round-off of t also grows with the origin's distance (far cameras).
+    st.eps = (eps_world + (impl->use_float ? 1e-6 : 1e-13) * glm::length(ray.o)) / len;
     st.box_pad = eps_world;
     st.t_pad = 1e-5 * (scale + glm::length(ray.o)) / len;
     st.scratch = &scratch;
@@ -630,7 +711,7 @@ bool CsgTracer::intersect(const TraceRay& ray, TraceHit& hit, TraceScratch& scra
     ctx.found = false;
     const std::uint32_t always_offset = std::uint32_t(impl_->top.items.size());
     for (std::size_t i = 0; i < impl_->top.always.size(); ++i)
-        try_unit_entry(ctx, always_offset + std::uint32_t(i), impl_->top.always[i]);
+        try_unit_entry(ctx, always_offset + std::uint32_t(i), impl_->top.always[i], false);
     if (impl_->top.scene) {
         RTCRayHit rh = make_rayhit(st, ray.tnear, ctx.best);
         rtcIntersect1(impl_->top.scene, &ctx.rtc, &rh);
@@ -652,7 +733,7 @@ bool CsgTracer::occluded(const TraceRay& ray, TraceScratch& scratch) const {
     ctx.best_unit = 0;
     ctx.found = false;
     for (std::uint32_t node : impl_->top.always)
-        if (unit_blocks(ctx, node)) return true;
+        if (unit_blocks(ctx, node, false)) return true;
     if (!impl_->top.scene) return false;
     RTCRay r = make_rayhit(st, ray.tnear, ray.tfar).ray;
     rtcOccluded1(impl_->top.scene, &ctx.rtc, &r);

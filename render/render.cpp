@@ -11,6 +11,7 @@
 #include <limits>
 #include <mutex>
 #include <numeric>
+#include <optional>
 #include <algorithm>
 
 #include <tbb/blocked_range.h>
@@ -66,7 +67,12 @@ Image render(const csg::Scene& scene, const RenderOptions& options, RenderStats*
              std::function<void(double)> progress) {
     check_options(options);
     const auto start = std::chrono::steady_clock::now();
-    const CsgTracer tracer(scene, !options.double_precision);
+    // Embree builds its BVHs with TBB: inside the arena, so `threads` bounds
+    // the build as well as the rendering.
+    tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
+    std::optional<CsgTracer> built;
+    arena.execute([&] { built.emplace(scene, !options.double_precision); });
+    const CsgTracer& tracer = *built;
     const int spp = options.preview ? 1 : options.spp;
     const Shader shader(scene, tracer, options.preview ? 0 : options.max_reflect_depth);
     const CameraModel camera(scene.camera, options.width, options.height);
@@ -125,11 +131,12 @@ Image render(const csg::Scene& scene, const RenderOptions& options, RenderStats*
         out[0] = float(sum.x), out[1] = float(sum.y), out[2] = float(sum.z);
     };
 
-    tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
     arena.execute([&] {
         tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1), [&](const tbb::blocked_range<int>& r) {
             // Denormals only slow the quartic solvers down; every thread uses
             // the same mode, so results stay thread-count independent.
+            // The caller's thread may run tiles too: restore its mode after.
+            const unsigned saved_ftz = _MM_GET_FLUSH_ZERO_MODE(), saved_daz = _MM_GET_DENORMALS_ZERO_MODE();
             _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
             _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
             ThreadState& ts = states.local();
@@ -143,6 +150,8 @@ Image render(const csg::Scene& scene, const RenderOptions& options, RenderStats*
                     progress(double(++tiles_done) / tiles);
                 }
             }
+            _MM_SET_FLUSH_ZERO_MODE(saved_ftz);
+            _MM_SET_DENORMALS_ZERO_MODE(saved_daz);
         });
     });
 

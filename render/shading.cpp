@@ -19,8 +19,9 @@ glm::dvec3 Shader::radiance(const TraceRay& ray, int depth, ThreadState& ts) con
     const glm::dvec3 p = ray.o + hit.t * ray.d;
     glm::dvec3 n = tracer_.normal(hit, p);
     if (glm::dot(n, ray.d) > 0) n = -n;  // grazing round-off: light the side we see
+    static const csg::Material fallback;  // a scene without materials: light grey
     const csg::Leaf& leaf = scene_.leaves[hit.surface.mat_leaf];
-    const csg::Material& m = scene_.materials[leaf.material < scene_.materials.size() ? leaf.material : 0];
+    const csg::Material& m = leaf.material < scene_.materials.size() ? scene_.materials[leaf.material] : fallback;
     const glm::dvec3 albedo = hit.surface.cut ? m.interior : m.color;
     const glm::dvec3 origin = p + offset_ * n;
     const glm::dvec3 view = -glm::normalize(ray.d);

@@ -88,3 +88,45 @@ TEST_CASE("mesh leaves combine in CSG like analytic ones (cut faces, inside-out 
     CHECK(compare(meshed2, analytic2, hits) == 0);
     CHECK(hits > 200);
 }
+
+TEST_CASE("an empty mesh is an empty solid", "[render][mesh]") {
+    csg::Mesh empty;
+    csg::Leaf l = make_leaf(csg::PrimKind::Mesh, {});
+    l.mesh = 0;
+    l.bounds = {glm::dvec3(-1), glm::dvec3(1)};
+    csg::Scene s = make_scene(op(Op::Union, {leaf(l), leaf(sphere(0.5, translate(3, 0, 0)))}));
+    s.meshes = {empty};
+    render::RenderOptions o;
+    o.width = 16;
+    o.height = 12;
+    o.aov = render::Aov::Depth;
+    const render::Image im = render::render(s, o);
+    int hits = 0;
+    for (float v : im.pixels) hits += std::isfinite(v) ? 1 : 0;
+    CHECK(hits > 0);  // the sphere
+    CHECK(!std::isfinite(im.at(8, 6, 0)));  // nothing where the mesh's box is
+}
+
+TEST_CASE("a non-solid mesh is a thin shell seen from both sides", "[render][mesh]") {
+    // One triangle in the plane y = 0, normal +y (facing away from the camera).
+    csg::Mesh tri;
+    tri.points = {{-2, 0, -2}, {0, 0, 2}, {2, 0, -2}};
+    tri.triangles = {0, 1, 2};
+    tri.solid = false;
+    REQUIRE(glm::cross(tri.points[1] - tri.points[0], tri.points[2] - tri.points[0]).y > 0);
+    for (double side : {-1.0, 1.0}) {
+        csg::Scene s = make_scene(leaf(mesh_leaf(0, tri, glm::dmat4(1.0))));
+        s.meshes = {tri};
+        s.camera.position = {0, 5 * side, 0};
+        render::RenderOptions o;
+        o.width = 9;
+        o.height = 9;
+        o.aov = render::Aov::Depth;
+        const render::Image depth = render::render(s, o);
+        CHECK(depth.at(4, 4, 0) == Approx(5.0).epsilon(1e-6));
+        o.aov = render::Aov::Normal;
+        const render::Image normal = render::render(s, o);
+        CHECK(normal.at(4, 4, 1) == Approx(side));  // faces the camera
+        CHECK(std::isinf(depth.at(0, 0, 0)));       // outside the triangle
+    }
+}

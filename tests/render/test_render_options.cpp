@@ -129,3 +129,14 @@ TEST_CASE("an empty scene renders the background", "[render]") {
             CHECK(im.at(x, y, 2) == 0.75f);
         }
 }
+
+TEST_CASE("rendering leaves the caller's floating-point mode alone", "[render]") {
+    volatile double tiny = 1e-310;  // a denormal: flushed to 0 under FTZ/DAZ
+    render::RenderOptions o;
+    o.width = 8;
+    o.height = 8;
+    o.threads = 1;
+    render::render(busy_scene(), o);
+    volatile double half = tiny * 0.5;
+    CHECK(half != 0.0);
+}

@@ -65,8 +65,10 @@ double oracle_entry(const csg::Scene& s, const glm::dvec3& o, const glm::dvec3& 
     return kInf;
 }
 
-bool agrees(const csg::Scene& s, const glm::dvec3& o, const glm::dvec3& d, double t_hit) {
-    const double delta = 1e-6 * (1 + std::abs(t_hit));  // beyond the float rounding of the stored depth
+// `tolerance`: relative size of the band around t checked for the crossing
+// (beyond the float rounding of the stored depth; wider for the float path).
+bool agrees(const csg::Scene& s, const glm::dvec3& o, const glm::dvec3& d, double t_hit, double tolerance) {
+    const double delta = tolerance * (1 + std::abs(t_hit));
     double upper = kInf;
     if (std::isfinite(t_hit)) {
         if (!csg_contains(s, o + (t_hit + delta) * d)) return false;
@@ -142,7 +144,7 @@ bool check_scene(csg::Scene& s, RandomCsg& gen, std::uint64_t seed, bool double_
             ++tally.pixels;
             const double t = im.at(x, y, 0);
             if (std::isfinite(t)) ++tally.hit_pixels;
-            if (agrees(s, o, d, t)) continue;
+            if (agrees(s, o, d, t, double_precision ? 1e-6 : 1e-4)) continue;
             if (on_silhouette(s, cam, x, y)) {
                 ++tally.excused;
                 continue;
@@ -176,6 +178,29 @@ TEST_CASE("depth AOV agrees with point-membership classification on random CSG s
     INFO("scenes " << tally.scenes << ", pixels " << tally.pixels << ", hit " << tally.hit_pixels << ", excused " << tally.excused);
     CHECK(tally.scenes == wanted);
     CHECK(tally.failures == 0);
+    CHECK(tally.excused * 50 <= tally.pixels);
+}
+
+// The float path (RenderOptions::double_precision = false) is a speed option:
+// besides the wider band, isolated misses from float round-off (grazing
+// half-spaces far away) and slivers thinner than the wider band (which the
+// tracer finds correctly but the band check cannot confirm, e.g. a grazing
+// paraboloid rim: seed 607) are tolerated up to 1 in 1000 pixels. The
+// double path above tolerates none.
+TEST_CASE("the float path agrees with the oracle within its wider band", "[render][oracle]") {
+    const int wanted = wanted_scenes(30) / 3;
+    Tally tally;
+    for (std::uint64_t seed = 500; tally.scenes < wanted && seed < 500 + std::uint64_t(wanted) * 10; ++seed) {
+        RandomCsg gen(seed);
+        const Tree tree = gen.tree(0, 1 + int(seed % 6));
+        if (count_leaves(tree) > 40) continue;
+        csg::Scene s = make_scene(tree, {csg::Material{}, csg::Material{}, csg::Material{}});
+        check_scene(s, gen, seed, false, tally);
+    }
+    INFO(tally.report.str());
+    INFO("scenes " << tally.scenes << ", pixels " << tally.pixels << ", hit " << tally.hit_pixels << ", excused " << tally.excused);
+    CHECK(tally.scenes == wanted);
+    CHECK(tally.failures * 1000 <= tally.pixels);
     CHECK(tally.excused * 50 <= tally.pixels);
 }
 
