@@ -1,5 +1,7 @@
 #include "interpreter/module_args.hpp"
 
+#include "interpreter/color_space.hpp"
+
 #include <cctype>
 #include <cmath>
 
@@ -81,14 +83,18 @@ glm::dvec3 arg_vec3(const Args& a, std::size_t i, const char* name, glm::dvec3 f
     return out;
 }
 
+// Users write sRGB display colours (docs/language.md §10); materials, lights
+// and the background hold linear RGB, so every colour is converted here, once.
+static glm::dvec4 to_linear(glm::dvec4 c) { return glm::dvec4(srgb_to_linear(glm::dvec3(c)), c.a); }
+
 glm::dvec4 arg_color(const Args& a, std::size_t i, const char* name) {
     const Value& v = a[i];
     glm::dvec4 c(0, 0, 0, 1);
     if (v.is_string()) {
-        if (auto hex = parse_hex(v.as_string())) return *hex;
+        if (auto hex = parse_hex(v.as_string())) return to_linear(*hex);
         auto named = css_color(v.as_string());
         if (!named) arg_error(a, "unknown colour name " + to_repr(v));
-        return glm::dvec4(*named, 1.0);
+        return to_linear(glm::dvec4(*named, 1.0));
     }
     if (!(v.is_vector(3) || v.is_vector(4)))
         arg_error(a, std::string(name) + " must be [r, g, b], [r, g, b, a] or a colour name, got " + describe(v));
@@ -98,7 +104,7 @@ glm::dvec4 arg_color(const Args& a, std::size_t i, const char* name) {
         if (!(x >= 0 && x <= 1)) arg_error(a, std::string(name) + " components must be in [0, 1], got " + describe(v));
         c[static_cast<int>(k)] = x;
     }
-    return c;
+    return to_linear(c);
 }
 
 }  // namespace kerf::eval

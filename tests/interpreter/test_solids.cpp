@@ -178,7 +178,11 @@ TEST_CASE("color and material", "[appearance]") {
     CHECK(l.material.color == glm::dvec3(1, 0, 0));
     CHECK(l.material.alpha == 0.25);
     l = one("color(\"#ff8000\") sphere();");
-    CHECK(l.material.color == glm::dvec3(1, 128 / 255.0, 0));
+    // Colours are sRGB as written and stored linear (docs/language.md §10):
+    // 128/255 decodes to ((128/255 + 0.055) / 1.055)^2.4.
+    CHECK(l.material.color.r == 1);
+    CHECK(l.material.color.g == Approx(std::pow((128 / 255.0 + 0.055) / 1.055, 2.4)).epsilon(1e-12));
+    CHECK(l.material.color.b == 0);
     // The innermost colour wins.
     l = one("color(\"red\") color(\"blue\") sphere();");
     CHECK(l.material.color == glm::dvec3(0, 0, 1));
@@ -217,7 +221,10 @@ TEST_CASE("scene statements only at top level", "[scene]") {
     CHECK(r.graph.lights[1].directional);
     CHECK(r.graph.lights[1].direction == glm::dvec3(0, 0, -1));
     REQUIRE(r.graph.background.has_value());
-    CHECK(*r.graph.background == glm::dvec3(0.1, 0.2, 0.3));
+    auto decode = [](double c) { return std::pow((c + 0.055) / 1.055, 2.4); };
+    CHECK(r.graph.background->r == Approx(decode(0.1)).epsilon(1e-12));
+    CHECK(r.graph.background->g == Approx(decode(0.2)).epsilon(1e-12));
+    CHECK(r.graph.background->b == Approx(decode(0.3)).epsilon(1e-12));
     auto o = kerf::test::run("camera(position = [0, -5, 0], projection = \"orthographic\", height = 4);");
     CHECK(o.graph.camera->orthographic);
     CHECK(o.graph.camera->height == 4);
