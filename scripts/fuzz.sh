@@ -12,6 +12,6 @@ trap 'rm -rf "$corpus"' EXIT
 cp examples/*.sdl stdlib/*.sdl tests/fuzz/corpus/* "$corpus"/ 2>/dev/null || true
 echo "fuzzing parse+evaluate for ${seconds}s" >&2
 ./build-fuzz/tests/fuzz/kerf_fuzz_eval -max_total_time="$seconds" -max_len=4096 \
-  -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 "$corpus" 2>build-fuzz/fuzz.log \
+  -timeout=10 -rss_limit_mb=2048 -dict=tests/fuzz/sdl.dict -print_final_stats=1 "$corpus" 2>build-fuzz/fuzz.log \
   || { tail -50 build-fuzz/fuzz.log; echo "fuzz: FAILED (crash input saved as crash-* in $(pwd))" >&2; exit 1; }
 grep -E "stat::number_of_executed_units|Done" build-fuzz/fuzz.log >&2 || true
