@@ -48,9 +48,14 @@ ExprPtr Builder::make(ExprKind kind, SourceLoc at) {
 
 // Operator chains (`1+1+1+...`, `a[0][0]...`) build trees deeper than the
 // source nests; the interpreter and even the tree's destructor recurse over
-// them, so the tree height obeys the same limit as source nesting.
+// them, so the tree height is bounded too — but by a larger multiple of the
+// nesting limit, because a long flat sum is not "nesting" to the person who
+// wrote it (generated scripts contain them). The C stack stays bounded.
 void Builder::push(ExprPtr e, std::uint32_t height) {
-    if (height > nesting.max) throw SourceError(e->loc, "nesting deeper than " + std::to_string(nesting.max));
+    const std::size_t max_height = kChainFactor * nesting.max;
+    if (height > max_height)
+        throw SourceError(e->loc, "expression deeper than " + std::to_string(max_height) +
+                                      " (a chain of operators this long must be split)");
     exprs_.push_back(Slot{std::move(e), height});
 }
 

@@ -20,6 +20,8 @@ public:
     Builder(std::shared_ptr<const SourceFile> file, std::size_t max_nesting);
 
     NestingCounter nesting;  // used by nest<> rules
+    // Expression trees may be this many times deeper than source nesting.
+    static constexpr std::size_t kChainFactor = 16;
 
     SourceLoc loc(std::size_t line, std::size_t col) const;
 

@@ -61,12 +61,17 @@ TEST_CASE("10,000-deep nesting ends in a located error", "[grammar][limits]") {
     CHECK(error_of(repeat("if (a) ", n) + "c();") == nesting_error(1 + 257 * 7));
 }
 
-TEST_CASE("operator chains are limited like nesting (the tree is as deep)", "[grammar][limits]") {
-    // 256 operators build a tree of height 257.
-    CHECK(error_of("x = 1" + repeat(" + 1", 255) + ";") == "no error");
-    CHECK(error_of("x = 1" + repeat(" + 1", 256) + ";") == nesting_error(7 + 255 * 4));  // at the 256th '+'
-    CHECK(error_of("x = a" + repeat("[0]", 256) + ";") == nesting_error(6 + 255 * 3));  // at the 256th '['
-    CHECK(error_of("x = a" + repeat(".x", 256) + ";") == nesting_error(6 + 255 * 2));
+TEST_CASE("operator chains are limited at 16 times the nesting limit (the tree is as deep)", "[grammar][limits]") {
+    // k operators build a tree of height k+1; the default limit is 16 * 256 = 4096.
+    const std::string chain_error = "error: expression deeper than 4096 (a chain of operators this long must be split)";
+    CHECK(error_of("x = 1" + repeat(" + 1", 4095) + ";") == "no error");
+    CHECK(error_of("x = 1" + repeat(" + 1", 4096) + ";") == "t.sdl:1:" + std::to_string(7 + 4095 * 4) + ": " + chain_error);  // at the 4096th '+'
+    CHECK(error_of("x = a" + repeat("[0]", 4096) + ";") == "t.sdl:1:" + std::to_string(6 + 4095 * 3) + ": " + chain_error);  // at the 4096th '['
+    CHECK(error_of("x = a" + repeat(".x", 4096) + ";") == "t.sdl:1:" + std::to_string(6 + 4095 * 2) + ": " + chain_error);
+    // With a smaller nesting limit, chains shrink with it.
+    CHECK(error_of("x = 1 + 1 + 1;", 1) == "no error");
+    CHECK(error_of("x = 1 + 1 + 1 + 1 + 1 + 1 + 1 + 1 + 1 + 1 + 1 + 1 + 1 + 1 + 1 + 1 + 1;", 1) ==
+          "t.sdl:1:67: error: expression deeper than 16 (a chain of operators this long must be split)");
 }
 
 TEST_CASE("exactly at the limit parses; the limit is configurable", "[grammar][limits]") {
