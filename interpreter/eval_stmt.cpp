@@ -48,14 +48,16 @@ struct ChainEntry;
 
 // ---------------------------------------------------------------- files
 
-std::string Evaluator::resolve_path(const ast::Stmt& st) {
+std::string Evaluator::resolve_path(const ast::Stmt& st) { return resolve_path(st.name, st.loc); }
+
+std::string Evaluator::resolve_path(const std::string& name_text, const SourceLoc& loc) {
     namespace fs = std::filesystem;
-    fs::path name(st.name);
+    fs::path name(name_text);
     std::vector<fs::path> dirs;
     if (name.is_absolute()) {
         dirs.push_back(fs::path());
     } else {
-        fs::path base = st.loc.file ? fs::path(st.loc.file->path).parent_path() : fs::path();
+        fs::path base = loc.file ? fs::path(loc.file->path).parent_path() : fs::path();
         dirs.push_back(base.empty() ? fs::path(".") : base);
         for (const std::string& d : opt_.include_dirs) dirs.emplace_back(d);
         std::string stdlib = opt_.stdlib_dir.empty() ? std::string(KERF_STDLIB_DIR) : opt_.stdlib_dir;
@@ -66,7 +68,7 @@ std::string Evaluator::resolve_path(const ast::Stmt& st) {
         std::error_code ec;
         if (fs::is_regular_file(p, ec)) return p.lexically_normal().string();
     }
-    throw SourceError(st.loc, "cannot find '" + st.name + "'");
+    throw SourceError(loc, "cannot find '" + name_text + "'");
 }
 
 const ast::Program& Evaluator::load_program(const std::string& path, const ast::Stmt& st) {

@@ -91,6 +91,8 @@ private:
     void stmt_children(const ast::Stmt& st, Scope& s);
     Scope* load_use(const ast::Stmt& st);
     std::string resolve_path(const ast::Stmt& st);
+    std::string resolve_path(const std::string& name, const SourceLoc& loc);
+    void import_solid(const ast::Stmt& st, Scope& s);
     const ast::Program& load_program(const std::string& path, const ast::Stmt& st);
 
     // Binding helpers (eval_stmt.cpp): `$` names go to the dynamic stack.
@@ -134,6 +136,7 @@ private:
     std::vector<std::string> include_chain_;                 // for cycle errors
     std::unordered_map<std::string, std::unique_ptr<Scope>> use_scopes_;
     std::vector<std::string> use_chain_;
+    std::unordered_map<std::string, std::uint32_t> imported_;  // "solid|path" → mesh index: a loop imports once
 
     // -D overrides of top-level bindings.
     struct Define {

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "interpreter/evaluator.hpp"
+#include "interpreter/mesh_import.hpp"
 #include "interpreter/module_args.hpp"
 
 namespace kerf::eval {
@@ -151,8 +152,30 @@ void Evaluator::solid(std::string_view name, const ast::Stmt& st, Scope& s) {
         out_.graph.meshes.push_back(std::move(mesh));
         add_primitive(P::Mesh, {}, loc, static_cast<std::uint32_t>(out_.graph.meshes.size() - 1));
     } else {
-        throw SourceError(loc, "import is not supported yet");
+        import_solid(st, s);
     }
+}
+
+void Evaluator::import_solid(const ast::Stmt& st, Scope& s) {
+    Args a = match_args("import", {"file", "solid", "convexity"}, st, s);
+    no_children(a);
+    if (!a.has(0) || !a[0].is_string()) arg_error(a, "file must be a string naming an .stl, .obj or .ply file");
+    const bool solid = arg_bool(a, 1, "solid", true);
+    const std::string path = resolve_path(a[0].as_string(), st.loc);
+    const std::string key = (solid ? "1|" : "0|") + path;
+    auto it = imported_.find(key);
+    if (it == imported_.end()) {
+        scene::Mesh mesh;
+        try {
+            mesh = import_mesh(path, opt_.limits.list_elements);
+        } catch (const MeshFormatError& e) {
+            throw SourceError(st.loc, "import(\"" + a[0].as_string() + "\"): " + e.what());
+        }
+        mesh.solid = solid;
+        out_.graph.meshes.push_back(std::move(mesh));
+        it = imported_.emplace(key, static_cast<std::uint32_t>(out_.graph.meshes.size() - 1)).first;
+    }
+    add_primitive(scene::PrimKind::Mesh, {}, st.loc, it->second);
 }
 
 }  // namespace kerf::eval

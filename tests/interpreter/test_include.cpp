@@ -6,31 +6,13 @@
 #include <random>
 
 #include "eval_helpers.hpp"
+#include "temp_tree.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-// A fresh folder tree for one test, removed afterwards.
-struct TempTree {
-    fs::path root;
-    TempTree() {
-        std::random_device rd;
-        root = fs::temp_directory_path() / ("kerf_include_" + std::to_string(rd()) + std::to_string(rd()));
-        fs::create_directories(root);
-    }
-    ~TempTree() {
-        std::error_code ec;
-        fs::remove_all(root, ec);
-    }
-    std::string write(const std::string& rel, const std::string& text) {
-        fs::path p = root / rel;
-        fs::create_directories(p.parent_path());
-        std::ofstream(p) << text;
-        return p.string();
-    }
-    std::string path(const std::string& rel) const { return (root / rel).string(); }
-};
+using kerf::test::TempTree;
 
 std::vector<std::string> echo_file(const std::string& path, kerf::EvalOptions opt = {}) {
     std::vector<std::string> lines;

@@ -101,7 +101,7 @@ TEST_CASE("polyhedron", "[solids]") {
           "test.sdl:1:1: error: polyhedron: face 3 refers to point 9 (there are 4 points)");
     CHECK(error_of("polyhedron(points = [[0,0]], faces = []);") ==
           "test.sdl:1:1: error: polyhedron: points must be a list of [x, y, z] points, got an element [0, 0]");
-    CHECK(error_of("import(\"a.stl\");") == "test.sdl:1:1: error: import is not supported yet");
+    CHECK(error_of("import(\"a.stl\");") == "test.sdl:1:1: error: cannot find 'a.stl'");
 }
 
 TEST_CASE("translate, scale, mirror, multmatrix", "[transforms]") {
