@@ -37,16 +37,13 @@ struct EvalState {
     double t_pad;     // t slack of float Embree windows
     TraceScratch* scratch;
 
-    // node_eval.cpp. `boxed`: the caller (an Embree BVH) has already found
-    // the node's box on the ray.
+    // node_eval.cpp: pushes the node's spans overlapping [a, b] and returns
+    // their count. `boxed`: the caller (an Embree BVH) has already found the
+    // node's box on the ray.
     std::uint32_t eval(std::uint32_t node, double a, double b, Need need, bool boxed = false);
-    bool box_hit(const csg::Aabb& box, double a, double b) const;
-    std::uint32_t eval_leaf(const csg::Node& n, double a, double b);
-    std::uint32_t eval_union(std::uint32_t node, const csg::Node& n, double a, double b);
-    std::uint32_t eval_intersection(const csg::Node& n, double a, double b);
-    std::uint32_t eval_difference(std::uint32_t node, const csg::Node& n, double a, double b, Need need);
+    // node_eval.cpp: pushes the spans of every node of `accel` the ray
+    // crosses on [a, b] (unsorted, possibly overlapping).
     void collect(const Accel& accel, double a, double b);
-    void collect_children(std::uint32_t node, const csg::Node& n, std::uint32_t skip, double a, double b);
     // mesh_leaves.cpp
     std::uint32_t eval_mesh(std::uint32_t leaf_id, double a, double b);
     // difference_first_entry.cpp
