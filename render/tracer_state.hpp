@@ -1,0 +1,131 @@
+// Per-ray state of the tracer. One EvalState lives on the stack of each
+// intersect/occluded call; the Embree contexts that carry it through nested
+// BVH queries start with an RTCIntersectContext (Embree hands that pointer
+// back to our callbacks). The evaluation is spread over several files (node
+// evaluation, difference first entry, mesh leaves, first hit, shadow rays);
+// what they share on the hot path is here, inline: no virtual calls, no heap
+// allocation, no locks per ray.
+#pragma once
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+
+#include <embree3/rtcore.h>
+#include <glm/glm.hpp>
+
+#include "render/csg_tracer.hpp"
+#include "render/float_round.hpp"
+#include "render/span_list.hpp"
+#include "render/tracer_impl.hpp"
+
+namespace kerf::render {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+enum class Need : std::uint8_t {
+    All,    // every span overlapping the window
+    First,  // a list whose first span with t0 > a is the true first entry
+    Any,    // at least one span overlapping the window, if there is one
+};
+
+struct EvalState {
+    const CsgTracer::Impl* impl;
+    glm::dvec3 o, d, invd;
+    float org[3], dir[3];
+    double eps;       // t-length of the degenerate rule
+    double box_pad;   // world-length slack of box tests
+    double t_pad;     // t slack of float Embree windows
+    TraceScratch* scratch;
+
+    // node_eval.cpp: pushes the node's spans overlapping [a, b] and returns
+    // their count. `boxed`: the caller (an Embree BVH) has already found the
+    // node's box on the ray.
+    std::uint32_t eval(std::uint32_t node, double a, double b, Need need, bool boxed = false);
+    // node_eval.cpp: pushes the spans of every node of `accel` the ray
+    // crosses on [a, b] (unsorted, possibly overlapping).
+    void collect(const Accel& accel, double a, double b);
+    // mesh_leaves.cpp
+    std::uint32_t eval_mesh(std::uint32_t leaf_id, double a, double b);
+    // difference_first_entry.cpp
+    std::uint32_t first_entry_by_points(const Accel& subtrahends, std::uint32_t base, std::uint32_t i, double b);
+
+    // The spans gathered on the stack from `sbase` up are subtrahends: merges
+    // them into their union (left at sbase) and subtracts it from the `nm`
+    // minuend spans at index `m` (below sbase). The pieces are written from
+    // the returned index on; their count goes to `pieces`.
+    std::uint32_t subtract_gathered(std::uint32_t m, std::uint32_t nm, std::uint32_t sbase, int& pieces) {
+        SpanStack& st = scratch->stack;
+        const int ns = span_normalize_union(st.at(sbase), int(st.size() - sbase), eps);
+        const std::uint32_t rbase = sbase + std::uint32_t(ns);
+        st.resize(rbase + nm + std::uint32_t(ns));
+        pieces = span_difference(st.at(m), int(nm), st.at(sbase), ns, st.at(rbase), eps);
+        return rbase;
+    }
+};
+
+inline EvalState make_state(const CsgTracer::Impl* impl, const TraceRay& ray, double eps_world, double scale,
+                            TraceScratch& scratch) {
+    EvalState st;
+    st.impl = impl;
+    st.o = ray.o;
+    st.d = ray.d;
+    for (int i = 0; i < 3; ++i) {
+        st.invd[i] = ray.d[i] != 0 ? 1.0 / ray.d[i] : kInf;
+        st.org[i] = float(ray.o[i]);
+        st.dir[i] = float(ray.d[i]);
+    }
+    const double len = glm::length(ray.d);
+    // Round-off of t also grows with the origin's distance (far cameras).
+    st.eps = (eps_world + (impl->use_float ? 1e-6 : 1e-13) * glm::length(ray.o)) / len;
+    st.box_pad = eps_world;
+    st.t_pad = 1e-5 * (scale + glm::length(ray.o)) / len;
+    st.scratch = &scratch;
+    return st;
+}
+
+// A float Embree ray over (tnear, tfar) that has hit nothing yet.
+inline RTCRayHit embree_ray(float ox, float oy, float oz, float dx, float dy, float dz, float tnear, float tfar) {
+    RTCRayHit rh;
+    rh.ray.org_x = ox;
+    rh.ray.org_y = oy;
+    rh.ray.org_z = oz;
+    rh.ray.dir_x = dx;
+    rh.ray.dir_y = dy;
+    rh.ray.dir_z = dz;
+    rh.ray.tnear = tnear;
+    rh.ray.tfar = tfar;
+    rh.ray.time = 0;
+    rh.ray.mask = 0xFFFFFFFFu;
+    rh.ray.id = 0;
+    rh.ray.flags = 0;
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    return rh;
+}
+
+// The state's ray on the t-window [a, b], widened by t_pad for float round-off.
+inline RTCRayHit make_rayhit(const EvalState& st, double a, double b) {
+    return embree_ray(st.org[0], st.org[1], st.org[2], st.dir[0], st.dir[1], st.dir[2],
+                      std::max(0.0f, round_down(a) - float(st.t_pad)),
+                      b == kInf ? std::numeric_limits<float>::infinity() : round_up(b) + float(st.t_pad));
+}
+
+// A query over the root's units (first_hit.cpp, shadow_rays.cpp).
+struct TopContext {
+    RTCIntersectContext rtc;  // first member: Embree passes our pointer through
+    EvalState* state;
+    const Accel* accel;
+    double tnear;
+    double best;              // intersect: current first entry; occluded: tfar
+    std::uint32_t best_unit;
+    SpanEnd best_end;
+    bool found;
+
+    TopContext(EvalState& st, const TraceRay& ray)
+        : state(&st), accel(&st.impl->top), tnear(ray.tnear), best(ray.tfar), best_unit(0), found(false) {
+        rtcInitIntersectContext(&rtc);
+    }
+};
+
+}  // namespace kerf::render
