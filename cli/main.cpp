@@ -49,6 +49,14 @@ void print_stats(const render::RenderStats& s, const render::Image& img) {
 }
 
 int run(const cli::Options& o) {
+    if (o.command == cli::Command::Render) {
+        try {
+            render::check_output_path(o.output);
+        } catch (const render::ImageWriteError& e) {
+            std::cerr << "kerf: error: " << e.what() << '\n';
+            return kRenderFailed;
+        }
+    }
     EvalResult evaluated = evaluate_file(o.scene, o.eval);
     print_warnings(evaluated.warnings);
     csg::Scene scene = lower_to_csg(evaluated.graph);
