@@ -115,7 +115,9 @@ int main(int argc, char** argv) {
         return run(options);
     } catch (const SourceError& e) {
         std::cerr << format_diagnostic(e.diagnostic()) << '\n';
-        return kSceneError;
+        // Only -D values are errors without a file: a broken -D is a bad
+        // command line (exit 2), like a malformed -D without '='.
+        return e.diagnostic().loc.file ? kSceneError : kUsage;
     } catch (const IoError& e) {
         std::cerr << "kerf: error: " << e.what() << '\n';
         return kUsage;
