@@ -206,3 +206,23 @@ TEST_CASE("a 100,000-term operator chain stops at the chain limit, not the stack
     CHECK(head.line == 1);
     CHECK(head.message == "expression deeper than 4096 (a chain of operators this long must be split)");
 }
+
+TEST_CASE("kerf dump rejects bad input exactly as kerf check does") {
+    auto dir = test_dir("dump_bad");
+    const std::vector<std::string> scripts = {
+        std::string(64, '\0'),
+        "a = " + repeat("(", 10'000) + "1;\n",
+        "module m() m();\nm();\n",
+        "cube([1, 0/0, 1]);\n",
+    };
+    for (const auto& text : scripts) {
+        const auto path = write_file(dir / "bad.sdl", text);
+        const KerfRun check = run_kerf_bounded("check '" + path + "'", dir);
+        const KerfRun dump = run_kerf_bounded("dump '" + path + "'", dir);
+        CHECK(check.status == 1);
+        CHECK(dump.status == 1);
+        CHECK(dump.out.empty());
+        CHECK(dump.err == check.err);
+        CHECK(parse_head(first_line(dump.err)).path == path);
+    }
+}
