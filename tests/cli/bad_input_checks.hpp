@@ -76,3 +76,17 @@ inline void expect_error(const std::string& path, const std::filesystem::path& d
     CHECK(head.col == col);
     CHECK(head.message == message);
 }
+
+// One script per row: written to dir/file, then expect_error().
+struct BadScript {
+    std::string file, text;
+    int line = 0, col = 0;
+    std::string message;
+};
+
+inline void expect_errors(const std::filesystem::path& dir, const std::vector<BadScript>& scripts) {
+    for (const auto& s : scripts) {
+        INFO(s.file << ": " << s.text.substr(0, 200));
+        expect_error(write_file(dir / s.file, s.text), dir, s.line, s.col, s.message);
+    }
+}

@@ -7,13 +7,12 @@
 namespace fs = std::filesystem;
 
 TEST_CASE("infinite recursion ends at the call depth limit (1000)") {
-    auto dir = test_dir("recursion");
     const std::string limit = "call depth limit 1000 exceeded";
-    expect_error(write_file(dir / "f.sdl", "function f(x) = f(x + 1);\na = f(0);\n"), dir, 1, 17, limit);
-    expect_error(write_file(dir / "m.sdl", "module m() m();\nm();\n"), dir, 1, 12, limit);
-    expect_error(write_file(dir / "fg.sdl", "function f(x) = g(x);\nfunction g(x) = f(x);\na = f(0);\n"), dir, 2, 17,
-                 limit);
-    expect_error(write_file(dir / "children.sdl", "module m() m() children();\nm() cube(1);\n"), dir, 1, 12, limit);
+    expect_errors(test_dir("recursion"),
+                  {{"f.sdl", "function f(x) = f(x + 1);\na = f(0);\n", 1, 17, limit},
+                   {"m.sdl", "module m() m();\nm();\n", 1, 12, limit},
+                   {"fg.sdl", "function f(x) = g(x);\nfunction g(x) = f(x);\na = f(0);\n", 2, 17, limit},
+                   {"children.sdl", "module m() m() children();\nm() cube(1);\n", 1, 12, limit}});
 }
 
 TEST_CASE("recursion deeper than the stack, with the call limit raised, is an error, not a crash") {
@@ -36,23 +35,20 @@ TEST_CASE("exponential recursion ends at the evaluation step limit") {
 }
 
 TEST_CASE("a loop over [0:1e12] ends at the iteration limit (10^7)") {
-    auto dir = test_dir("loop");
     const std::string limit = "loop iteration limit 10000000 exceeded";
-    expect_error(write_file(dir / "for.sdl", "for (i = [0:1e12]) cube(1);\n"), dir, 1, 6, limit);
-    expect_error(write_file(dir / "tiny_step.sdl", "for (i = [0:1e-300:1]) cube(1);\n"), dir, 1, 6, limit);
-    expect_error(write_file(dir / "list.sdl", "a = [for (i = [0:1e12]) i];\n"), dir, 1, 11, limit);
-    // Nested loops count together: 10^4 x 10^4 iterations.
-    expect_error(write_file(dir / "nested.sdl", "a = [for (i = [0:1e4]) for (j = [0:1e4]) i * j];\n"), dir, 1, 29,
-                 limit);
+    expect_errors(test_dir("loop"),
+                  {{"for.sdl", "for (i = [0:1e12]) cube(1);\n", 1, 6, limit},
+                   {"tiny_step.sdl", "for (i = [0:1e-300:1]) cube(1);\n", 1, 6, limit},
+                   {"list.sdl", "a = [for (i = [0:1e12]) i];\n", 1, 11, limit},
+                   // Nested loops count together: 10^4 x 10^4 iterations.
+                   {"nested.sdl", "a = [for (i = [0:1e4]) for (j = [0:1e4]) i * j];\n", 1, 29, limit}});
 }
 
 TEST_CASE("ranges with a zero step or a non-finite bound are located errors") {
-    auto dir = test_dir("ranges");
-    expect_error(write_file(dir / "zero.sdl", "for (i = [0:0:1]) cube(1);\n"), dir, 1, 13, "range step must not be 0");
-    expect_error(write_file(dir / "nan.sdl", "for (i = [0:0/0]) cube(1);\n"), dir, 1, 14,
-                 "range bound must be finite, got nan");
-    expect_error(write_file(dir / "inf.sdl", "for (i = [-1/0:0]) cube(1);\n"), dir, 1, 13,
-                 "range bound must be finite, got -inf");
+    expect_errors(test_dir("ranges"),
+                  {{"zero.sdl", "for (i = [0:0:1]) cube(1);\n", 1, 13, "range step must not be 0"},
+                   {"nan.sdl", "for (i = [0:0/0]) cube(1);\n", 1, 14, "range bound must be finite, got nan"},
+                   {"inf.sdl", "for (i = [-1/0:0]) cube(1);\n", 1, 13, "range bound must be finite, got -inf"}});
 }
 
 TEST_CASE("a huge list ends at the list size limit (10^7)") {
@@ -101,21 +97,19 @@ TEST_CASE("an include cycle is a located error naming the cycle") {
 }
 
 TEST_CASE("sqrt(-1) as a radius is an error at the statement") {
-    auto dir = test_dir("sqrt");
-    expect_error(write_file(dir / "sphere.sdl", "sphere(sqrt(-1));\n"), dir, 1, 1, "sphere: r must be finite, got nan");
-    expect_error(write_file(dir / "named.sdl", "r = sqrt(-1);\ncylinder(h = 1, r = r);\n"), dir, 2, 1,
-                 "cylinder: r must be finite, got nan");
+    expect_errors(test_dir("sqrt"),
+                  {{"sphere.sdl", "sphere(sqrt(-1));\n", 1, 1, "sphere: r must be finite, got nan"},
+                   {"named.sdl", "r = sqrt(-1);\ncylinder(h = 1, r = r);\n", 2, 1,
+                    "cylinder: r must be finite, got nan"}});
 }
 
 TEST_CASE("NaN and infinity from 1/0 as a size or transform are errors at the statement") {
-    auto dir = test_dir("nonfinite");
-    expect_error(write_file(dir / "cube.sdl", "cube(1/0);\n"), dir, 1, 1, "cube: size must be finite, got inf");
-    expect_error(write_file(dir / "vec.sdl", "x = 0/0;\ncube([1, x, 1]);\n"), dir, 2, 1,
-                 "cube: size must be finite, got [1, nan, 1]");
-    expect_error(write_file(dir / "overflow.sdl", "cube(1e308 * 10);\n"), dir, 1, 1,
-                 "cube: size must be finite, got inf");
-    expect_error(write_file(dir / "translate.sdl", "cube(1);\ntranslate([1/0, 0, 0]) cube(1);\n"), dir, 2, 1,
-                 "translate: v must be finite, got [inf, 0, 0]");
-    expect_error(write_file(dir / "scale.sdl", "scale([1, 1, 0]) sphere(1);\n"), dir, 1, 1,
-                 "scale: factor must not be 0");
+    const std::string inf = "cube: size must be finite, got inf";
+    expect_errors(test_dir("nonfinite"),
+                  {{"cube.sdl", "cube(1/0);\n", 1, 1, inf},
+                   {"vec.sdl", "x = 0/0;\ncube([1, x, 1]);\n", 2, 1, "cube: size must be finite, got [1, nan, 1]"},
+                   {"overflow.sdl", "cube(1e308 * 10);\n", 1, 1, inf},
+                   {"translate.sdl", "cube(1);\ntranslate([1/0, 0, 0]) cube(1);\n", 2, 1,
+                    "translate: v must be finite, got [inf, 0, 0]"},
+                   {"scale.sdl", "scale([1, 1, 0]) sphere(1);\n", 1, 1, "scale: factor must not be 0"}});
 }

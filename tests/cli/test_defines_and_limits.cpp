@@ -72,28 +72,29 @@ TEST_CASE("a good -D value overrides, and a $ variable needs no binding") {
 
 TEST_CASE("each limit flag moves its limit exactly") {
     auto dir = test_dir("limit_flags");
-    // f(20) recurses 21 calls deep.
-    const auto calls = write_file(dir / "calls.sdl", "function f(n) = n <= 0 ? 0 : 1 + f(n - 1);\na = f(20);\n");
-    CHECK(run_kerf_bounded("check '" + calls + "' --max-call-depth 21", dir).status == 0);
-    expect_error(calls, dir, 1, 34, "call depth limit 20 exceeded", "--max-call-depth 20");
-
-    // 10 parentheses; the 10th (column 4 + 10) crosses a limit of 9.
-    const auto parens = write_file(dir / "parens.sdl", "a = ((((((((((1))))))))));\n");
-    CHECK(run_kerf_bounded("check '" + parens + "' --max-nesting 10", dir).status == 0);
-    expect_error(parens, dir, 1, 14, "nesting deeper than 9", "--max-nesting 9");
-
-    const auto loop = write_file(dir / "loop.sdl", "for (i = [1:200]) { }\n");
-    CHECK(run_kerf_bounded("check '" + loop + "' --max-iterations 200", dir).status == 0);
-    expect_error(loop, dir, 1, 6, "loop iteration limit 199 exceeded", "--max-iterations 199");
-
-    const auto list = write_file(dir / "list.sdl", "a = [for (i = [1:200]) i];\n");
-    CHECK(run_kerf_bounded("check '" + list + "' --max-list 200", dir).status == 0);
-    expect_error(list, dir, 1, 24, "list size limit 199 exceeded", "--max-list 199");
-
-    const auto prims = write_file(dir / "prims.sdl", "for (i = [1:6]) translate([i, 0, 0]) cube(1);\n");
-    CHECK(run_kerf_bounded("check '" + prims + "' --max-primitives 6", dir).status == 0);
-    expect_error(prims, dir, 1, 38, "primitive limit 5 exceeded", "--max-primitives 5");
-    // (--max-steps: see the exponential recursion in test_bad_evaluation.cpp.)
+    // What each script needs, counted from its text: f(20) recurses 21 calls
+    // deep; 10 parentheses, the 10th (column 4 + 10) crossing a limit of 9;
+    // 200 iterations; 200 elements; 6 cubes. --max-steps: see the
+    // exponential recursion in test_bad_evaluation.cpp.
+    struct Limit {
+        std::string flag, text;
+        int needed, col;
+        std::string message;
+    };
+    const std::vector<Limit> limits = {
+        {"--max-call-depth", "function f(n) = n <= 0 ? 0 : 1 + f(n - 1);\na = f(20);\n", 21, 34,
+         "call depth limit 20 exceeded"},
+        {"--max-nesting", "a = ((((((((((1))))))))));\n", 10, 14, "nesting deeper than 9"},
+        {"--max-iterations", "for (i = [1:200]) { }\n", 200, 6, "loop iteration limit 199 exceeded"},
+        {"--max-list", "a = [for (i = [1:200]) i];\n", 200, 24, "list size limit 199 exceeded"},
+        {"--max-primitives", "for (i = [1:6]) translate([i, 0, 0]) cube(1);\n", 6, 38, "primitive limit 5 exceeded"},
+    };
+    for (const auto& l : limits) {
+        INFO(l.flag);
+        const auto path = write_file(dir / "limit.sdl", l.text);
+        CHECK(run_kerf_bounded("check '" + path + "' " + l.flag + " " + std::to_string(l.needed), dir).status == 0);
+        expect_error(path, dir, 1, l.col, l.message, l.flag + " " + std::to_string(l.needed - 1));
+    }
 }
 
 TEST_CASE("a limit flag without a whole positive number is exit 2") {
