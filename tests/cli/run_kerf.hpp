@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
@@ -15,7 +16,9 @@ struct KerfRun {
 };
 
 inline std::filesystem::path test_dir(const std::string& name) {
-    auto dir = std::filesystem::temp_directory_path() / ("kerf_cli_" + name);
+    // Named after the build too: several checkouts may run these at once.
+    const auto build = std::hash<std::string>{}(KERF_BINARY_DIR) % 1'000'000;
+    auto dir = std::filesystem::temp_directory_path() / ("kerf_cli_" + std::to_string(build) + "_" + name);
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     return dir;
