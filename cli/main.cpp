@@ -49,6 +49,14 @@ void print_stats(const render::RenderStats& s, const render::Image& img) {
 }
 
 int run(const cli::Options& o) {
+    if (o.command == cli::Command::Render) {
+        try {
+            render::check_output_path(o.output);
+        } catch (const render::ImageWriteError& e) {
+            std::cerr << "kerf: error: " << e.what() << '\n';
+            return kRenderFailed;
+        }
+    }
     EvalResult evaluated = evaluate_file(o.scene, o.eval);
     print_warnings(evaluated.warnings);
     csg::Scene scene = lower_to_csg(evaluated.graph);
@@ -107,7 +115,9 @@ int main(int argc, char** argv) {
         return run(options);
     } catch (const SourceError& e) {
         std::cerr << format_diagnostic(e.diagnostic()) << '\n';
-        return kSceneError;
+        // Only -D values are errors without a file: a broken -D is a bad
+        // command line (exit 2), like a malformed -D without '='.
+        return e.diagnostic().loc.file ? kSceneError : kUsage;
     } catch (const IoError& e) {
         std::cerr << "kerf: error: " << e.what() << '\n';
         return kUsage;

@@ -1,8 +1,22 @@
 #include "grammar/source.hpp"
 
+#include <algorithm>
+
 namespace kerf {
 
 namespace {
+
+// Diagnostics go to a terminal whatever the script holds: a 1 MB identifier,
+// binary garbage or a newline inside a message must not flood it, garble it
+// or break the one-line form editors parse (spec §8). These bounds keep a
+// diagnostic a few hundred bytes whatever the input.
+constexpr std::size_t kMaxWord = 64;       // longer names are shown as their start + "..."
+constexpr std::size_t kWordKept = 40;
+constexpr std::size_t kMaxMessage = 400;   // longer messages keep head + "..." + tail
+constexpr std::size_t kMessageHead = 300;
+constexpr std::size_t kMessageTail = 80;
+constexpr std::size_t kLineWindow = 100;   // source bytes shown on each side of the caret
+
 std::string_view line_of(const std::string& text, std::uint32_t line) {
     std::size_t pos = 0;
     for (std::uint32_t l = 1; l < line; ++l) {
@@ -16,15 +30,109 @@ std::string_view line_of(const std::string& text, std::uint32_t line) {
     if (!v.empty() && v.back() == '\r') v.remove_suffix(1);
     return v;
 }
+
+bool is_continuation(unsigned char c) { return (c & 0xC0) == 0x80; }
+
+// Length of the well-formed UTF-8 sequence at s[i] (RFC 3629: no overlong
+// forms, no surrogates, nothing above U+10FFFF), or 0 if it is not one.
+std::size_t utf8_length(std::string_view s, std::size_t i) {
+    const auto b = [&](std::size_t k) { return static_cast<unsigned char>(s[i + k]); };
+    const unsigned char c = b(0);
+    if (c < 0x80) return 1;
+    std::size_t n = c >= 0xC2 && c <= 0xDF ? 2 : c >= 0xE0 && c <= 0xEF ? 3 : c >= 0xF0 && c <= 0xF4 ? 4 : 0;
+    if (n == 0 || i + n > s.size()) return 0;
+    for (std::size_t k = 1; k < n; ++k)
+        if (!is_continuation(b(k))) return 0;
+    if ((c == 0xE0 && b(1) < 0xA0) || (c == 0xED && b(1) > 0x9F) || (c == 0xF0 && b(1) < 0x90) ||
+        (c == 0xF4 && b(1) > 0x8F))
+        return 0;
+    return n;
+}
+
+// Calls emit(unit_text) for each display unit of s: a valid UTF-8 character,
+// or "?" for an invalid byte or a control character (tabs kept when asked,
+// so a caret can be aligned under them).
+template <class Emit>
+void for_each_unit(std::string_view s, bool keep_tabs, Emit emit) {
+    for (std::size_t i = 0; i < s.size();) {
+        const std::size_t n = utf8_length(s, i);
+        const unsigned char c = static_cast<unsigned char>(s[i]);
+        if (n == 0 || ((c < 0x20 || c == 0x7F) && !(keep_tabs && c == '\t'))) {
+            emit(std::string_view(c == '\n' ? "\\n" : "?"));
+            i += 1;
+        } else {
+            emit(s.substr(i, n));
+            i += n;
+        }
+    }
+}
+
+std::string printable(std::string_view s, bool keep_tabs) {
+    std::string out;
+    for_each_unit(s, keep_tabs, [&](std::string_view u) { out += u; });
+    return out;
+}
+
+// Never cut inside a UTF-8 character: move a cut position forward to the
+// next character start.
+std::size_t char_boundary(std::string_view s, std::size_t pos) {
+    while (pos < s.size() && is_continuation(static_cast<unsigned char>(s[pos]))) ++pos;
+    return pos;
+}
+
+bool is_word_byte(char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
+           c == '$';
+}
+
+// Messages quote user text (names, values, strings): shorten very long
+// names, then the whole message if it is still long.
+std::string clipped_message(const std::string& message) {
+    std::string words;
+    for (std::size_t i = 0; i < message.size();) {
+        std::size_t j = i;
+        while (j < message.size() && is_word_byte(message[j])) ++j;
+        if (j == i) {
+            words += message[i++];
+        } else {
+            std::string_view word(message.data() + i, j - i);
+            words += word.size() > kMaxWord ? std::string(word.substr(0, kWordKept)) + "..." : std::string(word);
+            i = j;
+        }
+    }
+    std::string text = printable(words, false);
+    if (text.size() <= kMaxMessage) return text;
+    std::string_view v(text);
+    const std::size_t head = char_boundary(v, kMessageHead);
+    const std::size_t tail = char_boundary(v, v.size() - kMessageTail);
+    return std::string(v.substr(0, head)) + " ... " + std::string(v.substr(tail));
+}
+
+// The source line around the 0-based byte column `col`, with "..." where it
+// was clipped, and the caret line under it (one column per character).
+std::string source_and_caret(std::string_view src, std::size_t col) {
+    if (col > src.size()) col = src.size();
+    const std::size_t start = col > kLineWindow ? std::min(col, char_boundary(src, col - kLineWindow)) : 0;
+    const std::size_t end = char_boundary(src, std::min(src.size(), col + kLineWindow));
+    std::string line = start > 0 ? "..." : "";
+    std::string caret = start > 0 ? "   " : "";
+    const std::size_t caret_at = std::max(start, col);
+    for_each_unit(src.substr(start, caret_at - start), true,
+                  [&](std::string_view u) { caret += u == "\t" ? '\t' : ' '; });
+    line += printable(src.substr(start, end - start), true);
+    if (end < src.size()) line += "...";
+    return line + '\n' + caret + '^';
+}
+
 }  // namespace
 
 std::string format_diagnostic_head(const Diagnostic& d) {
-    std::string out = d.loc.file ? d.loc.file->path : std::string("<command line>");
+    std::string out = d.loc.file ? printable(d.loc.file->path, false) : std::string("<command line>");
     if (d.loc.line > 0) {
         out += ':' + std::to_string(d.loc.line) + ':' + std::to_string(d.loc.col);
     }
     out += d.severity == Severity::Error ? ": error: " : ": warning: ";
-    out += d.message;
+    out += clipped_message(d.message);
     return out;
 }
 
@@ -32,21 +140,7 @@ std::string format_diagnostic(const Diagnostic& d) {
     std::string out = format_diagnostic_head(d);
     if (!d.loc.file || d.loc.line == 0) return out;
     std::string_view src = line_of(d.loc.file->text, d.loc.line);
-    // Long or binary lines would make the caret display useless: clip them.
-    constexpr std::size_t max_shown = 200;
-    std::size_t col = d.loc.col > 0 ? d.loc.col - 1 : 0;
-    std::size_t start = col > max_shown / 2 ? col - max_shown / 2 : 0;
-    if (start > src.size()) start = src.size();
-    std::string_view shown = src.substr(start, max_shown);
-    std::string line;
-    for (char c : shown) line += (static_cast<unsigned char>(c) < 0x20 && c != '\t') ? '?' : c;
-    out += '\n';
-    out += line;
-    out += '\n';
-    for (std::size_t i = start; i < col && i - start < shown.size(); ++i)
-        out += (src[i] == '\t') ? '\t' : ' ';
-    out += '^';
-    return out;
+    return out + '\n' + source_and_caret(src, d.loc.col > 0 ? d.loc.col - 1 : 0);
 }
 
 }  // namespace kerf

@@ -3,12 +3,15 @@
 // failed write keeps the previous image.
 #include <algorithm>
 #include <atomic>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <limits>
 #include <string>
 #include <system_error>
 
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <OpenImageIO/imageio.h>
@@ -71,6 +74,27 @@ std::string temp_name(const fs::path& target) {
 }
 
 }  // namespace
+
+void check_output_path(const std::string& path) {
+    const fs::path target(path);
+    const std::string ext = target.extension().string();
+    if (!OIIO::ImageOutput::create(path))
+        throw ImageWriteError("cannot write " + path + ": " +
+                              (ext.empty() ? std::string("no extension to choose the image format by")
+                                           : "OpenImageIO cannot write '" + ext + "' files"));
+    std::error_code ec;
+    if (fs::is_directory(target, ec)) throw ImageWriteError("cannot write " + path + ": it is a folder");
+    const fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+    if (!fs::is_directory(folder, ec))
+        throw ImageWriteError("cannot write " + path + ": no folder '" + folder.string() + "'");
+    // The folder must accept the temporary file write_image() renames over
+    // the target: create and remove one now (permissions, read-only mounts).
+    const std::string probe = temp_name(target);
+    const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0644);
+    if (fd < 0) throw ImageWriteError("cannot write " + path + ": " + std::strerror(errno));
+    ::close(fd);
+    ::unlink(probe.c_str());
+}
 
 void write_image(const Image& image, const std::string& path) {
     if (image.width < 1 || image.height < 1 || image.channels < 1 ||

@@ -61,6 +61,12 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// Throws ImageWriteError (one line) if write_image() could not write `path`:
+// OpenImageIO has no writer for its extension, or its folder is missing or
+// refuses a new file. The CLI calls it before evaluating and rendering, so a
+// typo in -o costs nothing.
+void check_output_path(const std::string& path);
+
 // Format by extension (OpenImageIO). EXR/TIFF/HDR/PFM: linear float; others
 // (PNG, JPEG, ...): 8-bit, colour sRGB-encoded, AOVs normalised (spec §7).
 // Written to a temporary file in the same folder, then renamed over `path`,

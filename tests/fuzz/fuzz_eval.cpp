@@ -1,5 +1,5 @@
-// libFuzzer entry point: arbitrary bytes are parsed and evaluated as a .sdl
-// script under small limits, so each input finishes in milliseconds and a
+// libFuzzer entry point: arbitrary bytes are parsed, evaluated and lowered
+// to csg::Scene (what `kerf check` does) under small limits, so each input finishes in milliseconds and a
 // runaway loop or recursion surfaces as the located limit error it must be.
 // User-caused failures (SourceError, IoError) are the expected outcome for
 // garbage; anything else escaping — another exception type, a crash, a
@@ -12,6 +12,7 @@
 #include "grammar/parser.hpp"
 #include "grammar/source.hpp"
 #include "interpreter/interpreter.hpp"
+#include "interpreter/lower.hpp"
 
 namespace {
 
@@ -37,7 +38,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     file->path = "/nonexistent-kerf-fuzz/input.sdl";
     file->text.assign(reinterpret_cast<const char*>(data), size);
     try {
-        kerf::evaluate_source(std::move(file), options);
+        // Lowering sees only graphs the evaluator accepted, so fuzzing it
+        // behind evaluation finds what a real script can reach.
+        kerf::lower_to_csg(kerf::evaluate_source(std::move(file), options).graph);
     } catch (const kerf::SourceError&) {
     } catch (const kerf::IoError&) {
     }
