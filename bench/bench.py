@@ -14,6 +14,7 @@ import argparse
 import json
 import os
 import re
+import signal
 import statistics
 import subprocess
 import sys
@@ -31,8 +32,16 @@ def run(cmd, timeout=None):
     """(wall s, peak RSS MB, stderr) of one process; raises on failure."""
     tfile = "/tmp/kerf-bench-time.txt"
     t0 = time.perf_counter()
-    p = subprocess.run(["/usr/bin/time", "-v", "-o", tfile] + cmd, stdout=subprocess.PIPE,
-                       stderr=subprocess.PIPE, text=True, timeout=timeout)
+    # Own process group: on a timeout the renderer under /usr/bin/time dies too.
+    p = subprocess.Popen(["/usr/bin/time", "-v", "-o", tfile] + cmd, stdout=subprocess.PIPE,
+                         stderr=subprocess.PIPE, text=True, start_new_session=True)
+    try:
+        _, err = p.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        os.killpg(p.pid, signal.SIGKILL)
+        p.communicate()
+        raise
+    p.stderr = err
     wall = time.perf_counter() - t0
     if p.returncode != 0:
         raise RuntimeError(f"{' '.join(cmd)} exited {p.returncode}:\n{p.stderr[-2000:]}")
@@ -66,6 +75,7 @@ class Bench:
         self.results_path = os.path.join(self.dir, "results.json")
         self.results = {"meta": self.meta(), "rows": [], "tax": []}
         self.failed = []
+        self.pov_dead = {}  # family -> member that ran out of POV-Ray time: larger ones are skipped
 
     def meta(self):
         cpu = next((l.split(":", 1)[1].strip() for l in open("/proc/cpuinfo") if l.startswith("model name")), "?")
@@ -104,8 +114,11 @@ class Bench:
         run(self.kerf_cmd(base + ".sdl", img + ".kerf.mask.pgm", m, ["--aov", "depth"]))
         pov_mask = base + ".mask.pov"  # the mask variant must match the mask size's aspect
         open(pov_mask, "w").write(scenes.pov_text(s, m, m))
-        run(self.pov_cmd(pov_mask, img + ".pov.mask.ppm", m, mask=True), timeout=self.a.pov_timeout)
+        run(self.pov_cmd(pov_mask, img + ".pov.mask.ppm", m, mask=True), timeout=self.timeout(s))
         return masks.iou(img + ".kerf.mask.pgm", img + ".pov.mask.ppm")
+
+    def timeout(self, s):
+        return self.a.pov_timeout if s.group == "ref" else self.a.pov_family_timeout
 
     def scene_row(self, s, size):
         base = self.write(s, size)
@@ -116,20 +129,32 @@ class Bench:
         row["check_ms"] = w * 1e3
         _, _, err = run(self.kerf_cmd(base + ".sdl", img + ".1x1.png", 1))
         row["build_ms"] = kerf_stats(err)["render_s"] * 1e3
-        row["iou"], row["kerf_px"], row["pov_px"] = (None, 0, 0) if self.a.no_pov else self.silhouette(s, base)
+        row["iou"], row["kerf_px"], row["pov_px"] = None, 0, 0
+        pov_on = not self.a.no_pov
+        if pov_on and s.group in self.pov_dead:
+            row["pov_skipped"] = f"a smaller {s.group} scene ({self.pov_dead[s.group]}) already took POV-Ray over {self.timeout(s):.0f} s"
+            pov_on = False
+        if pov_on:
+            try:
+                row["iou"], row["kerf_px"], row["pov_px"] = self.silhouette(s, base)
+            except subprocess.TimeoutExpired:
+                row["pov_skipped"] = f"POV-Ray's silhouette render alone ({self.a.mask_size}²) took over {self.timeout(s):.0f} s (killed)"
+                self.pov_dead[s.group] = s.name
+                pov_on = False
         kerf, pov, stats = [], [], []
         for i in range(self.a.runs):  # alternate, so load changes hit both alike
             w, mem_k, err = run(self.kerf_cmd(base + ".sdl", img + ".kerf.png", size))
             kerf.append((w, mem_k))
             stats.append(kerf_stats(err))
-            if self.a.no_pov or (pov and pov[0][0] > self.a.pov_once):
+            if not pov_on or (pov and pov[0][0] > self.a.pov_once):
                 continue  # a POV-Ray run that long is measured once (reported)
             try:
-                w, mem_p, _ = run(self.pov_cmd(base + ".pov", img + ".pov.png", size), timeout=self.a.pov_timeout)
+                w, mem_p, _ = run(self.pov_cmd(base + ".pov", img + ".pov.png", size), timeout=self.timeout(s))
                 pov.append((w, mem_p))
             except subprocess.TimeoutExpired:
-                row["pov_timeout_s"] = self.a.pov_timeout
-                break
+                row["pov_timeout_s"] = self.timeout(s)
+                self.pov_dead[s.group] = s.name
+                pov_on = False
         med = lambda xs: statistics.median(xs) if xs else None
         row.update({
             "kerf_wall_ms": [w * 1e3 for w, _ in kerf], "pov_wall_ms": [w * 1e3 for w, _ in pov],
@@ -222,8 +247,10 @@ def main():
     p.add_argument("--ref-size", type=int, default=2048, help="reference models (issue 5 targets: 2048)")
     p.add_argument("--family-size", type=int, default=512)
     p.add_argument("--mask-size", type=int, default=512, help="silhouette comparison size")
-    p.add_argument("--pov-once", type=float, default=600, help="a POV-Ray run longer than this (s) is not repeated")
-    p.add_argument("--pov-timeout", type=float, default=1800)
+    p.add_argument("--pov-once", type=float, default=60, help="a POV-Ray run longer than this (s) is not repeated")
+    p.add_argument("--pov-timeout", type=float, default=1800, help="per POV-Ray run, reference models (s)")
+    p.add_argument("--pov-family-timeout", type=float, default=240,
+                   help="per POV-Ray run in the families (s); larger members of that family then skip POV-Ray")
     p.add_argument("--only", help="regex: only scenes whose name matches")
     p.add_argument("--no-pov", action="store_true")
     p.add_argument("--no-tax", action="store_true")

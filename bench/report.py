@@ -29,7 +29,9 @@ def scene_table(rows):
            "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
     for r in rows:
         pov = f(r["pov_ms"])
-        if r.get("pov_timeout_s"):
+        if r.get("pov_skipped"):
+            pov = "not run¹"
+        elif r.get("pov_timeout_s"):
             pov = f"> {r['pov_timeout_s']:.0f} s (killed)"
         elif r["pov_wall_ms"] and len(r["pov_wall_ms"]) < len(r["kerf_wall_ms"]):
             pov += f" (1 run)" if len(r["pov_wall_ms"]) == 1 else f" ({len(r['pov_wall_ms'])} runs)"
@@ -37,6 +39,9 @@ def scene_table(rows):
                    f"{r['sub']:.2f} | {r['and']:.2f} | {r['tests']:.2f} | {r['render_ms']:.0f} | {r['mrays']:.2f} | "
                    f"{r['kerf_mb']:.0f} | {r['kerf_ms']:.0f} | {pov} | {spread(r)} | {f(r['pov_mb'])} | "
                    f"{f(r['iou'], '{:.4f}')}{' **FAIL**' if r['iou'] is not None and r['iou'] < 0.97 else ''} |")
+    skipped = [f"{r['name']}: {r['pov_skipped']}" for r in rows if r.get("pov_skipped")]
+    if skipped:
+        out.append("\n¹ POV-Ray not timed — " + "; ".join(skipped) + ".")
     return "\n".join(out)
 
 
