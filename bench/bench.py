@@ -22,6 +22,7 @@ import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import masks  # noqa: E402
+import report  # noqa: E402
 import scenes  # noqa: E402
 
 IOU_MIN = 0.97
@@ -240,7 +241,7 @@ def fmt_row(r, took):
 def main():
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--kerf", default="build/kerf")
-    p.add_argument("--out", default="bench/out")
+    p.add_argument("--out", help="default bench/out, or bench/out/quick with --quick")
     p.add_argument("--quick", action="store_true", help="small sizes, small families, one run: a smoke test")
     p.add_argument("--threads", type=int, default=2)
     p.add_argument("--runs", type=int, default=3)
@@ -257,10 +258,13 @@ def main():
     a = p.parse_args()
     if a.quick:
         a.runs, a.ref_size, a.family_size, a.mask_size = 1, 256, 128, 128
+    a.out = a.out or ("bench/out/quick" if a.quick else "bench/out")
     b = Bench(a)
     print(HEADER, flush=True)
     rc = b.go()
-    print(f"results: {b.results_path}" + (f"; FAILED silhouettes: {', '.join(b.failed)}" if b.failed else ""))
+    report.write(a.out)
+    print(f"results: {b.results_path}, tables: {a.out}/tables.md, plots: {a.out}/scaling_*.png"
+          + (f"; FAILED silhouettes: {', '.join(b.failed)}" if b.failed else ""))
     return rc
 
 

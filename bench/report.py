@@ -109,13 +109,9 @@ def plots(rows, img, tag):
     return made
 
 
-def main():
-    p = argparse.ArgumentParser()
-    p.add_argument("out", nargs="?", default="bench/out")
-    p.add_argument("--img", help="where the plots go (default: OUT)")
-    p.add_argument("--tag", default="", help="suffix for the plot names")
-    a = p.parse_args()
-    res = json.load(open(os.path.join(a.out, "results.json")))
+def write(out, img=None, tag=""):
+    """OUT/tables.md and the plots; returns the tables' text."""
+    res = json.load(open(os.path.join(out, "results.json")))
     rows, m = res["rows"], res["meta"]
     text = (f"Run {m['started']} – {m.get('finished', '(unfinished)')}; {m['nproc']} CPUs ({m['cpu']}); "
             f"{m['pov']}; threads {m['threads']}; {m['runs']} runs each, alternating; load average at start "
@@ -126,10 +122,18 @@ def main():
             "\n\n### Cost growth\n\n" + growth(rows) +
             "\n\n### All scenes\n\n" + scene_table(rows) +
             ("\n\n### The CSG tax\n\n" + tax_table(res["tax"]) if res["tax"] else "") + "\n")
-    open(os.path.join(a.out, "tables.md"), "w").write(text)
-    made = plots(rows, a.img or a.out, a.tag)
-    print(text)
-    print("plots:", " ".join(made))
+    open(os.path.join(out, "tables.md"), "w").write(text)
+    made = plots(rows, img or out, tag)
+    return text + "\nplots: " + " ".join(made) + "\n"
+
+
+def main():
+    p = argparse.ArgumentParser()
+    p.add_argument("out", nargs="?", default="bench/out")
+    p.add_argument("--img", help="where the plots go (default: OUT)")
+    p.add_argument("--tag", default="", help="suffix for the plot names")
+    a = p.parse_args()
+    print(write(a.out, a.img, a.tag))
 
 
 if __name__ == "__main__":
