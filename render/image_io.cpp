@@ -1,7 +1,10 @@
-// Image output through OpenImageIO, written atomically (temporary file in the
-// destination folder, then rename), so readers never see half a file and a
-// failed write keeps the previous image.
+// Image output, written atomically (temporary file in the destination
+// folder, then rename), so readers never see half a file and a failed write
+// keeps the previous image. PNG goes through libpng (png_file.cpp); every
+// other format through OpenImageIO, loaded only then (oiio_loader.cpp).
 #include <algorithm>
+#include <array>
+#include <cstdint>
 #include <atomic>
 #include <cerrno>
 #include <cmath>
@@ -14,8 +17,8 @@
 #include <fcntl.h>
 #include <unistd.h>
 
-#include <OpenImageIO/imageio.h>
-
+#include "render/oiio_loader.hpp"
+#include "render/png_file.hpp"
 #include "render/render.hpp"
 
 namespace kerf::render {
@@ -24,14 +27,35 @@ namespace {
 
 namespace fs = std::filesystem;
 
-bool is_float_format(std::string ext) {
+std::string lower_extension(const fs::path& p) {
+    std::string ext = p.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return ext;
+}
+
+bool is_float_format(const std::string& ext) {
     return ext == ".exr" || ext == ".tif" || ext == ".tiff" || ext == ".hdr" || ext == ".pfm";
 }
 
 float srgb_encode(float linear) {
     const float c = std::clamp(linear, 0.0f, 1.0f);
     return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+}
+
+// The 8-bit sRGB code of a linear value without a pow per channel: code k
+// starts where the encoded value reaches (k - 0.5) / 255, so counting the
+// thresholds at or below the value gives round(255 * encode(value)).
+std::uint8_t srgb_byte(float linear) {
+    if (!(linear > 0)) return 0;  // NaN too
+    static const auto thresholds = [] {
+        std::array<float, 255> t{};
+        for (int k = 1; k <= 255; ++k) {
+            const double e = (k - 0.5) / 255.0;
+            t[k - 1] = float(e <= 0.04045 ? e / 12.92 : std::pow((e + 0.055) / 1.055, 2.4));
+        }
+        return t;
+    }();
+    return std::uint8_t(std::upper_bound(thresholds.begin(), thresholds.end(), linear) - thresholds.begin());
 }
 
 // 8-bit files cannot hold linear floats or +inf: encode what the pixels mean
@@ -78,7 +102,7 @@ std::string temp_name(const fs::path& target) {
 void check_output_path(const std::string& path) {
     const fs::path target(path);
     const std::string ext = target.extension().string();
-    if (!OIIO::ImageOutput::create(path))
+    if (lower_extension(target) != ".png" && !oiio_module().can_write(path.c_str()))
         throw ImageWriteError("cannot write " + path + ": " +
                               (ext.empty() ? std::string("no extension to choose the image format by")
                                            : "OpenImageIO cannot write '" + ext + "' files"));
@@ -101,23 +125,32 @@ void write_image(const Image& image, const std::string& path) {
         image.pixels.size() != std::size_t(image.width) * image.height * image.channels)
         throw ImageWriteError("cannot write " + path + ": the image is empty or inconsistent");
     const fs::path target(path);
-    const bool as_float = is_float_format(target.extension().string());
-    auto out = OIIO::ImageOutput::create(path);
-    if (!out) throw ImageWriteError("cannot write " + path + ": unknown image format");
-    OIIO::ImageSpec spec(image.width, image.height, image.channels,
-                         as_float ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
-    if (!as_float && image.content == ImageContent::Color) spec.attribute("oiio:ColorSpace", "sRGB");
+    const std::string ext = lower_extension(target);
+    const bool as_float = is_float_format(ext);
+    const bool srgb = !as_float && image.content == ImageContent::Color;
     const std::string tmp = temp_name(target);
     std::vector<float> encoded;
-    if (!as_float) encoded = encode_8bit(image);
-    const float* data = as_float ? image.pixels.data() : encoded.data();
-    bool ok = out->open(tmp, spec) && out->write_image(OIIO::TypeDesc::FLOAT, data);
-    ok = out->close() && ok;
+    std::string message;
+    if (ext == ".png") {
+        std::vector<std::uint8_t> bytes(image.pixels.size());
+        if (image.content == ImageContent::Color) {
+            for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = srgb_byte(image.pixels[i]);
+        } else {
+            encoded = encode_8bit(image);
+            for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = std::uint8_t(encoded[i] * 255.0f + 0.5f);
+        }
+        message = write_png(tmp, bytes.data(), image.width, image.height, image.channels, srgb);
+    } else {
+        if (!as_float) encoded = encode_8bit(image);
+        const OiioModule& oiio = oiio_module();
+        char error[512] = "";
+        if (!oiio.write(tmp.c_str(), as_float ? image.pixels.data() : encoded.data(), image.width, image.height,
+                        image.channels, as_float, srgb, error, sizeof error))
+            message = error[0] ? error : "write failed";
+    }
     std::error_code ec;
-    if (!ok) {
-        std::string message = out->geterror();
+    if (!message.empty()) {
         fs::remove(tmp, ec);
-        if (message.empty()) message = "write failed";
         std::replace(message.begin(), message.end(), '\n', ' ');
         throw ImageWriteError("cannot write " + path + ": " + message);
     }

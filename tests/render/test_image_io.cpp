@@ -1,6 +1,8 @@
 // write_image: formats, encodings, atomic replacement, errors.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -71,6 +73,38 @@ TEST_CASE("PNG is 8-bit sRGB-encoded", "[image_io]") {
     CHECK(std::lround(px[0] * 255) == 188);
     CHECK(px[1] == 0.0f);
     CHECK(px[2] == 1.0f);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("PNG colour bytes are round(255 * sRGB(linear)) over the whole range", "[image_io]") {
+    const fs::path dir = fresh_dir("png_ramp");
+    render::Image im;
+    im.width = 4099;
+    im.height = 1;
+    im.channels = 3;
+    im.content = render::ImageContent::Color;
+    std::vector<double> linear;
+    for (int i = 0; i < 4096 * 3; ++i) linear.push_back(std::pow(i / (4096.0 * 3 - 1), 2.2));  // dense in the darks
+    for (double v : {-1.0, 2.0, 1e30, -0.0, 0.0031308, 1e-9, 0.5, 0.999, 1.0}) linear.push_back(v);
+    for (double v : linear) im.pixels.push_back(float(v));
+    render::write_image(im, (dir / "ramp.png").string());
+    int w, h, c;
+    OIIO::TypeDesc t;
+    const auto px = read_back(dir / "ramp.png", w, h, c, t);
+    REQUIRE(px.size() == linear.size());
+    int off_by_one = 0;
+    for (std::size_t i = 0; i < linear.size(); ++i) {
+        const double x = std::clamp(double(float(linear[i])), 0.0, 1.0);
+        const double e = x <= 0.0031308 ? 12.92 * x : 1.055 * std::pow(x, 1 / 2.4) - 0.055;
+        const double exact = 255 * e;
+        const long got = std::lround(px[i] * 255);
+        if (got == std::lround(exact)) continue;
+        // Only a value within float rounding of a half-way point may round either way.
+        INFO("linear " << linear[i] << " exact " << exact << " got " << got);
+        CHECK(std::abs(exact - std::floor(exact) - 0.5) < 1e-4);
+        ++off_by_one;
+    }
+    CHECK(off_by_one < 3);
     fs::remove_all(dir);
 }
 

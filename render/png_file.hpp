@@ -1,0 +1,16 @@
+// PNG files through libpng directly: the common output format must not pay
+// for loading OpenImageIO and its ~260 shared libraries (half a second of
+// start-up in every `kerf render`).
+#pragma once
+#include <cstdint>
+#include <string>
+
+namespace kerf::render {
+
+// Writes 8-bit pixels (1 grey, 3 RGB or 4 RGBA channels, rows top to
+// bottom). `srgb` marks colour images with PNG's sRGB chunk. Returns an
+// empty string on success, else what went wrong.
+std::string write_png(const std::string& path, const std::uint8_t* pixels, int width, int height, int channels,
+                      bool srgb);
+
+}  // namespace kerf::render
