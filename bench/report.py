@@ -11,7 +11,7 @@ import os
 import subprocess
 
 TARGET_RATIO = {"holes_40": 50.0}  # issue 5: every reference model >= 5x, holes n = 40 >= 50x
-GROWTH = [("shell_100", "shell_10000"), ("holes_n10", "holes_n100")]  # issue 5: each <= 2x apart
+GROWTH = [("shell_100", "shell_10000"), ("spiral_100", "spiral_10000"), ("holes_n10", "holes_n100")]  # issue 5: each <= 2x apart
 
 
 def f(x, fmt="{:.0f}"):
@@ -87,7 +87,8 @@ def tax_table(tax):
 def plots(rows, img, tag):
     os.makedirs(img, exist_ok=True)
     made = []
-    for fam, title in (("shell", "large shell, N segments"), ("holes", "holes, n x n cylinders"),
+    for fam, title in (("shell", "large shell, N segments (same size)"),
+                       ("spiral", "large shell, N segments (spec recurrence continued)"), ("holes", "holes, n x n cylinders"),
                        ("checkered", "checkered cube, k x k per face"), ("spheres", "union of N spheres (no CSG)")):
         fr = sorted((r for r in rows if r["group"] == fam), key=lambda r: r["prims"])
         if len(fr) < 2:
