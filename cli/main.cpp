@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/memory_cap.hpp"
 #include "cli/options.hpp"
 #include "cli/progress.hpp"
 #include "interpreter/interpreter.hpp"
@@ -111,6 +112,7 @@ int main(int argc, char** argv) {
         std::cout << "kerf 0.1\n";
         return kOk;
     }
+    cli::cap_memory_to_physical();
     try {
         return run(options);
     } catch (const SourceError& e) {

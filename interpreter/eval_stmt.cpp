@@ -1,5 +1,6 @@
 // Statements: blocks and their bindings, modules and children(), for/let/
 // echo/assert/if, include and use.
+#include <optional>
 #include <filesystem>
 
 #include "grammar/parser.hpp"
@@ -200,8 +201,14 @@ void Evaluator::bind_block(const BlockInfo& info, Scope& scope, bool top_level) 
         if (def) {
             def->used = true;
             v = def->value;
-        } else if (a->value) {
+        } else if (a->value && !top_level) {
             v = eval(*a->value, scope);
+        } else if (a->value) {
+            try {  // see eval_block: memory is the last limit
+                v = eval(*a->value, scope);
+            } catch (const std::bad_alloc&) {
+                throw SourceError(a->loc, "out of memory evaluating this statement");
+            }
         }
         if (is_dollar(a->name)) {
             dyn_.push_back(DynVar{a->name, std::move(v)});
@@ -215,14 +222,27 @@ void Evaluator::bind_block(const BlockInfo& info, Scope& scope, bool top_level) 
 
 void Evaluator::eval_block(const std::vector<ast::StmtPtr>& stmts, Scope& s, bool top_level) {
     const BlockInfo& info = prepare(stmts);
-    if (!info.needs_scope) {
-        for (const ast::Stmt* c : info.children) eval_stmt(*c, s, top_level);
-        return;
-    }
     DynRestore restore(dyn_);
-    Scope scope(&s);
-    bind_block(info, scope, top_level);
-    for (const ast::Stmt* c : info.children) eval_stmt(*c, scope, top_level);
+    std::optional<Scope> own;
+    if (info.needs_scope) {
+        own.emplace(&s);
+        bind_block(info, *own, top_level);
+    }
+    Scope& scope = own ? *own : s;
+    for (const ast::Stmt* c : info.children) {
+        if (!top_level) {
+            eval_stmt(*c, scope, top_level);
+            continue;
+        }
+        // The element limits bound each list, not a list of many large lists:
+        // memory itself is the last limit (the CLI caps it). By the time this
+        // handler runs the statement's values are freed, so reporting is safe.
+        try {
+            eval_stmt(*c, scope, top_level);
+        } catch (const std::bad_alloc&) {
+            throw SourceError(c->loc, "out of memory evaluating this statement");
+        }
+    }
 }
 
 // ---------------------------------------------------------------- calls

@@ -19,8 +19,10 @@ TEST_CASE("recursion deeper than the stack, with the call limit raised, is an er
     auto dir = test_dir("recursion_stack");
     const auto path = write_file(dir / "deep.sdl", "function f(n) = n <= 0 ? 0 : 1 + f(n - 1);\na = f(999990);\n");
     const Located head = reject(path, dir, "--max-call-depth 1000000");
+    // Whichever nested call or operand reaches the stack guard first is
+    // reported: inside the function's body, not at a fixed column.
     CHECK(head.line == 1);
-    CHECK(head.col == 36);
+    CHECK(head.col >= 17);
     CHECK(head.message == "evaluation nested too deeply (stack exhausted; lower the call depth limit)");
 }
 
@@ -66,19 +68,18 @@ TEST_CASE("a huge list ends at the list size limit (10^7)") {
                  "str: string length limit 10000000 exceeded");
 }
 
-// Known bug (reported, interpreter/): the element limits bound how many
-// values a comprehension makes, not their size, so 10^7 fresh 1000-element
-// lists exhaust memory (exit 3 "out of memory" under this ulimit; the
-// machine's memory without one). Remove [!shouldfail] once it is a located
-// error.
-TEST_CASE("a comprehension of large list literals is bounded in memory", "[!shouldfail]") {
+// The element limits bound each list, not a list of 10^7 fresh 1000-element
+// lists: memory is the last limit (kerf caps its data size at 3/4 of the
+// physical memory; here ulimit makes it 1 GB), and running out of it is a
+// located error at the top-level statement.
+TEST_CASE("a comprehension of large list literals is bounded in memory") {
     auto dir = test_dir("list_amplify");
     std::string literal = "i";
     for (int k = 1; k < 1000; ++k) literal += ", i";
     const auto path = write_file(dir / "amp.sdl", "a = [for (i = [0:9e6]) [" + literal + "]];\n");
     const KerfRun r = run_kerf_bounded("check '" + path + "'", dir, 60, 1'000'000);
     CHECK(r.status == 1);
-    CHECK(parse_head(first_line(r.err)).path == path);
+    CHECK(first_line(r.err) == path + ":1:1: error: out of memory evaluating this statement");
 }
 
 TEST_CASE("an include cycle is a located error naming the cycle") {
