@@ -17,6 +17,9 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include "render/oiio_loader.hpp"
 #include "render/png_file.hpp"
 #include "render/render.hpp"
@@ -134,7 +137,10 @@ void write_image(const Image& image, const std::string& path) {
     if (ext == ".png") {
         std::vector<std::uint8_t> bytes(image.pixels.size());
         if (image.content == ImageContent::Color) {
-            for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = srgb_byte(image.pixels[i]);
+            // Millions of channels at 2048²: as long as a small render's tracing.
+            tbb::parallel_for(tbb::blocked_range<std::size_t>(0, bytes.size(), 1 << 16), [&](const auto& r) {
+                for (std::size_t i = r.begin(); i < r.end(); ++i) bytes[i] = srgb_byte(image.pixels[i]);
+            });
         } else {
             encoded = encode_8bit(image);
             for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = std::uint8_t(encoded[i] * 255.0f + 0.5f);

@@ -25,8 +25,9 @@ void on_error(png_structp png, png_const_charp msg) {
 
 void on_warning(png_structp, png_const_charp) {}
 
-// Returns false with sink.message set. Compression level 3: measured about
-// twice as fast as zlib's default 6 for a few percent larger files.
+// Returns false with sink.message set. zlib level 1 and the "up" filter
+// (instead of level 6 and trying all five filters per row): a 2048² render
+// writes in ~0.1 s instead of ~0.25 s, for files ~20 % larger.
 bool write_rows(std::FILE* f, const std::uint8_t* pixels, int width, int height, int channels, bool srgb,
                 ErrorSink& sink) {
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &sink, on_error, on_warning);
@@ -41,7 +42,8 @@ bool write_rows(std::FILE* f, const std::uint8_t* pixels, int width, int height,
         return false;
     }
     png_init_io(png, f);
-    png_set_compression_level(png, 3);
+    png_set_compression_level(png, 1);
+    png_set_filter(png, 0, PNG_FILTER_UP);
     const int type = channels == 1   ? PNG_COLOR_TYPE_GRAY
                      : channels == 3 ? PNG_COLOR_TYPE_RGB
                                      : PNG_COLOR_TYPE_RGB_ALPHA;
