@@ -81,3 +81,24 @@ TEST_CASE("imported and polyhedron cubes render the depth of the analytic cube",
     const auto shell = depth_of(t.write("d.sdl", scene_with("import(\"cube.stl\", solid = false);")));
     CHECK(mismatch_fraction(shell, reference) > 0.01);
 }
+
+TEST_CASE("examples/imported_mesh.sdl: three drilled gems from one file", "[import][render]") {
+    kerf::EvalOptions opt;
+    opt.echo = [](const std::string&) {};
+    const kerf::EvalResult r = kerf::evaluate_file(KERF_SOURCE_DIR "/examples/imported_mesh.sdl", opt);
+    REQUIRE(r.graph.meshes.size() == 1);  // imported once, used three times
+    CHECK(r.graph.meshes[0].faces.size() == 24);
+    const kerf::csg::Scene scene = kerf::lower_to_csg(r.graph);
+    std::size_t mesh_leaves = 0;
+    for (const auto& leaf : scene.leaves) mesh_leaves += leaf.kind == kerf::csg::PrimKind::Mesh;
+    CHECK(mesh_leaves == 3);
+    kerf::render::RenderOptions ro;
+    ro.width = 64;
+    ro.height = 40;
+    ro.threads = 1;
+    ro.aov = kerf::render::Aov::Depth;
+    const auto depth = kerf::render::render(scene, ro);
+    std::size_t hits = 0;
+    for (float d : depth.pixels) hits += std::isfinite(d);
+    CHECK(hits > depth.pixels.size() / 3);  // the gems and the floor
+}
