@@ -47,18 +47,34 @@ float srgb_encode(float linear) {
 
 // The 8-bit sRGB code of a linear value without a pow per channel: code k
 // starts where the encoded value reaches (k - 0.5) / 255, so counting the
-// thresholds at or below the value gives round(255 * encode(value)).
-std::uint8_t srgb_byte(float linear) {
-    if (!(linear > 0)) return 0;  // NaN too
-    static const auto thresholds = [] {
-        std::array<float, 255> t{};
+// thresholds at or below the value gives round(255 * encode(value)). A table
+// over 2^14 equal bins gives the count at the bin's start; the steepest part
+// of the curve (near 0) crosses at most one more threshold within a bin.
+struct SrgbTable {
+    static constexpr int kBins = 1 << 14;
+    std::array<float, 256> threshold{};     // [k]: where code k + 1 starts; [255] = +inf
+    std::array<std::uint8_t, kBins> first{};  // code at the start of each bin
+    SrgbTable() {
         for (int k = 1; k <= 255; ++k) {
             const double e = (k - 0.5) / 255.0;
-            t[k - 1] = float(e <= 0.04045 ? e / 12.92 : std::pow((e + 0.055) / 1.055, 2.4));
+            threshold[k - 1] = float(e <= 0.04045 ? e / 12.92 : std::pow((e + 0.055) / 1.055, 2.4));
         }
-        return t;
-    }();
-    return std::uint8_t(std::upper_bound(thresholds.begin(), thresholds.end(), linear) - thresholds.begin());
+        threshold[255] = std::numeric_limits<float>::infinity();
+        int code = 0;
+        for (int b = 0; b < kBins; ++b) {
+            while (float(b) / kBins >= threshold[code]) ++code;
+            first[b] = std::uint8_t(code);
+        }
+    }
+};
+
+std::uint8_t srgb_byte(float linear) {
+    static const SrgbTable table;
+    if (!(linear > 0)) return 0;  // NaN too
+    if (linear >= 1) return 255;
+    int code = table.first[int(linear * SrgbTable::kBins)];
+    while (linear >= table.threshold[code]) ++code;
+    return std::uint8_t(code);
 }
 
 // 8-bit files cannot hold linear floats or +inf: encode what the pixels mean
