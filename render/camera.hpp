@@ -19,6 +19,7 @@ public:
 private:
     glm::dvec3 position_, forward_, right_, up_;
     double half_w_, half_h_;
+    double u_scale_, v_scale_;  // image-plane units per pixel
     double width_, height_;
     bool orthographic_;
 };

@@ -74,11 +74,11 @@ inline EvalState make_state(const CsgTracer::Impl* impl, const TraceRay& ray, do
         st.org[i] = float(ray.o[i]);
         st.dir[i] = float(ray.d[i]);
     }
-    const double len = glm::length(ray.d);
+    const double inv_len = 1 / glm::length(ray.d), dist = glm::length(ray.o);
     // Round-off of t also grows with the origin's distance (far cameras).
-    st.eps = (eps_world + (impl->use_float ? 1e-6 : 1e-13) * glm::length(ray.o)) / len;
+    st.eps = (eps_world + (impl->use_float ? 1e-6 : 1e-13) * dist) * inv_len;
     st.box_pad = eps_world;
-    st.t_pad = 1e-5 * (scale + glm::length(ray.o)) / len;
+    st.t_pad = 1e-5 * (scale + dist) * inv_len;
     st.scratch = &scratch;
     return st;
 }
