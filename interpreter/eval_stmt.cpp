@@ -1,7 +1,7 @@
 // Statements: blocks and their bindings, modules and children(), for/let/
 // echo/assert/if, include and use.
-#include <optional>
 #include <filesystem>
+#include <optional>
 
 #include "grammar/parser.hpp"
 #include "interpreter/evaluator.hpp"
@@ -184,6 +184,24 @@ const BlockInfo& Evaluator::prepare(const std::vector<ast::StmtPtr>& stmts) {
     return blocks_.emplace(&stmts, std::move(info)).first->second;
 }
 
+namespace {
+
+// The element limits bound each list, not a list of many large lists: memory
+// itself is the last limit (the CLI caps it). Running out inside a top-level
+// statement is reported at that statement; by the time the handler runs,
+// the statement's values are freed, so reporting is safe.
+template <class F>
+decltype(auto) memory_guarded(bool top_level, const SourceLoc& loc, F&& f) {
+    if (!top_level) return f();
+    try {
+        return f();
+    } catch (const std::bad_alloc&) {
+        throw SourceError(loc, "out of memory evaluating this statement");
+    }
+}
+
+}  // namespace
+
 void Evaluator::bind_block(const BlockInfo& info, Scope& scope, bool top_level) {
     scope.functions = info.functions;
     scope.modules = info.modules;
@@ -201,14 +219,8 @@ void Evaluator::bind_block(const BlockInfo& info, Scope& scope, bool top_level) 
         if (def) {
             def->used = true;
             v = def->value;
-        } else if (a->value && !top_level) {
-            v = eval(*a->value, scope);
         } else if (a->value) {
-            try {  // see eval_block: memory is the last limit
-                v = eval(*a->value, scope);
-            } catch (const std::bad_alloc&) {
-                throw SourceError(a->loc, "out of memory evaluating this statement");
-            }
+            v = memory_guarded(top_level, a->loc, [&] { return eval(*a->value, scope); });
         }
         if (is_dollar(a->name)) {
             dyn_.push_back(DynVar{a->name, std::move(v)});
@@ -229,20 +241,8 @@ void Evaluator::eval_block(const std::vector<ast::StmtPtr>& stmts, Scope& s, boo
         bind_block(info, *own, top_level);
     }
     Scope& scope = own ? *own : s;
-    for (const ast::Stmt* c : info.children) {
-        if (!top_level) {
-            eval_stmt(*c, scope, top_level);
-            continue;
-        }
-        // The element limits bound each list, not a list of many large lists:
-        // memory itself is the last limit (the CLI caps it). By the time this
-        // handler runs the statement's values are freed, so reporting is safe.
-        try {
-            eval_stmt(*c, scope, top_level);
-        } catch (const std::bad_alloc&) {
-            throw SourceError(c->loc, "out of memory evaluating this statement");
-        }
-    }
+    for (const ast::Stmt* c : info.children)
+        memory_guarded(top_level, c->loc, [&] { eval_stmt(*c, scope, top_level); });
 }
 
 // ---------------------------------------------------------------- calls

@@ -30,17 +30,17 @@ std::string_view Tokens::next() {
 
 void Tokens::expect(std::string_view word) {
     std::string_view t = next();
-    if (t != word)
-        fail("expected '" + std::string(word) + "', got " + (t.empty() ? std::string("the end of the file")
-                                                                         : "'" + std::string(t.substr(0, 40)) + "'"));
+    if (t != word) fail("expected '" + std::string(word) + "', got " + quoted(t));
+}
+
+std::string Tokens::quoted(std::string_view token) {
+    return token.empty() ? std::string("the end of the file") : "'" + std::string(token.substr(0, 40)) + "'";
 }
 
 double Tokens::number(const char* what) {
     std::string_view t = next();
     double v = 0;
-    if (!parse_number(t, v))
-        fail(std::string("expected ") + what + ", got " +
-             (t.empty() ? std::string("the end of the file") : "'" + std::string(t.substr(0, 40)) + "'"));
+    if (!parse_number(t, v)) fail(std::string("expected ") + what + ", got " + quoted(t));
     return v;
 }
 

@@ -31,6 +31,8 @@ public:
     void skip_line();
     bool at_end();
     [[noreturn]] void fail(const std::string& message) const;
+    // A token as error messages quote it: "'facet'" or "the end of the file".
+    static std::string quoted(std::string_view token);
 
 private:
     std::string_view s_;

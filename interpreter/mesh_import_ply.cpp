@@ -84,26 +84,30 @@ private:
     Tokens tok_;
 };
 
-}  // namespace
+// The header: format, elements with their properties, where the data starts.
+struct Header {
+    Format fmt = Format::Ascii;
+    std::vector<Element> elements;
+    std::size_t body_start = 0;
+};
 
-scene::Mesh read_ply(std::string_view bytes, std::uint64_t max_faces) {
+Header read_header(std::string_view bytes) {
     std::size_t header_end = bytes.find("end_header");
     if (bytes.substr(0, 3) != "ply" || header_end == std::string_view::npos)
         throw MeshFormatError("not a PLY file (no 'ply' ... 'end_header' header)");
     Tokens hdr(bytes.substr(0, header_end));
     hdr.expect("ply");
-    Format fmt = Format::Ascii;
-    std::vector<Element> elements;
+    Header h;
     bool have_format = false;
     for (std::string_view key = hdr.next(); !key.empty(); key = hdr.next()) {
         if (key == "comment" || key == "obj_info") {
             hdr.skip_line();
         } else if (key == "format") {
             std::string_view f = hdr.next();
-            if (f == "ascii") fmt = Format::Ascii;
-            else if (f == "binary_little_endian") fmt = Format::Little;
-            else if (f == "binary_big_endian") fmt = Format::Big;
-            else hdr.fail("unknown PLY format '" + std::string(f.substr(0, 40)) + "'");
+            if (f == "ascii") h.fmt = Format::Ascii;
+            else if (f == "binary_little_endian") h.fmt = Format::Little;
+            else if (f == "binary_big_endian") h.fmt = Format::Big;
+            else hdr.fail("unknown PLY format " + Tokens::quoted(f));
             hdr.skip_line();
             have_format = true;
         } else if (key == "element") {
@@ -112,9 +116,9 @@ scene::Mesh read_ply(std::string_view bytes, std::uint64_t max_faces) {
             double n = hdr.number("an element count");
             if (n < 0 || n != static_cast<double>(static_cast<std::uint64_t>(n))) hdr.fail("bad element count");
             e.count = static_cast<std::uint64_t>(n);
-            elements.push_back(std::move(e));
+            h.elements.push_back(std::move(e));
         } else if (key == "property") {
-            if (elements.empty()) hdr.fail("a property before any element");
+            if (h.elements.empty()) hdr.fail("a property before any element");
             Property p;
             std::string_view t = hdr.next();
             if (t == "list") {
@@ -124,20 +128,27 @@ scene::Mesh read_ply(std::string_view bytes, std::uint64_t max_faces) {
                 t = hdr.next();
             }
             if (!scalar_type(t, p.size, p.is_float, p.is_signed))
-                hdr.fail("unknown property type '" + std::string(t.substr(0, 40)) + "'");
+                hdr.fail("unknown property type " + Tokens::quoted(t));
             p.name = hdr.next();
-            elements.back().props.push_back(std::move(p));
+            h.elements.back().props.push_back(std::move(p));
         } else {
-            hdr.fail("unexpected '" + std::string(key.substr(0, 40)) + "' in the PLY header");
+            hdr.fail("unexpected " + Tokens::quoted(key) + " in the PLY header");
         }
     }
     if (!have_format) throw MeshFormatError("the PLY header has no 'format' line");
-    std::size_t body_start = bytes.find('\n', header_end);
-    body_start = body_start == std::string_view::npos ? bytes.size() : body_start + 1;
+    const std::size_t eol = bytes.find('\n', header_end);
+    h.body_start = eol == std::string_view::npos ? bytes.size() : eol + 1;
+    return h;
+}
 
-    Body body(bytes, body_start, fmt);
+}  // namespace
+
+scene::Mesh read_ply(std::string_view bytes, std::uint64_t max_faces) {
+    const Header h = read_header(bytes);
+    const Format fmt = h.fmt;
+    Body body(bytes, h.body_start, fmt);
     scene::Mesh m;
-    for (const Element& e : elements) {
+    for (const Element& e : h.elements) {
         const bool is_vertex = e.name == "vertex", is_face = e.name == "face";
         check_count(e.count, body.left(), fmt == Format::Ascii ? 2 : 1, e.name + " elements",
                     is_face ? max_faces : ~std::uint64_t(0));

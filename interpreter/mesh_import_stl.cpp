@@ -55,7 +55,7 @@ scene::Mesh read_ascii(std::string_view bytes, std::uint64_t max_faces) {
             in.skip_line();
             continue;
         }
-        if (t != "facet") in.fail("expected 'facet' or 'endsolid', got " + (t.empty() ? std::string("the end of the file") : "'" + std::string(t.substr(0, 40)) + "'"));
+        if (t != "facet") in.fail("expected 'facet' or 'endsolid', got " + Tokens::quoted(t));
         if (m.faces.size() >= max_faces)
             in.fail("more than " + std::to_string(max_faces) + " triangles (--max-list)");
         in.expect("normal");

@@ -40,11 +40,6 @@ bool is_float_format(const std::string& ext) {
     return ext == ".exr" || ext == ".tif" || ext == ".tiff" || ext == ".hdr" || ext == ".pfm";
 }
 
-float srgb_encode(float linear) {
-    const float c = std::clamp(linear, 0.0f, 1.0f);
-    return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
-}
-
 // The 8-bit sRGB code of a linear value without a pow per channel: code k
 // starts where the encoded value reaches (k - 0.5) / 255, so counting the
 // thresholds at or below the value gives round(255 * encode(value)). A table
@@ -77,16 +72,21 @@ std::uint8_t srgb_byte(float linear) {
     return std::uint8_t(code);
 }
 
+std::uint8_t unit_byte(float v) { return std::uint8_t(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f); }
+
 // 8-bit files cannot hold linear floats or +inf: encode what the pixels mean
 // (spec §7: depth normalised to the nearest and farthest hit, misses 0).
-std::vector<float> encode_8bit(const Image& im) {
-    std::vector<float> out(im.pixels.size());
+std::vector<std::uint8_t> encode_8bit(const Image& im) {
+    std::vector<std::uint8_t> out(im.pixels.size());
     switch (im.content) {
         case ImageContent::Color:
-            for (std::size_t i = 0; i < out.size(); ++i) out[i] = srgb_encode(im.pixels[i]);
+            // Millions of channels at 2048²: as long as a small render's tracing.
+            tbb::parallel_for(tbb::blocked_range<std::size_t>(0, out.size(), 1 << 16), [&](const auto& r) {
+                for (std::size_t i = r.begin(); i < r.end(); ++i) out[i] = srgb_byte(im.pixels[i]);
+            });
             break;
         case ImageContent::Normal:
-            for (std::size_t i = 0; i < out.size(); ++i) out[i] = std::clamp(0.5f * im.pixels[i] + 0.5f, 0.0f, 1.0f);
+            for (std::size_t i = 0; i < out.size(); ++i) out[i] = unit_byte(0.5f * im.pixels[i] + 0.5f);
             break;
         case ImageContent::Depth: {
             float near = std::numeric_limits<float>::infinity(), far = -near;
@@ -95,13 +95,13 @@ std::vector<float> encode_8bit(const Image& im) {
             const float range = far > near ? far - near : 1.0f;
             // Nearest hit white, farthest still visibly grey, misses black.
             for (std::size_t i = 0; i < out.size(); ++i)
-                out[i] = std::isfinite(im.pixels[i]) ? 1.0f - 0.8f * (im.pixels[i] - near) / range : 0.0f;
+                out[i] = std::isfinite(im.pixels[i]) ? unit_byte(1.0f - 0.8f * (im.pixels[i] - near) / range) : 0;
             break;
         }
         case ImageContent::Hits: {
             float most = 0;
             for (float v : im.pixels) most = std::max(most, v);
-            for (std::size_t i = 0; i < out.size(); ++i) out[i] = most > 0 ? im.pixels[i] / most : 0.0f;
+            for (std::size_t i = 0; i < out.size(); ++i) out[i] = most > 0 ? unit_byte(im.pixels[i] / most) : 0;
             break;
         }
     }
@@ -148,26 +148,17 @@ void write_image(const Image& image, const std::string& path) {
     const bool as_float = is_float_format(ext);
     const bool srgb = !as_float && image.content == ImageContent::Color;
     const std::string tmp = temp_name(target);
-    std::vector<float> encoded;
+    std::vector<std::uint8_t> bytes;
+    if (!as_float) bytes = encode_8bit(image);
     std::string message;
     if (ext == ".png") {
-        std::vector<std::uint8_t> bytes(image.pixels.size());
-        if (image.content == ImageContent::Color) {
-            // Millions of channels at 2048²: as long as a small render's tracing.
-            tbb::parallel_for(tbb::blocked_range<std::size_t>(0, bytes.size(), 1 << 16), [&](const auto& r) {
-                for (std::size_t i = r.begin(); i < r.end(); ++i) bytes[i] = srgb_byte(image.pixels[i]);
-            });
-        } else {
-            encoded = encode_8bit(image);
-            for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = std::uint8_t(encoded[i] * 255.0f + 0.5f);
-        }
         message = write_png(tmp, bytes.data(), image.width, image.height, image.channels, srgb);
     } else {
-        if (!as_float) encoded = encode_8bit(image);
         const OiioModule& oiio = oiio_module();
         char error[512] = "";
-        if (!oiio.write(tmp.c_str(), as_float ? image.pixels.data() : encoded.data(), image.width, image.height,
-                        image.channels, as_float, srgb, error, sizeof error))
+        const void* data = as_float ? static_cast<const void*>(image.pixels.data()) : bytes.data();
+        if (!oiio.write(tmp.c_str(), data, as_float, image.width, image.height, image.channels, srgb, error,
+                        sizeof error))
             message = error[0] ? error : "write failed";
     }
     std::error_code ec;

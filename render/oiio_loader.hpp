@@ -7,7 +7,7 @@ namespace kerf::render {
 
 struct OiioModule {
     int (*can_write)(const char* path) = nullptr;
-    int (*write)(const char* path, const float* pixels, int width, int height, int channels, int as_float, int srgb,
+    int (*write)(const char* path, const void* pixels, int as_float, int width, int height, int channels, int srgb,
                  char* error, std::size_t error_size) = nullptr;
 };
 

@@ -20,18 +20,19 @@ extern "C" {
 // 1 when OpenImageIO has a writer for this file name's extension.
 int kerf_oiio_can_write(const char* path) { return OIIO::ImageOutput::create(path) ? 1 : 0; }
 
-// Writes float pixels, stored as float (`as_float`) or 8-bit (values already
-// encoded to [0, 1]). Returns 1, or 0 with `error` filled.
-int kerf_oiio_write(const char* path, const float* pixels, int width, int height, int channels, int as_float,
+// Writes `pixels`: floats stored as float (`as_float`), else bytes already
+// encoded for an 8-bit file. Returns 1, or 0 with `error` filled.
+int kerf_oiio_write(const char* path, const void* pixels, int as_float, int width, int height, int channels,
                     int srgb, char* error, std::size_t error_size) {
     auto out = OIIO::ImageOutput::create(path);
     if (!out) {
         set_error(error, error_size, "unknown image format");
         return 0;
     }
-    OIIO::ImageSpec spec(width, height, channels, as_float ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+    const OIIO::TypeDesc type = as_float ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8;
+    OIIO::ImageSpec spec(width, height, channels, type);
     if (srgb) spec.attribute("oiio:ColorSpace", "sRGB");
-    bool ok = out->open(path, spec) && out->write_image(OIIO::TypeDesc::FLOAT, pixels);
+    bool ok = out->open(path, spec) && out->write_image(type, pixels);
     ok = out->close() && ok;
     if (!ok) {
         std::string message = out->geterror();
