@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-#include "../interpreter/temp_tree.hpp"
+#include "run_kerf.hpp"
 #include "interpreter/interpreter.hpp"
 #include "interpreter/lower.hpp"
 #include "render/render.hpp"
@@ -65,12 +65,12 @@ double mismatch_fraction(const kerf::render::Image& a, const kerf::render::Image
 }  // namespace
 
 TEST_CASE("imported and polyhedron cubes render the depth of the analytic cube", "[import][render]") {
-    kerf::test::TempTree t;
-    t.write("cube.stl", kStlCube);
-    const auto reference = depth_of(t.write("a.sdl", scene_with("cube(1);")));
-    const auto imported = depth_of(t.write("b.sdl", scene_with("import(\"cube.stl\");")));
-    const auto poly = depth_of(t.write(
-        "c.sdl", scene_with("polyhedron(points = [[0,0,0],[1,0,0],[1,1,0],[0,1,0],[0,0,1],[1,0,1],[1,1,1],[0,1,1]],\n"
+    const auto dir = test_dir("import_render");
+    write_file(dir / "cube.stl", kStlCube);
+    const auto reference = depth_of(write_file(dir / "a.sdl", scene_with("cube(1);")));
+    const auto imported = depth_of(write_file(dir / "b.sdl", scene_with("import(\"cube.stl\");")));
+    const auto poly = depth_of(write_file(
+        dir / "c.sdl", scene_with("polyhedron(points = [[0,0,0],[1,0,0],[1,1,0],[0,1,0],[0,0,1],[1,0,1],[1,1,1],[0,1,1]],\n"
                             "  faces = [[0,1,2,3],[4,5,1,0],[7,6,5,4],[5,6,2,1],[6,7,3,2],[7,4,0,3]]);")));
     // Silhouette and edge pixels may go either way between a mesh and the
     // analytic box; anything beyond that band is a wrong solid.
@@ -78,7 +78,7 @@ TEST_CASE("imported and polyhedron cubes render the depth of the analytic cube",
     CHECK(mismatch_fraction(poly, reference) < 0.002);
     // The test can fail: an inside-out mesh (solid = false would be a shell;
     // here the faces reversed) gives a different picture.
-    const auto shell = depth_of(t.write("d.sdl", scene_with("import(\"cube.stl\", solid = false);")));
+    const auto shell = depth_of(write_file(dir / "d.sdl", scene_with("import(\"cube.stl\", solid = false);")));
     CHECK(mismatch_fraction(shell, reference) > 0.01);
 }
 
