@@ -12,10 +12,10 @@ namespace kerf::render {
 namespace {
 
 // The unit's first entry in (tnear, best). True if it is the new best.
-bool try_unit_entry(TopContext& ctx, std::uint32_t unit_index, std::uint32_t node, bool boxed) {
+bool try_unit_entry(TopContext& ctx, std::uint32_t unit_index, std::uint32_t node) {
     TraceScratch& s = *ctx.state->scratch;
     const std::uint32_t base = s.stack.size();
-    const std::uint32_t n = ctx.state->eval(node, ctx.tnear, ctx.best, Need::First, boxed);
+    const std::uint32_t n = ctx.state->eval(node, ctx.tnear, ctx.best, Need::First);
     bool better = false;
     for (std::uint32_t i = 0; i < n; ++i) {
         const Span& sp = *s.stack.at(base + i);
@@ -37,7 +37,7 @@ bool try_unit_entry(TopContext& ctx, std::uint32_t unit_index, std::uint32_t nod
 void top_intersect_callback(const RTCIntersectFunctionNArguments* args) {
     if (!args->valid[0]) return;
     auto* ctx = reinterpret_cast<TopContext*>(args->context);
-    if (try_unit_entry(*ctx, args->primID, ctx->accel->items[args->primID], true)) {
+    if (try_unit_entry(*ctx, args->primID, ctx->accel->items[args->primID])) {
         RTCRayHit* rh = reinterpret_cast<RTCRayHit*>(args->rayhit);
         rh->ray.tfar = std::min(rh->ray.tfar, round_up(ctx->best) + float(ctx->state->t_pad));
         rh->hit.geomID = args->geomID;
@@ -52,8 +52,11 @@ bool CsgTracer::intersect(const TraceRay& ray, TraceHit& hit, TraceScratch& scra
     // traversal then starts with their entry as tfar.
     const std::uint32_t always_offset = std::uint32_t(impl_->top.items.size());
     for (std::size_t i = 0; i < impl_->top.always.size(); ++i)
-        try_unit_entry(ctx, always_offset + std::uint32_t(i), impl_->top.always[i], false);
-    if (impl_->top.scene) {
+        try_unit_entry(ctx, always_offset + std::uint32_t(i), impl_->top.always[i]);
+    if (!impl_->top.scene) {
+        for (std::size_t i = 0; i < impl_->top.items.size(); ++i)
+            try_unit_entry(ctx, std::uint32_t(i), impl_->top.items[i]);
+    } else {
         RTCRayHit rh = make_rayhit(st, ray.tnear, ctx.best);
         rtcIntersect1(impl_->top.scene, &ctx.rtc, &rh);
     }

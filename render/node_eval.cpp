@@ -31,7 +31,7 @@ void collect_callback(const RTCIntersectFunctionNArguments* args) {
     if (!args->valid[0]) return;
     auto* ctx = reinterpret_cast<CollectContext*>(args->context);
     // Never accepts: every crossed child is gathered, tfar stays.
-    ctx->state->eval(ctx->accel->items[args->primID], ctx->a, ctx->b, Need::All, true);
+    ctx->state->eval(ctx->accel->items[args->primID], ctx->a, ctx->b, Need::All);
 }
 
 namespace {
@@ -189,9 +189,12 @@ std::uint32_t eval_difference(EvalState& es, std::uint32_t node, const Node& n, 
 
 }  // namespace
 
-std::uint32_t EvalState::eval(std::uint32_t node, double a, double b, Need need, bool boxed) {
+std::uint32_t EvalState::eval(std::uint32_t node, double a, double b, Need need) {
     const Node& n = impl->scene.nodes[node];
-    if (!boxed && !box_hit(*this, n.bounds, a, b)) return 0;
+    // Also under Embree's callbacks: a BVH leaf may hold several items and a
+    // root that is a leaf is entered without any box test, so a one-unit
+    // scene would otherwise test its primitives for every ray of the image.
+    if (!box_hit(*this, n.bounds, a, b)) return 0;
     switch (n.op) {
         case Op::Leaf: return eval_leaf(*this, n, a, b);
         case Op::Union: return eval_union(*this, node, n, a, b);
@@ -203,7 +206,10 @@ std::uint32_t EvalState::eval(std::uint32_t node, double a, double b, Need need,
 
 void EvalState::collect(const Accel& accel, double a, double b) {
     for (std::uint32_t node : accel.always) eval(node, a, b, Need::All);
-    if (!accel.scene) return;
+    if (!accel.scene) {
+        for (std::uint32_t node : accel.items) eval(node, a, b, Need::All);
+        return;
+    }
     CollectContext ctx;
     rtcInitIntersectContext(&ctx.rtc);
     ctx.state = this;

@@ -11,10 +11,10 @@ namespace kerf::render {
 
 namespace {
 
-bool unit_blocks(TopContext& ctx, std::uint32_t node, bool boxed) {
+bool unit_blocks(TopContext& ctx, std::uint32_t node) {
     TraceScratch& s = *ctx.state->scratch;
     const std::uint32_t base = s.stack.size();
-    const std::uint32_t n = ctx.state->eval(node, ctx.tnear, ctx.best, Need::Any, boxed);
+    const std::uint32_t n = ctx.state->eval(node, ctx.tnear, ctx.best, Need::Any);
     bool blocks = false;
     for (std::uint32_t i = 0; i < n && !blocks; ++i) {
         const Span& sp = *s.stack.at(base + i);
@@ -29,7 +29,7 @@ bool unit_blocks(TopContext& ctx, std::uint32_t node, bool boxed) {
 void top_occluded_callback(const RTCOccludedFunctionNArguments* args) {
     if (!args->valid[0]) return;
     auto* ctx = reinterpret_cast<TopContext*>(args->context);
-    if (unit_blocks(*ctx, ctx->accel->items[args->primID], true)) {
+    if (unit_blocks(*ctx, ctx->accel->items[args->primID])) {
         ctx->found = true;
         reinterpret_cast<RTCRay*>(args->ray)->tfar = -std::numeric_limits<float>::infinity();
     }
@@ -39,8 +39,12 @@ bool CsgTracer::occluded(const TraceRay& ray, TraceScratch& scratch) const {
     EvalState st = make_state(impl_.get(), ray, eps_, scale_, scratch);
     TopContext ctx(st, ray);
     for (std::uint32_t node : impl_->top.always)
-        if (unit_blocks(ctx, node, false)) return true;
-    if (!impl_->top.scene) return false;
+        if (unit_blocks(ctx, node)) return true;
+    if (!impl_->top.scene) {
+        for (std::uint32_t node : impl_->top.items)
+            if (unit_blocks(ctx, node)) return true;
+        return false;
+    }
     RTCRay r = make_rayhit(st, ray.tnear, ray.tfar).ray;
     rtcOccluded1(impl_->top.scene, &ctx.rtc, &r);
     return ctx.found;

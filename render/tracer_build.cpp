@@ -87,7 +87,9 @@ void CsgTracer::Impl::build_accel(Accel& accel, const std::vector<std::uint32_t>
         accel.items.push_back(node);
         accel.boxes.push_back(r);
     }
-    if (accel.items.empty()) return;
+    // A few units are cheaper to box-test in a loop than through Embree, whose
+    // per-query set-up costs about as much as tracing a background pixel.
+    if (accel.items.size() <= kDirectChildren) return;
     accel.scene = rtcNewScene(device);
     rtcSetSceneFlags(accel.scene, RTC_SCENE_FLAG_ROBUST);
     rtcSetSceneBuildQuality(accel.scene, RTC_BUILD_QUALITY_HIGH);

@@ -18,7 +18,7 @@ namespace kerf::render {
 
 // A BVH over some nodes (the root's units, or a large node's children).
 struct Accel {
-    RTCScene scene = nullptr;
+    RTCScene scene = nullptr;          // null: few items, tested one by one
     std::vector<std::uint32_t> items;  // node per Embree primID
     std::vector<RTCBounds> boxes;
     std::vector<std::uint32_t> always;  // unbounded nodes (half-spaces): tested for every ray

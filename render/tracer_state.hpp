@@ -38,9 +38,8 @@ struct EvalState {
     TraceScratch* scratch;
 
     // node_eval.cpp: pushes the node's spans overlapping [a, b] and returns
-    // their count. `boxed`: the caller (an Embree BVH) has already found the
-    // node's box on the ray.
-    std::uint32_t eval(std::uint32_t node, double a, double b, Need need, bool boxed = false);
+    // their count. Starts with the node's own box test.
+    std::uint32_t eval(std::uint32_t node, double a, double b, Need need);
     // node_eval.cpp: pushes the spans of every node of `accel` the ray
     // crosses on [a, b] (unsorted, possibly overlapping).
     void collect(const Accel& accel, double a, double b);
