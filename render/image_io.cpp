@@ -8,6 +8,7 @@
 #include <atomic>
 #include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <limits>
@@ -60,16 +61,26 @@ struct SrgbTable {
             while (float(b) / kBins >= threshold[code]) ++code;
             first[b] = std::uint8_t(code);
         }
+        // srgb_byte steps at most one threshold past a bin's first code: true
+        // when no bin holds two thresholds (the narrowest gap, near 0, is
+        // 1/(255·12.92) ≈ 3.0e-4 > 1/2^14 ≈ 6.1e-5).
+        for (int k = 0; k + 1 < 255; ++k)
+            if (int(threshold[k] * kBins) == int(threshold[k + 1] * kBins)) std::abort();
     }
 };
 
-std::uint8_t srgb_byte(float linear) {
+const SrgbTable& srgb_table() {
     static const SrgbTable table;
+    return table;
+}
+
+// The table is passed in, so the loop over millions of channels carries no
+// static-initialisation guard; one threshold step suffices (see SrgbTable).
+inline std::uint8_t srgb_byte(const SrgbTable& table, float linear) {
     if (!(linear > 0)) return 0;  // NaN too
     if (linear >= 1) return 255;
-    int code = table.first[int(linear * SrgbTable::kBins)];
-    while (linear >= table.threshold[code]) ++code;
-    return std::uint8_t(code);
+    const int code = table.first[int(linear * SrgbTable::kBins)];
+    return std::uint8_t(code + (linear >= table.threshold[code] ? 1 : 0));
 }
 
 std::uint8_t unit_byte(float v) { return std::uint8_t(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f); }
@@ -82,7 +93,10 @@ std::vector<std::uint8_t> encode_8bit(const Image& im) {
         case ImageContent::Color:
             // Millions of channels at 2048²: as long as a small render's tracing.
             tbb::parallel_for(tbb::blocked_range<std::size_t>(0, out.size(), 1 << 16), [&](const auto& r) {
-                for (std::size_t i = r.begin(); i < r.end(); ++i) out[i] = srgb_byte(im.pixels[i]);
+                const SrgbTable& table = srgb_table();
+                const float* in = im.pixels.data();
+                std::uint8_t* bytes = out.data();
+                for (std::size_t i = r.begin(); i < r.end(); ++i) bytes[i] = srgb_byte(table, in[i]);
             });
             break;
         case ImageContent::Normal:
