@@ -4,6 +4,7 @@
 // (|x|² + 1 - r²)² - 4ρ² only locates the turning points that separate the
 // roots; signs and roots come from F = (ρ - 1)² + z² - r², which has the same
 // sign and roots but no cancellation of O(1) terms for thin tori (r << R).
+#include <algorithm>
 #include <cmath>
 
 #include "render/prim_kinds.hpp"
@@ -61,6 +62,21 @@ int intersect_torus(const double* p, const Vec3<T>& o, const Vec3<T>& d, Span<T>
         return 0;
     }
     if (!(lo < hi)) return 0;
+    // Ring test: the tube lies in (1 - rr)² <= ρ² <= (1 + rr)². ρ²(λ) is a
+    // convex parabola, so its largest value on [lo, hi] is at an end and its
+    // smallest at the vertex or an end. A chord that stays in the hole (a ray
+    // looking down through the ring) or outside the ring's rim misses, and
+    // costs no quartic. Cut only with a margin, so grazing rays are solved.
+    const T alpha = u.x * u.x + u.y * u.y, beta = q.x * u.x + q.y * u.y, gamma = q.x * q.x + q.y * q.y;
+    {
+        const T r_lo = alpha * lo * lo + T(2) * beta * lo + gamma;
+        const T r_hi = alpha * hi * hi + T(2) * beta * hi + gamma;
+        const T slack = T(64) * eps;
+        if (rr < T(1) && std::max(r_lo, r_hi) < (T(1) - rr) * (T(1) - rr) - slack) return 0;
+        const T vertex = alpha > T(0) ? std::clamp(-beta / alpha, lo, hi) : lo;
+        const T r_min = std::min({r_lo, r_hi, alpha * vertex * vertex + T(2) * beta * vertex + gamma});
+        if (r_min > (T(1) + rr) * (T(1) + rr) + slack) return 0;
+    }
     // Widen by a few ulps so the ends are surely outside the torus (they are
     // on its bounding surfaces): the sign walk below assumes they are.
     const T margin = T(8) * eps * (T(1) + half);
@@ -70,7 +86,6 @@ int intersect_torus(const double* p, const Vec3<T>& o, const Vec3<T>& d, Span<T>
     const TorusLine<T> line{q, u, rr * rr};
     const T uu = glm::dot(u, u), b = glm::dot(q, u);
     const T k = q2 + T(1) - rr * rr;
-    const T alpha = u.x * u.x + u.y * u.y, beta = q.x * u.x + q.y * u.y, gamma = q.x * q.x + q.y * q.y;
     const T c[5] = {k * k - T(4) * gamma, T(4) * b * k - T(8) * beta,
                     T(4) * b * b + T(2) * uu * k - T(4) * alpha, T(4) * uu * b, uu * uu};
     T cuts[5];
