@@ -138,6 +138,15 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
         }
     }
     impl_->build_accel(impl_->top, units, true, scale_);
+    if (impl_->top.always.empty()) {
+        // Padded far beyond the eval box tests' eps_ slack, so the early out
+        // never culls what they would keep.
+        csg::Aabb reach;
+        for (std::uint32_t unit : impl_->top.items) reach.extend(scene.nodes[unit].bounds);
+        const double pad = 1e-6 * scale_ + 4 * eps_;
+        if (!reach.empty()) reach = {reach.lo - glm::dvec3(pad), reach.hi + glm::dvec3(pad)};
+        impl_->reach = reach;
+    }
 }
 
 CsgTracer::~CsgTracer() = default;

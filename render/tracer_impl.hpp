@@ -29,6 +29,9 @@ struct CsgTracer::Impl {
     bool use_float;
     RTCDevice device = nullptr;
     Accel top;
+    // The padded box around every bounded unit; everything() when a unit is
+    // unbounded. A ray whose line misses it hits nothing (first_hit.cpp).
+    csg::Aabb reach = csg::Aabb::everything();
     std::vector<std::int32_t> accel_of_node;  // -1: children evaluated directly
     std::vector<std::unique_ptr<Accel>> node_accels;
     std::vector<RTCScene> mesh_scenes;        // per csg::Mesh used by a leaf (object space)
