@@ -137,6 +137,37 @@ std::uint32_t eval_intersection(EvalState& es, const Node& n, double a, double b
     return count;
 }
 
+// The fast path of First/Any for a difference with few subtrahends: a point
+// of minuend span i (its entry; for Any, the middle of its part inside the
+// window) that is farther than twice the degenerate rule's reach from every
+// subtrahend is in the difference, and gathering spans would give the same
+// answer. Returns 1 with the piece written at `base`, 2 if this span starts
+// past the window (so do all later ones), 0 if not proven (gather spans).
+std::uint32_t first_piece_if_clear(EvalState& es, const Node& n, std::uint32_t base, std::uint32_t i, double a,
+                                   double b, Need need) {
+    SpanStack& st = es.scratch->stack;
+    Span piece = *st.at(base + i);
+    double probe;
+    if (need == Need::First) {
+        if (!(piece.t0 > a)) return 0;  // starts inside the minuend: the entry is later
+        if (piece.t0 > b) return 2;
+        probe = piece.t0;
+    } else {
+        const double p0 = std::max(a, piece.t0), p1 = std::min(b, piece.t1);
+        if (!(p1 - p0 > 2 * es.eps)) return 0;
+        probe = 0.5 * (p0 + p1);
+        piece.t0 = probe - es.eps;  // a sliver longer than eps answers Any
+        piece.t1 = probe + es.eps;
+    }
+    const glm::dvec3 x = es.o + probe * es.d;
+    const double margin = 2 * es.eps * es.len;
+    for (std::uint32_t k = 1; k < n.count; ++k)
+        if (!es.clear_of(es.impl->scene.children[n.first + k], x, margin)) return 0;
+    *st.at(base) = piece;
+    st.resize(base + 1);
+    return 1;
+}
+
 std::uint32_t eval_difference(EvalState& es, std::uint32_t node, const Node& n, double a, double b, Need need) {
     es.scratch->counters.difference_ops++;
     SpanStack& st = es.scratch->stack;
@@ -156,8 +187,14 @@ std::uint32_t eval_difference(EvalState& es, std::uint32_t node, const Node& n, 
     // First/Any: one minuend span at a time, stopping at the first piece that
     // answers the question; only that piece is returned.
     const std::int32_t ai = es.impl->accel_of_node[node];
+    const bool few = ai < 0 || !es.impl->node_accels[std::size_t(ai)]->scene;
     for (std::uint32_t i = 0; i < count; ++i) {
-        if (need == Need::First && ai >= 0 && st.at(base + i)->t0 > a) {
+        if (few) {
+            const std::uint32_t found = first_piece_if_clear(es, n, base, i, a, b, need);
+            if (found == 1) return 1;
+            if (found == 2) break;
+        }
+        if (need == Need::First && !few && st.at(base + i)->t0 > a) {
             // Many subtrahends: walk from the minuend's entry with point
             // queries ("which subtrahends cover c?") instead of gathering all
             // of them along the chord, so the cost does not grow with the

@@ -123,6 +123,11 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
     rtcSetDeviceErrorFunction(impl_->device, embree_error, nullptr);
 
     impl_->accel_of_node.assign(scene.nodes.size(), -1);
+    for (const csg::Leaf& leaf : scene.leaves) {
+        const glm::dmat3& m = leaf.object_from_world.linear;
+        impl_->leaf_stretch.push_back(
+            std::sqrt(glm::dot(m[0], m[0]) + glm::dot(m[1], m[1]) + glm::dot(m[2], m[2])));
+    }
     if (scene.root == csg::kNone) return;
     impl_->build_meshes();
     const std::vector<std::uint32_t> units = root_units(scene);

@@ -34,6 +34,7 @@ struct CsgTracer::Impl {
     csg::Aabb reach = csg::Aabb::everything();
     std::vector<std::int32_t> accel_of_node;  // -1: children evaluated directly
     std::vector<std::unique_ptr<Accel>> node_accels;
+    std::vector<double> leaf_stretch;         // per leaf: Frobenius norm of object_from_world.linear
     std::vector<RTCScene> mesh_scenes;        // per csg::Mesh used by a leaf (object space)
     std::vector<csg::Aabb> mesh_boxes;        // object-space bounds of each mesh
 

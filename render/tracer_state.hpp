@@ -32,6 +32,7 @@ struct EvalState {
     const CsgTracer::Impl* impl;
     glm::dvec3 o, d, invd;
     float org[3], dir[3];
+    double len;       // |d|: world length per unit of t
     double eps;       // t-length of the degenerate rule
     double box_pad;   // world-length slack of box tests
     double t_pad;     // t slack of float Embree windows
@@ -43,6 +44,9 @@ struct EvalState {
     // node_eval.cpp: pushes the spans of every node of `accel` the ray
     // crosses on [a, b] (unsorted, possibly overlapping).
     void collect(const Accel& accel, double a, double b);
+    // clearance.cpp: true if x is provably outside the node and farther than
+    // `margin` (world) from it; false if inside, near, or not known.
+    bool clear_of(std::uint32_t node, const glm::dvec3& x, double margin) const;
     // mesh_leaves.cpp
     std::uint32_t eval_mesh(std::uint32_t leaf_id, double a, double b);
     // difference_first_entry.cpp
@@ -73,7 +77,8 @@ inline EvalState make_state(const CsgTracer::Impl* impl, const TraceRay& ray, do
         st.org[i] = float(ray.o[i]);
         st.dir[i] = float(ray.d[i]);
     }
-    const double inv_len = 1 / glm::length(ray.d), dist = glm::length(ray.o);
+    st.len = glm::length(ray.d);
+    const double inv_len = 1 / st.len, dist = glm::length(ray.o);
     // Round-off of t also grows with the origin's distance (far cameras).
     st.eps = (eps_world + (impl->use_float ? 1e-6 : 1e-13) * dist) * inv_len;
     st.box_pad = eps_world;
