@@ -40,20 +40,45 @@ bool is_first_entry(const csg::Scene& s, const glm::dvec3& o, const glm::dvec3& 
     return !csg_contains(s, o + (t - h) * d) && csg_contains(s, o + (t + h) * d);
 }
 
-struct Cut {
-    const char* name;
-    csg::Leaf leaf;
-};
+// Rays from above onto random points of the box minuend's top face (z = 1),
+// slightly tilted: every answer of intersect() must be the first entry, and
+// occluded() must agree with it. Counts rays whose entry is the face itself
+// (clear) and rays cut deeper (covered).
+void check_rays(const csg::Scene& s, const char* name, std::mt19937_64& rng, int& covered, int& clear) {
+    std::uniform_real_distribution<double> u(-1, 1);
+    const render::CsgTracer tracer(s, false);
+    render::TraceScratch scratch;
+    for (int i = 0; i < 1500; ++i) {
+        const glm::dvec3 target(u(rng), u(rng), 1.0);
+        const glm::dvec3 o = target + glm::dvec3(0.3 * u(rng), 0.3 * u(rng), 4.0);
+        const glm::dvec3 d = glm::normalize(target - o);
+        render::TraceHit hit;
+        const bool found = tracer.intersect(render::TraceRay{o, d, 0, kInf}, hit, scratch);
+        const double t = found ? hit.t : kInf;
+        const double t_face = glm::length(target - o);
+        (t > t_face + 1e-6 ? covered : clear)++;
+        INFO(name << " ray " << i << " first entry " << t << " (the face at " << t_face << ")");
+        CHECK(is_first_entry(s, o, d, t));
+        // Shadow-style query on (0, tfar): blocked exactly when the first
+        // entry comes before tfar (the ray starts outside everything).
+        const double tfar = t_face + 0.05 + 0.5 * (u(rng) + 1);
+        if (std::abs(t - tfar) > 1e-6)
+            CHECK(tracer.occluded(render::TraceRay{o, d, 0, tfar}, scratch) == (t < tfar));
+    }
+}
+
+Tree minuend() { return leaf(box({-1, -1, -1}, {1, 1, 1})); }
+
+// Transforms that stretch by up to 3x and shrink by up to 0.4x, so the
+// world/object distance conversion is exercised both ways.
+const glm::dmat4 twist = rotate_deg(27, glm::normalize(glm::dvec3(1, 2, 0.5)));
+const glm::dmat4 near_top = translate(0.1, -0.2, 1.0);
 
 }  // namespace
 
 TEST_CASE("difference fast path: first entry and occlusion match point membership for every subtrahend kind",
           "[render][difference]") {
-    // Transforms that stretch by up to 3x and shrink by up to 0.4x, so the
-    // world/object distance conversion is exercised both ways.
-    const glm::dmat4 twist = rotate_deg(27, glm::normalize(glm::dvec3(1, 2, 0.5)));
-    const glm::dmat4 near_top = translate(0.1, -0.2, 1.0);
-    const Cut cuts[] = {
+    const std::pair<const char*, csg::Leaf> cuts[] = {
         {"sphere", sphere(0.5, near_top * twist * scale(1.8, 0.6, 1.0))},
         {"box", box({-0.5, -0.3, -0.4}, {0.4, 0.5, 0.3}, near_top * twist * scale(0.4, 1.5, 1.0))},
         {"cylinder", make_leaf(PrimKind::Cylinder, {-0.6, 0.6, 0.4, 0.4}, near_top * twist * scale(1.0, 2.0, 1.0))},
@@ -62,33 +87,40 @@ TEST_CASE("difference fast path: first entry and occlusion match point membershi
         {"plane", make_leaf(PrimKind::Plane, {0.3, -0.2, 1.0, 0.8}, twist * scale(1.0, 0.5, 2.0))},
     };
     std::mt19937_64 rng(20261201);
-    std::uniform_real_distribution<double> u(-1, 1);
-    for (const Cut& cut : cuts) {
-        const csg::Scene s = make_scene(
-            op(Op::Difference, {leaf(box({-1, -1, -1}, {1, 1, 1})), leaf(cut.leaf)}));
-        const render::CsgTracer tracer(s, false);
-        render::TraceScratch scratch;
+    for (const auto& [name, cut] : cuts) {
         int covered = 0, clear = 0;
-        for (int i = 0; i < 1500; ++i) {
-            // From above, onto a random point of the top face, slightly tilted.
-            const glm::dvec3 target(u(rng), u(rng), 1.0);
-            const glm::dvec3 o = target + glm::dvec3(0.3 * u(rng), 0.3 * u(rng), 4.0);
-            const glm::dvec3 d = glm::normalize(target - o);
-            render::TraceHit hit;
-            const bool found = tracer.intersect(render::TraceRay{o, d, 0, kInf}, hit, scratch);
-            const double t = found ? hit.t : kInf;
-            const double t_face = glm::length(target - o);
-            (t > t_face + 1e-6 ? covered : clear)++;
-            INFO(cut.name << " ray " << i << " first entry " << t << " (the face at " << t_face << ")");
-            CHECK(is_first_entry(s, o, d, t));
-            // Shadow-style query on (0, tfar): blocked exactly when the first
-            // entry comes before tfar (the ray starts outside everything).
-            const double tfar = t_face + 0.05 + 0.5 * (u(rng) + 1);
-            if (std::abs(t - tfar) > 1e-6)
-                CHECK(tracer.occluded(render::TraceRay{o, d, 0, tfar}, scratch) == (t < tfar));
-        }
+        check_rays(make_scene(op(Op::Difference, {minuend(), leaf(cut)})), name, rng, covered, clear);
         // Both outcomes must be common, or the test proves little.
-        INFO(cut.name << ": " << covered << " covered, " << clear << " clear");
+        INFO(name << ": " << covered << " covered, " << clear << " clear");
+        CHECK(covered > 100);
+        CHECK(clear > 100);
+    }
+}
+
+TEST_CASE("difference fast path: overlapping and composite subtrahends", "[render][difference]") {
+    // Grooves that cross each other (a ray leaving one groove may land in
+    // the next), and subtrahends that are unions, intersections and
+    // differences themselves.
+    const auto groove = [](double x, double deg) {
+        return leaf(make_leaf(PrimKind::Torus, {0.8, 0.12},
+                              translate(x, 0, 1.0) * rotate_deg(deg, {1, 0, 0}) * scale(1.0, 1.0, 2.5)));
+    };
+    const Tree lump = op(Op::Union, {leaf(sphere(0.3, translate(-0.4, 0.5, 1.1))),
+                                     leaf(sphere(0.25, translate(-0.1, 0.6, 0.95)))});
+    const Tree lens = op(Op::Intersection, {leaf(sphere(0.6, translate(0.5, -0.5, 1.3))),
+                                            leaf(sphere(0.6, translate(0.5, -0.5, 0.5)))});
+    const Tree ring = op(Op::Difference, {leaf(make_leaf(PrimKind::Cylinder, {0.8, 1.2, 0.5, 0.5})),
+                                          leaf(make_leaf(PrimKind::Cylinder, {0.7, 1.3, 0.3, 0.3}))});
+    const std::pair<const char*, Tree> sets[] = {
+        {"crossing grooves", op(Op::Difference, {minuend(), groove(-0.3, 0), groove(0.3, 90), groove(0, 45)})},
+        {"composites", op(Op::Difference, {minuend(), lump, lens, ring})},
+        {"grooves and composites", op(Op::Difference, {minuend(), groove(0.2, 30), lump, ring})},
+    };
+    std::mt19937_64 rng(1201);
+    for (const auto& [name, tree] : sets) {
+        int covered = 0, clear = 0;
+        check_rays(make_scene(tree), name, rng, covered, clear);
+        INFO(name << ": " << covered << " covered, " << clear << " clear");
         CHECK(covered > 100);
         CHECK(clear > 100);
     }
