@@ -6,7 +6,7 @@ set -euo pipefail
 
 packages=(
   g++ cmake make pkg-config
-  libembree-dev libtbb-dev tao-pegtl-dev libopenimageio-dev libpng-dev libglm-dev catch2
+  libembree-dev libtbb-dev tao-pegtl-dev libopenimageio-dev libpng-dev zlib1g-dev libglm-dev catch2
   clang libclang-rt-14-dev   # libFuzzer + sanitizers for the fuzz test
   libbenchmark-dev
 )
