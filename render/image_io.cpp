@@ -87,8 +87,8 @@ std::uint8_t unit_byte(float v) { return std::uint8_t(std::clamp(v, 0.0f, 1.0f) 
 
 // 8-bit files cannot hold linear floats or +inf: encode what the pixels mean
 // (spec §7: depth normalised to the nearest and farthest hit, misses 0).
-std::vector<std::uint8_t> encode_8bit(const Image& im) {
-    std::vector<std::uint8_t> out(im.pixels.size());
+BigVector<std::uint8_t> encode_8bit(const Image& im) {
+    BigVector<std::uint8_t> out(im.pixels.size());
     switch (im.content) {
         case ImageContent::Color:
             // Millions of channels at 2048²: as long as a small render's tracing.
@@ -162,7 +162,7 @@ void write_image(const Image& image, const std::string& path) {
     const bool as_float = is_float_format(ext);
     const bool srgb = !as_float && image.content == ImageContent::Color;
     const std::string tmp = temp_name(target);
-    std::vector<std::uint8_t> bytes;
+    BigVector<std::uint8_t> bytes;
     if (!as_float) bytes = encode_8bit(image);
     std::string message;
     if (ext == ".png") {

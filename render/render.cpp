@@ -88,7 +88,7 @@ Image render(const csg::Scene& scene, const RenderOptions& options, RenderStats*
         case Aov::Normal: image.channels = 3; image.content = ImageContent::Normal; break;
         case Aov::Hits: image.channels = 1; image.content = ImageContent::Hits; break;
     }
-    image.pixels.assign(std::size_t(image.width) * image.height * image.channels, 0.0f);
+    image.pixels.resize(std::size_t(image.width) * image.height * image.channels);  // not zeroed
 
     const int tiles_x = (image.width + kTile - 1) / kTile, tiles_y = (image.height + kTile - 1) / kTile;
     const int tiles = tiles_x * tiles_y;
@@ -109,10 +109,8 @@ Image render(const csg::Scene& scene, const RenderOptions& options, RenderStats*
             if (options.aov == Aov::Depth) {
                 out[0] = found ? float(hit.t) : std::numeric_limits<float>::infinity();
             } else if (options.aov == Aov::Normal) {
-                if (found) {
-                    const glm::dvec3 n = tracer.normal(hit, o + hit.t * d);
-                    out[0] = float(n.x), out[1] = float(n.y), out[2] = float(n.z);
-                }
+                const glm::dvec3 n = found ? tracer.normal(hit, o + hit.t * d) : glm::dvec3(0.0);
+                out[0] = float(n.x), out[1] = float(n.y), out[2] = float(n.z);
             } else {
                 out[0] = float(ts.scratch.counters.spans_found - spans_before);
             }

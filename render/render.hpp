@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "render/big_buffer.hpp"
+
 #include "render/csg_scene.hpp"
 
 namespace kerf::render {
@@ -35,7 +37,7 @@ enum class ImageContent : std::uint8_t { Color, Depth, Normal, Hits };
 // vector (0 on miss); Hits: count of primitive intervals found.
 struct Image {
     int width = 0, height = 0, channels = 0;
-    std::vector<float> pixels;
+    BigVector<float> pixels;  // every element written by render()
     ImageContent content = ImageContent::Color;
     float& at(int x, int y, int c) { return pixels[(std::size_t(y) * width + x) * channels + c]; }
     float at(int x, int y, int c) const { return pixels[(std::size_t(y) * width + x) * channels + c]; }
