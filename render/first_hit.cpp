@@ -46,8 +46,8 @@ void top_intersect_callback(const RTCIntersectFunctionNArguments* args) {
 }
 
 bool CsgTracer::intersect(const TraceRay& ray, TraceHit& hit, TraceScratch& scratch) const {
-    if (line_misses(impl_->reach, ray)) return false;
-    EvalState st = make_state(impl_.get(), ray, eps_, scale_, scratch);
+    EvalState st;
+    if (!make_state(st, impl_.get(), ray, eps_, scale_, scratch)) return false;
     TopContext ctx(st, ray);
     // Unbounded units (numbered after the BVH's for ties) go first: the
     // traversal then starts with their entry as tfar.

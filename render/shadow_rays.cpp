@@ -36,8 +36,8 @@ void top_occluded_callback(const RTCOccludedFunctionNArguments* args) {
 }
 
 bool CsgTracer::occluded(const TraceRay& ray, TraceScratch& scratch) const {
-    if (line_misses(impl_->reach, ray)) return false;
-    EvalState st = make_state(impl_.get(), ray, eps_, scale_, scratch);
+    EvalState st;
+    if (!make_state(st, impl_.get(), ray, eps_, scale_, scratch)) return false;
     TopContext ctx(st, ray);
     for (std::uint32_t node : impl_->top.always)
         if (unit_blocks(ctx, node)) return true;

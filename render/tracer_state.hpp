@@ -66,14 +66,31 @@ struct EvalState {
     }
 };
 
-inline EvalState make_state(const CsgTracer::Impl* impl, const TraceRay& ray, double eps_world, double scale,
-                            TraceScratch& scratch) {
-    EvalState st;
+// Sets up `st` for a query along `ray`. Returns false, with the rest of the
+// set-up skipped, when the ray's line misses `reach` (the box around every
+// bounded unit): a slab test on the whole line (no t-window, so no tolerance
+// to get wrong), so background pixels cost three divisions and no more.
+inline bool make_state(EvalState& st, const CsgTracer::Impl* impl, const TraceRay& ray, double eps_world,
+                       double scale, TraceScratch& scratch) {
+    double t0 = -kInf, t1 = kInf;
+    for (int i = 0; i < 3; ++i) {
+        const double lo = impl->reach.lo[i], hi = impl->reach.hi[i];
+        if (ray.d[i] == 0) {
+            st.invd[i] = kInf;
+            if (!(lo <= ray.o[i] && ray.o[i] <= hi)) return false;
+            continue;
+        }
+        st.invd[i] = 1.0 / ray.d[i];
+        double ta = (lo - ray.o[i]) * st.invd[i], tb = (hi - ray.o[i]) * st.invd[i];
+        if (ta > tb) std::swap(ta, tb);
+        t0 = std::max(t0, ta);
+        t1 = std::min(t1, tb);
+    }
+    if (!(t0 <= t1)) return false;
     st.impl = impl;
     st.o = ray.o;
     st.d = ray.d;
     for (int i = 0; i < 3; ++i) {
-        st.invd[i] = ray.d[i] != 0 ? 1.0 / ray.d[i] : kInf;
         st.org[i] = float(ray.o[i]);
         st.dir[i] = float(ray.d[i]);
     }
@@ -84,26 +101,7 @@ inline EvalState make_state(const CsgTracer::Impl* impl, const TraceRay& ray, do
     st.box_pad = eps_world;
     st.t_pad = 1e-5 * (scale + dist) * inv_len;
     st.scratch = &scratch;
-    return st;
-}
-
-// Whether the ray's line misses `box` (an empty box included): a slab test
-// on the whole line (no t-window, so no tolerance to get wrong), cheap enough to run before any per-ray set-up, so
-// background pixels cost almost nothing.
-inline bool line_misses(const csg::Aabb& box, const TraceRay& ray) {
-    double t0 = -kInf, t1 = kInf;
-    for (int i = 0; i < 3; ++i) {
-        if (ray.d[i] == 0) {
-            if (!(box.lo[i] <= ray.o[i] && ray.o[i] <= box.hi[i])) return true;
-            continue;
-        }
-        const double inv = 1 / ray.d[i];
-        double ta = (box.lo[i] - ray.o[i]) * inv, tb = (box.hi[i] - ray.o[i]) * inv;
-        if (ta > tb) std::swap(ta, tb);
-        t0 = std::max(t0, ta);
-        t1 = std::min(t1, tb);
-    }
-    return !(t0 <= t1);  // no t-window: a line through the box is never culled
+    return true;
 }
 
 // A float Embree ray over (tnear, tfar) that has hit nothing yet.
