@@ -80,3 +80,28 @@ TEST_CASE("a mirror shows what it reflects; misses show the background", "[rende
     const render::Image none = render::render(s, o);
     CHECK(none.at(4, 4, 2) == 0.75f);
 }
+
+TEST_CASE("the Blinn–Phong highlight is specular·(n·h)^shininess, whole and fractional exponents", "[render][shading]") {
+    // Ground plane seen straight down by an orthographic camera; a distant
+    // light tilted by 30° from the vertical: n·l = cos 30°, and the half
+    // vector between l and the view (straight up) makes 15° with n.
+    const double deg = 30, nl = std::cos(glm::radians(deg)), nh = std::cos(glm::radians(deg / 2));
+    for (const double shininess : {1.0, 7.0, 32.0, 100.0, 12.5, 2000.0}) {
+        csg::Material m = flat({0.5, 0.5, 0.5});
+        m.diffuse = 0.6;
+        m.specular = 0.4;
+        m.shininess = shininess;
+        csg::Scene s = make_scene(leaf(make_leaf(csg::PrimKind::Plane, {0, 0, 1, 0})), {m});
+        s.camera.position = {0, -0.001, 10};
+        s.camera.look_at = {0, 0, 0};
+        s.camera.up = {0, 1, 0};
+        s.camera.orthographic = true;
+        s.camera.height = 2;
+        s.lights = {csg::Light{true, {}, {std::sin(glm::radians(deg)), 0, -nl}, {1, 1, 1}, 1}};
+        render::RenderOptions o;
+        o.width = o.height = 3;
+        const render::Image im = render::render(s, o);
+        INFO("shininess " << shininess);
+        CHECK(im.at(1, 1, 0) == Approx(0.1 * 0.5 + 0.6 * nl * 0.5 + 0.4 * std::pow(nh, shininess)).epsilon(1e-5));
+    }
+}
