@@ -117,15 +117,21 @@ Image render(const csg::Scene& scene, const RenderOptions& options, RenderStats*
             return;
         }
         glm::dvec3 sum(0.0);
-        std::uint64_t rng = options.seed * 0x9E3779B97F4A7C15ull ^ (std::uint64_t(y) << 32 | std::uint32_t(x));
-        splitmix64(rng);
-        for (int i = 0; i < spp; ++i) {
-            const glm::dvec2 s = spp == 1 ? glm::dvec2(0.5) : sample_offset(i, spp, rng);
-            camera.ray(x + s.x, y + s.y, o, d);
+        if (spp == 1) {  // the pixel centre: no jitter, no generator to seed
+            camera.ray(x + 0.5, y + 0.5, o, d);
             ++ts.rays.primary;
-            sum += shader.radiance(TraceRay{o, d, 0, std::numeric_limits<double>::infinity()}, 0, ts);
+            sum = shader.radiance(TraceRay{o, d, 0, std::numeric_limits<double>::infinity()}, 0, ts);
+        } else {
+            std::uint64_t rng = options.seed * 0x9E3779B97F4A7C15ull ^ (std::uint64_t(y) << 32 | std::uint32_t(x));
+            splitmix64(rng);
+            for (int i = 0; i < spp; ++i) {
+                const glm::dvec2 s = sample_offset(i, spp, rng);
+                camera.ray(x + s.x, y + s.y, o, d);
+                ++ts.rays.primary;
+                sum += shader.radiance(TraceRay{o, d, 0, std::numeric_limits<double>::infinity()}, 0, ts);
+            }
+            sum /= double(spp);
         }
-        sum /= double(spp);
         out[0] = float(sum.x), out[1] = float(sum.y), out[2] = float(sum.z);
     };
 
