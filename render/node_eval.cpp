@@ -40,21 +40,19 @@ namespace {
 // have internal linkage so the compiler inlines them into it as before the
 // split; only eval and collect are reached from other files.
 
+// `box` is already padded by the degenerate rule's reach (Impl::padded).
+// An axis the ray is parallel to has invd = inf: outside the slab gives
+// ±inf on both ends (an empty range), inside -inf..inf; a ray exactly in a
+// face plane gives NaN, which max/min ignore, keeping the box (conservative).
 bool box_hit(const EvalState& es, const csg::Aabb& box, double a, double b) {
     double t0 = a - es.eps, t1 = b + es.eps;
     for (int i = 0; i < 3; ++i) {
-        const double lo = box.lo[i] - es.box_pad, hi = box.hi[i] + es.box_pad;
-        if (es.d[i] == 0) {
-            if (es.o[i] < lo || es.o[i] > hi) return false;
-            continue;
-        }
-        double ta = (lo - es.o[i]) * es.invd[i], tb = (hi - es.o[i]) * es.invd[i];
+        double ta = (box.lo[i] - es.o[i]) * es.invd[i], tb = (box.hi[i] - es.o[i]) * es.invd[i];
         if (ta > tb) std::swap(ta, tb);
         t0 = std::max(t0, ta);
         t1 = std::min(t1, tb);
-        if (t0 > t1) return false;
     }
-    return true;
+    return t0 <= t1;
 }
 
 std::uint32_t eval_leaf(EvalState& es, const Node& n, double a, double b) {
@@ -263,7 +261,7 @@ std::uint32_t EvalState::eval(std::uint32_t node, double a, double b, Need need)
     // Also under Embree's callbacks: a BVH leaf may hold several items and a
     // root that is a leaf is entered without any box test, so a one-unit
     // scene would otherwise test its primitives for every ray of the image.
-    if (!box_hit(*this, n.bounds, a, b)) return 0;
+    if (!box_hit(*this, impl->padded[node], a, b)) return 0;
     switch (n.op) {
         case Op::Leaf: return eval_leaf(*this, n, a, b);
         case Op::Union: return eval_union(*this, node, n, a, b);

@@ -123,6 +123,8 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
     rtcSetDeviceErrorFunction(impl_->device, embree_error, nullptr);
 
     impl_->accel_of_node.assign(scene.nodes.size(), -1);
+    for (const Node& n : scene.nodes)
+        impl_->padded.push_back({n.bounds.lo - glm::dvec3(eps_), n.bounds.hi + glm::dvec3(eps_)});
     for (const csg::Leaf& leaf : scene.leaves) {
         const glm::dmat3& m = leaf.object_from_world.linear;
         impl_->leaf_stretch.push_back(

@@ -32,6 +32,7 @@ struct CsgTracer::Impl {
     // The padded box around every bounded unit; everything() when a unit is
     // unbounded. A ray whose line misses it hits nothing (first_hit.cpp).
     csg::Aabb reach = csg::Aabb::everything();
+    std::vector<csg::Aabb> padded;            // per node: bounds grown by eps (box tests)
     std::vector<std::int32_t> accel_of_node;  // -1: children evaluated directly
     std::vector<std::unique_ptr<Accel>> node_accels;
     std::vector<double> leaf_stretch;         // per leaf: Frobenius norm of object_from_world.linear

@@ -34,7 +34,6 @@ struct EvalState {
     float org[3], dir[3];
     double len;       // |d|: world length per unit of t
     double eps;       // t-length of the degenerate rule
-    double box_pad;   // world-length slack of box tests
     double t_pad;     // t slack of float Embree windows
     TraceScratch* scratch;
 
@@ -98,7 +97,6 @@ inline bool make_state(EvalState& st, const CsgTracer::Impl* impl, const TraceRa
     const double inv_len = 1 / st.len, dist = glm::length(ray.o);
     // Round-off of t also grows with the origin's distance (far cameras).
     st.eps = (eps_world + (impl->use_float ? 1e-6 : 1e-13) * dist) * inv_len;
-    st.box_pad = eps_world;
     st.t_pad = 1e-5 * (scale + dist) * inv_len;
     st.scratch = &scratch;
     return true;
