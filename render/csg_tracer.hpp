@@ -48,6 +48,10 @@ public:
     // Whether the root solid has a span of positive length inside (tnear, tfar).
     bool occluded(const TraceRay& ray, TraceScratch& scratch) const;
 
+    // True if every ray whose origin and direction are convex combinations
+    // of these four corner rays (in order round a quad) misses the solid:
+    // a whole image tile can then be filled without tracing (tile_cull.cpp).
+    bool misses_all(const glm::dvec3 (&o)[4], const glm::dvec3 (&d)[4]) const;
     // World unit normal of the final solid at a hit point.
     glm::dvec3 normal(const TraceHit& hit, const glm::dvec3& world_point) const;
 

@@ -135,6 +135,27 @@ Image render(const csg::Scene& scene, const RenderOptions& options, RenderStats*
         out[0] = float(sum.x), out[1] = float(sum.y), out[2] = float(sum.z);
     };
 
+    // A pixel of a tile that misses the whole scene: exactly what tracing
+    // would store (the same sum for several samples), so a pixel's value
+    // never depends on which tile it falls in (crops move tile borders).
+    auto miss_pixel = [&](int x, int y, ThreadState& ts) {
+        float* out = &image.at(x - region[0], y - region[1], 0);
+        if (options.aov != Aov::None) {
+            ++ts.rays.primary;
+            for (int c = 0; c < image.channels; ++c)
+                out[c] = options.aov == Aov::Depth ? std::numeric_limits<float>::infinity() : 0.0f;
+            return;
+        }
+        glm::dvec3 sum = scene.background;
+        if (spp > 1) {
+            sum = glm::dvec3(0.0);
+            for (int i = 0; i < spp; ++i) sum += scene.background;
+            sum /= double(spp);
+        }
+        ts.rays.primary += std::uint64_t(spp);
+        out[0] = float(sum.x), out[1] = float(sum.y), out[2] = float(sum.z);
+    };
+
     arena.execute([&] {
         tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1), [&](const tbb::blocked_range<int>& r) {
             // Denormals only slow the quartic solvers down; every thread uses
@@ -147,8 +168,14 @@ Image render(const csg::Scene& scene, const RenderOptions& options, RenderStats*
             for (int tile = r.begin(); tile != r.end(); ++tile) {
                 const int tx0 = region[0] + (tile % tiles_x) * kTile, ty0 = region[1] + (tile / tiles_x) * kTile;
                 const int tx1 = std::min(tx0 + kTile, region[2]), ty1 = std::min(ty0 + kTile, region[3]);
+                glm::dvec3 co[4], cd[4];  // the tile's corner rays, in order round it
+                camera.ray(tx0, ty0, co[0], cd[0]);
+                camera.ray(tx1, ty0, co[1], cd[1]);
+                camera.ray(tx1, ty1, co[2], cd[2]);
+                camera.ray(tx0, ty1, co[3], cd[3]);
+                const bool empty = tracer.misses_all(co, cd);
                 for (int y = ty0; y < ty1; ++y)
-                    for (int x = tx0; x < tx1; ++x) render_pixel(x, y, ts);
+                    for (int x = tx0; x < tx1; ++x) empty ? miss_pixel(x, y, ts) : render_pixel(x, y, ts);
                 if (progress) {
                     std::lock_guard<std::mutex> lock(progress_mutex);
                     progress(double(++tiles_done) / tiles);
