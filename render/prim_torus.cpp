@@ -35,6 +35,48 @@ struct TorusLine {
     }
 };
 
+// The crossing in the monotone piece [a, b] of the chord, fa = F(a) and
+// fb = F(b) of opposite signs; the inside end is a turning point t of P
+// (P'(t) = 0, P(t) < 0). Three stages, each cheaper than F's sqrt:
+//  1. the quadratic model P(t + δ) ≈ P(t) + P''(t)/2·δ² around t: for a thin
+//     tube F is nearly a quadratic there, so this is already close;
+//  2. Newton on the polynomial P to about half the digits (no sqrt; P loses
+//     digits to cancellation for thin tori, so only to start stage 3);
+//  3. bracketed Newton on F, which is exact; usually one step suffices.
+template <typename T>
+T crossing(const TorusLine<T>& line, const T c[5], T a, T b, T fa, T fb, T rr, T tol) {
+    const bool a_inside = fa < T(0);
+    const T t = a_inside ? a : b;
+    T x = a - fa * (b - a) / (fb - fa);  // secant point, if the model fails
+    T dp, hp2;  // P'(t) (about 0), P''(t)/2
+    const T p = poly_taylor2<T, 4>(c, t, dp, hp2);
+    if (p < T(0)) {
+        const T e = a_inside ? b : a, w = e - t;  // the outside end
+        T dummy;
+        const T pe = poly_eval<T, 4>(c, e, dummy);
+        // The curvature of the chord from t to e, or P''(t) if larger.
+        const T A = std::max(hp2, (pe - p) / (w * w));
+        const T xq = t + std::copysign(std::sqrt(-p / A), w);
+        if (xq > a && xq < b) x = xq;
+    }
+    if (!(x > a && x < b)) x = T(0.5) * (a + b);
+    const T coarse = std::sqrt(std::numeric_limits<T>::epsilon()) * T(0.01);
+    T prev = b - a;
+    for (int it = 0; it < 8; ++it) {
+        T dpx;
+        const T step = poly_eval<T, 4>(c, x, dpx) / dpx;
+        const T next = x - step;
+        if (!(next > a && next < b)) break;  // P's rounding or a far start: F takes over
+        x = next;
+        // Newton's error after this step is about step³/prev² once it converges.
+        const T as = std::abs(step);
+        if (as * as * as <= coarse * std::max(T(1), std::abs(x)) * prev * prev) break;
+        prev = as;
+    }
+    // |F''| <= 4 near the surface when rr <= 1/2 (see newton_in_bracket).
+    return newton_in_bracket<T>(line, a, b, a_inside, x, tol, 80, rr <= T(0.5) ? T(4) : T(0));
+}
+
 }  // namespace
 
 template <typename T>
@@ -106,7 +148,7 @@ int intersect_torus(const double* p, const Vec3<T>& o, const Vec3<T>& d, Span<T>
         const T f = i <= nturn ? line(cuts[i], dummy) : T(1);
         const bool in_b = f < T(0);
         if (in_b != inside) {
-            const T root = bracketed_root<T>(line, cuts[i - 1], cuts[i], f_prev, f, tol, 80);
+            const T root = crossing(line, c, cuts[i - 1], cuts[i], f_prev, f, rr, tol);
             if (in_b) {
                 enter = root;
             } else if (n < kMaxSpans) {

@@ -8,33 +8,48 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "render/quadratic.hpp"
 
 namespace kerf::csg {
 
-// c[0] + c[1]·x + ... + c[N]·x^N and its derivative (Horner).
+// c[0] + c[1]·x + ... + c[N]·x^N and its derivative (Horner), unrolled at
+// compile time: -O2 keeps the loop, whose overhead is most of a cubic's cost.
 template <typename T, int N>
 inline T poly_eval(const T* c, T x, T& deriv) {
     T v = c[N], dv = T(0);
-    for (int i = N - 1; i >= 0; --i) {
-        dv = dv * x + v;
-        v = v * x + c[i];
-    }
+    [&]<int... I>(std::integer_sequence<int, I...>) {
+        ((dv = dv * x + v, v = v * x + c[N - 1 - I]), ...);
+    }(std::make_integer_sequence<int, N>{});
     deriv = dv;
     return v;
 }
 
-// A root of f in [a, b], where fa = f(a) and fb = f(b) have opposite signs:
-// Newton from the secant point, falling back to bisection whenever a step
-// leaves the shrinking bracket. f(x, deriv) returns f and sets f'. Stops once
-// a step is below tol·max(1, |x|) (tol: a few eps, relative, so Newton cannot
-// cycle between neighbouring floats until max_iter).
+// The same with half the second derivative as well: the Taylor coefficients
+// of degree 0, 1 and 2 at x.
+template <typename T, int N>
+inline T poly_taylor2(const T* c, T x, T& deriv, T& half_second) {
+    T v = c[N], dv = T(0), hv = T(0);
+    [&]<int... I>(std::integer_sequence<int, I...>) {
+        ((hv = hv * x + dv, dv = dv * x + v, v = v * x + c[N - 1 - I]), ...);
+    }(std::make_integer_sequence<int, N>{});
+    deriv = dv;
+    half_second = hv;
+    return v;
+}
+
+// A root of f in [a, b], where f(a) < 0 exactly when a_negative and f(b) has
+// the other sign: Newton from x (in (a, b)), falling back to bisection
+// whenever a step leaves the shrinking bracket. f(x, deriv) returns f and sets
+// f'. Stops once a step is below tol·max(1, |x|) (tol: a few eps, relative,
+// so Newton cannot cycle between neighbouring floats until max_iter).
+// curv > 0: a bound on |f''|·|f'|/|deriv| near the root, for a derivative
+// `deriv` that f may return scaled; Newton's error after a step is at most
+// curv/|deriv|·step², so once that is below the stop rule the step is taken
+// without another evaluation to confirm it.
 template <typename T, typename F>
-inline T bracketed_root(F&& f, T a, T b, T fa, T fb, T tol, int max_iter) {
-    const bool a_negative = fa < T(0);
-    T x = a - fa * (b - a) / (fb - fa);
-    if (!(x > a && x < b)) x = T(0.5) * (a + b);
+inline T newton_in_bracket(F&& f, T a, T b, bool a_negative, T x, T tol, int max_iter, T curv = T(0)) {
     for (int it = 0; it < max_iter; ++it) {
         T df;
         const T fx = f(x, df);
@@ -43,13 +58,24 @@ inline T bracketed_root(F&& f, T a, T b, T fa, T fb, T tol, int max_iter) {
         const T step = fx / df;
         // Converged: checked before the bracket test, since at the root the
         // rounding noise in f may point a tiny step just outside the bracket.
-        if (std::abs(step) <= tol * std::max(T(1), std::abs(x))) return x;
+        const T stop = tol * std::max(T(1), std::abs(x));
         T next = x - step;
-        if (!(next > a && next < b)) next = T(0.5) * (a + b);  // also catches df == 0 / NaN
+        const bool in_bracket = next > a && next < b;
+        if (std::abs(step) <= stop) return in_bracket ? next : x;
+        if (in_bracket && curv > T(0) && curv * step * step <= stop * std::abs(df)) return next;
+        if (!in_bracket) next = T(0.5) * (a + b);  // also catches df == 0 / NaN
         if (!(a < next && next < b)) return x;  // the bracket has collapsed
         x = next;
     }
     return x;
+}
+
+// The same from the secant point, given fa = f(a) and fb = f(b).
+template <typename T, typename F>
+inline T bracketed_root(F&& f, T a, T b, T fa, T fb, T tol, int max_iter) {
+    T x = a - fa * (b - a) / (fb - fa);
+    if (!(x > a && x < b)) x = T(0.5) * (a + b);
+    return newton_in_bracket<T>(f, a, b, fa < T(0), x, tol, max_iter);
 }
 
 // Sorted points in (lo, hi) where the quartic c[0..4] may turn (roots of its
