@@ -35,31 +35,30 @@ struct TorusLine {
     }
 };
 
-// The crossing in the monotone piece [a, b] of the chord, fa = F(a) and
-// fb = F(b) of opposite signs; the inside end is a turning point t of P
-// (P'(t) = 0, P(t) < 0). Three stages, each cheaper than F's sqrt:
-//  1. the quadratic model P(t + δ) ≈ P(t) + P''(t)/2·δ² around t: for a thin
-//     tube F is nearly a quadratic there, so this is already close;
-//  2. Newton on the polynomial P to about half the digits (no sqrt; P loses
-//     digits to cancellation for thin tori, so only to start stage 3);
+// The crossing in the piece [a, b] of the chord, where F changes sign once;
+// the inside end t (F(t) < 0) is at or near a minimum of P. Three stages,
+// each cheaper than the sqrt of an F evaluation:
+//  1. a quadratic model P(t + δ) ≈ P(t) + P'(t)·δ + A·δ² (A: P''(t)/2, or the
+//     curvature of the chord to the outside end if larger, which keeps the
+//     model's root inside the piece); for a thin tube F is nearly quadratic
+//     there, so this is already close;
+//  2. Newton on the polynomial P until its steps predict ~1e-10 (no sqrt; P
+//     loses digits to cancellation for thin tori, so only to start stage 3);
 //  3. bracketed Newton on F, which is exact; usually one step suffices.
 template <typename T>
-T crossing(const TorusLine<T>& line, const T c[5], T a, T b, T fa, T fb, T rr, T tol) {
-    const bool a_inside = fa < T(0);
-    const T t = a_inside ? a : b;
-    T x = a - fa * (b - a) / (fb - fa);  // secant point, if the model fails
-    T dp, hp2;  // P'(t) (about 0), P''(t)/2
+T crossing(const TorusLine<T>& line, const T c[5], T a, T b, bool a_inside, T rr, T tol) {
+    const T t = a_inside ? a : b, e = a_inside ? b : a, w = e - t;
+    T dp, hp2, dummy;
     const T p = poly_taylor2<T, 4>(c, t, dp, hp2);
-    if (p < T(0)) {
-        const T e = a_inside ? b : a, w = e - t;  // the outside end
-        T dummy;
-        const T pe = poly_eval<T, 4>(c, e, dummy);
-        // The curvature of the chord from t to e, or P''(t) if larger.
-        const T A = std::max(hp2, (pe - p) / (w * w));
-        const T xq = t + std::copysign(std::sqrt(-p / A), w);
+    const T pe = poly_eval<T, 4>(c, e, dummy);
+    T x = T(0.5) * (a + b);
+    if (p < T(0) && pe > T(0)) {
+        const T A = std::max(hp2, (pe - p - dp * w) / (w * w));
+        // The model's root on e's side, in the form without cancellation.
+        const T sdp = w > T(0) ? dp : -dp;
+        const T xq = t + std::copysign(T(-2) * p / (std::sqrt(dp * dp - T(4) * A * p) + sdp), w);
         if (xq > a && xq < b) x = xq;
     }
-    if (!(x > a && x < b)) x = T(0.5) * (a + b);
     const T coarse = std::sqrt(std::numeric_limits<T>::epsilon()) * T(0.01);
     T prev = b - a;
     for (int it = 0; it < 8; ++it) {
@@ -130,10 +129,8 @@ int intersect_torus(const double* p, const Vec3<T>& o, const Vec3<T>& d, Span<T>
     const T k = q2 + T(1) - rr * rr;
     const T c[5] = {k * k - T(4) * gamma, T(4) * b * k - T(8) * beta,
                     T(4) * b * b + T(2) * uu * k - T(4) * alpha, T(4) * uu * b, uu * uu};
-    T cuts[5];
-    cuts[0] = lo;
-    const int nturn = quartic_turning_points(c, lo, hi, T(4) * eps, cuts + 1);
-    cuts[nturn + 1] = hi;
+    Turn<T> turns[3];
+    const int nturn = quartic_turns(c, lo, hi, turns);
 
     // Walk the monotone pieces; the ends are outside, each sign change of F
     // is one crossing. F == 0 counts as outside (the surface is not inside).
@@ -142,13 +139,26 @@ int intersect_torus(const double* p, const Vec3<T>& o, const Vec3<T>& d, Span<T>
     bool inside = false;
     T enter = T(0);
     T f_prev = T(1);  // the ends are outside: any positive value does
+    T x_prev = lo;
     int n = 0;
-    for (int i = 1; i <= nturn + 1; ++i) {
-        T dummy;
-        const T f = i <= nturn ? line(cuts[i], dummy) : T(1);
+    for (int i = 0; i <= nturn; ++i) {
+        T x = hi, f = T(1);
+        if (i < nturn) {
+            // A turn's first point separates the pieces if F there has the
+            // sign of the extremum; otherwise (a near miss or a graze) only
+            // the extremum itself can tell.
+            Turn<T>& turn = turns[i];
+            T dummy;
+            f = line(turn.x, dummy);
+            if (turn.min ? !(f < T(0)) : !(f > T(0))) {
+                refine_turn(c, turn, T(4) * eps);
+                f = line(turn.x, dummy);
+            }
+            x = turn.x;
+        }
         const bool in_b = f < T(0);
         if (in_b != inside) {
-            const T root = crossing(line, c, cuts[i - 1], cuts[i], f_prev, f, rr, tol);
+            const T root = crossing(line, c, x_prev, x, f_prev < T(0), rr, tol);
             if (in_b) {
                 enter = root;
             } else if (n < kMaxSpans) {
@@ -157,6 +167,7 @@ int intersect_torus(const double* p, const Vec3<T>& o, const Vec3<T>& d, Span<T>
             inside = in_b;
         }
         f_prev = f;
+        x_prev = x;
     }
     return n;
 }

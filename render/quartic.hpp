@@ -78,10 +78,21 @@ inline T bracketed_root(F&& f, T a, T b, T fa, T fb, T tol, int max_iter) {
     return newton_in_bracket<T>(f, a, b, fa < T(0), x, tol, max_iter);
 }
 
-// Sorted points in (lo, hi) where the quartic c[0..4] may turn (roots of its
-// cubic derivative); between consecutive ones it is monotone. Returns count.
+// A turning point of the quartic P, isolated in a piece (a, b) of the
+// interval where P' is monotone and changes sign once. x is only a point of
+// (a, b) until refine_turn() makes it the turning point: P is monotone
+// between any point of the piece and the turning point, so for sign walks x
+// already separates the monotone pieces of P whenever P(x) has the sign of
+// the extremum (negative at a minimum, positive at a maximum).
 template <typename T>
-inline int quartic_turning_points(const T c[5], T lo, T hi, T tol, T out[3]) {
+struct Turn {
+    T x, a, b;  // a == b: x is exact
+    bool min;   // P' goes from negative to positive: P has a minimum
+};
+
+// The turns of the quartic c[0..4] in (lo, hi), sorted. Returns the count.
+template <typename T>
+inline int quartic_turns(const T c[5], T lo, T hi, Turn<T> out[3]) {
     const T d1[4] = {c[1], T(2) * c[2], T(3) * c[3], T(4) * c[4]};  // P'
     // Turning points of P' itself: roots of P'' = 12c4·x² + 6c3·x + 2c2.
     T cut[4] = {lo, hi, hi, hi};
@@ -97,19 +108,39 @@ inline int quartic_turning_points(const T c[5], T lo, T hi, T tol, T out[3]) {
     }
     cut[ncut++] = hi;
     int n = 0;
-    T dummy;
-    T va = poly_eval<T, 3>(d1, cut[0], dummy);
+    T da;
+    T va = poly_eval<T, 3>(d1, cut[0], da);
     for (int i = 0; i + 1 < ncut; ++i) {
-        const T vb = poly_eval<T, 3>(d1, cut[i + 1], dummy);
+        T db;
+        const T vb = poly_eval<T, 3>(d1, cut[i + 1], db);
         if ((va < T(0)) != (vb < T(0)) && va != T(0) && vb != T(0)) {
-            auto fd = [&](T x, T& df) { return poly_eval<T, 3>(d1, x, df); };
-            out[n++] = bracketed_root<T>(fd, cut[i], cut[i + 1], va, vb, tol, 60);
+            const T a = cut[i], b = cut[i + 1];
+            // x: inverse cubic Hermite interpolation of x(P') through both
+            // ends (values and slopes), else the secant point.
+            const T h = vb - va, s = -va / h;
+            const T h10 = s * (s - T(1)) * (s - T(1)), h11 = s * s * (s - T(1));
+            const T h01 = s * s * (T(3) - T(2) * s);
+            T x = a + h01 * (b - a) + h * (h10 / da + h11 / db);
+            if (!(x > a && x < b)) x = a + s * (b - a);
+            if (!(x > a && x < b)) x = T(0.5) * (a + b);
+            out[n++] = Turn<T>{x, a, b, va < T(0)};
         } else if (vb == T(0) && i + 2 < ncut) {
-            out[n++] = cut[i + 1];  // an exact turning point at a cut
+            const T x = cut[i + 1];  // an exact turning point at a cut
+            out[n++] = Turn<T>{x, x, x, va < T(0)};
         }
         va = vb;
+        da = db;
     }
     return n;
+}
+
+// The turning point itself: Newton on P' in the turn's piece.
+template <typename T>
+inline void refine_turn(const T c[5], Turn<T>& turn, T tol) {
+    if (!(turn.a < turn.b)) return;
+    const T d1[4] = {c[1], T(2) * c[2], T(3) * c[3], T(4) * c[4]};
+    auto fd = [&](T x, T& df) { return poly_eval<T, 3>(d1, x, df); };
+    turn.x = newton_in_bracket<T>(fd, turn.a, turn.b, turn.min, turn.x, tol, 60);
 }
 
 }  // namespace kerf::csg
