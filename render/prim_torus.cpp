@@ -145,12 +145,15 @@ int intersect_torus(const double* p, const Vec3<T>& o, const Vec3<T>& d, Span<T>
         T x = hi, f = T(1);
         if (i < nturn) {
             // A turn's first point separates the pieces if F there has the
-            // sign of the extremum; otherwise (a near miss or a graze) only
-            // the extremum itself can tell.
+            // sign of the extremum, clear of F's rounding (about 4·rr·eps:
+            // the point's rounding times |∇F| = 2·rr) so that undecidable
+            // grazes are still decided at the extremum. Otherwise (a near
+            // miss or a graze) only the extremum itself can tell.
             Turn<T>& turn = turns[i];
             T dummy;
             f = line(turn.x, dummy);
-            if (turn.min ? !(f < T(0)) : !(f > T(0))) {
+            const T clear = T(16) * eps * rr;
+            if (turn.min ? !(f < -clear) : !(f > clear)) {
                 refine_turn(c, turn, T(4) * eps);
                 f = line(turn.x, dummy);
             }
