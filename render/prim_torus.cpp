@@ -1,9 +1,10 @@
 // Torus in the XY plane: (ρ - R)² + z² < r². Work in units of R along a unit
 // direction from the point of the line closest to the centre, so every
 // quantity is O(1) whatever the scale, distance or ray length. The quartic
-// (|x|² + 1 - r²)² - 4ρ² only locates the turning points that separate the
-// roots; signs and roots come from F = (ρ - 1)² + z² - r², which has the same
-// sign and roots but no cancellation of O(1) terms for thin tori (r << R).
+// P = (|x|² + 1 - r²)² - 4ρ² only locates the turning points that separate
+// the roots and brings each root close (no sqrt); signs and final roots come
+// from F = (ρ - 1)² + z² - r², which has the same sign and roots but no
+// cancellation of O(1) terms for thin tori (r << R).
 #include <algorithm>
 #include <cmath>
 
@@ -72,7 +73,9 @@ T crossing(const TorusLine<T>& line, const T c[5], T a, T b, bool a_inside, T rr
         if (as * as * as <= coarse * std::max(T(1), std::abs(x)) * prev * prev) break;
         prev = as;
     }
-    // |F''| <= 4 near the surface when rr <= 1/2 (see newton_in_bracket).
+    // Near the surface, when rr <= 1/2: |F''|/2 = |ρ'² + z'² + (ρ - 1)·ρ''| <= 2
+    // (ρ'' <= 1/ρ) and the returned derivative is F'·ρ with ρ <= 1.5, so 4
+    // bounds |F''|/2·ρ for newton_in_bracket.
     return newton_in_bracket<T>(line, a, b, a_inside, x, tol, 80, rr <= T(0.5) ? T(4) : T(0));
 }
 

@@ -44,10 +44,11 @@ inline T poly_taylor2(const T* c, T x, T& deriv, T& half_second) {
 // whenever a step leaves the shrinking bracket. f(x, deriv) returns f and sets
 // f'. Stops once a step is below tol·max(1, |x|) (tol: a few eps, relative,
 // so Newton cannot cycle between neighbouring floats until max_iter).
-// curv > 0: a bound on |f''|·|f'|/|deriv| near the root, for a derivative
-// `deriv` that f may return scaled; Newton's error after a step is at most
-// curv/|deriv|·step², so once that is below the stop rule the step is taken
-// without another evaluation to confirm it.
+// Returns the stepped point x - step, not x, once the step is that small.
+// curv > 0: a bound on |f''|/2·|deriv|/|f'| near the root (f may return a
+// scaled derivative `deriv`). Newton's error after a step is then at most
+// about curv·step²/|deriv|; once that is below the stop rule, the step is
+// taken without another evaluation to confirm it.
 template <typename T, typename F>
 inline T newton_in_bracket(F&& f, T a, T b, bool a_negative, T x, T tol, int max_iter, T curv = T(0)) {
     for (int it = 0; it < max_iter; ++it) {
@@ -68,14 +69,6 @@ inline T newton_in_bracket(F&& f, T a, T b, bool a_negative, T x, T tol, int max
         x = next;
     }
     return x;
-}
-
-// The same from the secant point, given fa = f(a) and fb = f(b).
-template <typename T, typename F>
-inline T bracketed_root(F&& f, T a, T b, T fa, T fb, T tol, int max_iter) {
-    T x = a - fa * (b - a) / (fb - fa);
-    if (!(x > a && x < b)) x = T(0.5) * (a + b);
-    return newton_in_bracket<T>(f, a, b, fa < T(0), x, tol, max_iter);
 }
 
 // A turning point of the quartic P, isolated in a piece (a, b) of the
