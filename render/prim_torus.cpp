@@ -147,8 +147,9 @@ int intersect_torus(const double* p, const Vec3<T>& o, const Vec3<T>& d, Span<T>
     for (int i = 0; i <= nturn; ++i) {
         T x = hi, f = T(1);
         if (i < nturn) {
-            // A turn's first point separates the pieces if F there has the
-            // sign of the extremum, clear of F's rounding (about 4·rr·eps:
+            // A turn's first point separates the pieces if P there has the
+            // sign of the extremum; F has P's sign (P = F·((ρ + 1)² + z² - rr²)
+            // and rr < 1). It must be clear of F's rounding (about 4·rr·eps:
             // the point's rounding times |∇F| = 2·rr) so that undecidable
             // grazes are still decided at the extremum. Otherwise (a near
             // miss or a graze) only the extremum itself can tell.
@@ -156,7 +157,7 @@ int intersect_torus(const double* p, const Vec3<T>& o, const Vec3<T>& d, Span<T>
             T dummy;
             f = line(turn.x, dummy);
             const T clear = T(16) * eps * rr;
-            if (turn.min ? !(f < -clear) : !(f > clear)) {
+            if (!(rr < T(1)) || (turn.min ? !(f < -clear) : !(f > clear))) {
                 refine_turn(c, turn, T(4) * eps);
                 f = line(turn.x, dummy);
             }
