@@ -1,9 +1,10 @@
 // Torus in the XY plane: (ρ - R)² + z² < r². Work in units of R along a unit
 // direction from the point of the line closest to the centre, so every
 // quantity is O(1) whatever the scale, distance or ray length. The quartic
-// (|x|² + 1 - r²)² - 4ρ² only locates the turning points that separate the
-// roots; signs and roots come from F = (ρ - 1)² + z² - r², which has the same
-// sign and roots but no cancellation of O(1) terms for thin tori (r << R).
+// P = (|x|² + 1 - r²)² - 4ρ² only locates the turning points that separate
+// the roots and brings each root close (no sqrt); signs and final roots come
+// from F = (ρ - 1)² + z² - r², which has the same sign and roots but no
+// cancellation of O(1) terms for thin tori (r << R).
 #include <algorithm>
 #include <cmath>
 
@@ -34,6 +35,49 @@ struct TorusLine {
         return f * rho;
     }
 };
+
+// The crossing in the piece [a, b] of the chord, where F changes sign once;
+// the inside end t (F(t) < 0) is at or near a minimum of P. Three stages,
+// each cheaper than the sqrt of an F evaluation:
+//  1. a quadratic model P(t + δ) ≈ P(t) + P'(t)·δ + A·δ² (A: P''(t)/2, or the
+//     curvature of the chord to the outside end if larger, which keeps the
+//     model's root inside the piece); for a thin tube F is nearly quadratic
+//     there, so this is already close;
+//  2. Newton on the polynomial P until its steps predict ~1e-10 (no sqrt; P
+//     loses digits to cancellation for thin tori, so only to start stage 3);
+//  3. bracketed Newton on F, which is exact; usually one step suffices.
+template <typename T>
+T crossing(const TorusLine<T>& line, const T c[5], T a, T b, bool a_inside, T rr, T tol) {
+    const T t = a_inside ? a : b, e = a_inside ? b : a, w = e - t;
+    T dp, hp2, dummy;
+    const T p = poly_taylor2<T, 4>(c, t, dp, hp2);
+    const T pe = poly_eval<T, 4>(c, e, dummy);
+    T x = T(0.5) * (a + b);
+    if (p < T(0) && pe > T(0)) {
+        const T A = std::max(hp2, (pe - p - dp * w) / (w * w));
+        // The model's root on e's side, in the form without cancellation.
+        const T sdp = w > T(0) ? dp : -dp;
+        const T xq = t + std::copysign(T(-2) * p / (std::sqrt(dp * dp - T(4) * A * p) + sdp), w);
+        if (xq > a && xq < b) x = xq;
+    }
+    const T coarse = std::sqrt(std::numeric_limits<T>::epsilon()) * T(0.01);
+    T prev = b - a;
+    for (int it = 0; it < 8; ++it) {
+        T dpx;
+        const T step = poly_eval<T, 4>(c, x, dpx) / dpx;
+        const T next = x - step;
+        if (!(next > a && next < b)) break;  // P's rounding or a far start: F takes over
+        x = next;
+        // Newton's error after this step is about step³/prev² once it converges.
+        const T as = std::abs(step);
+        if (as * as * as <= coarse * std::max(T(1), std::abs(x)) * prev * prev) break;
+        prev = as;
+    }
+    // Near the surface, when rr <= 1/2: |F''|/2 = |ρ'² + z'² + (ρ - 1)·ρ''| <= 2
+    // (ρ'' <= 1/ρ) and the returned derivative is F'·ρ with ρ <= 1.5, so 4
+    // bounds |F''|/2·ρ for newton_in_bracket.
+    return newton_in_bracket<T>(line, a, b, a_inside, x, tol, 80, rr <= T(0.5) ? T(4) : T(0));
+}
 
 }  // namespace
 
@@ -88,10 +132,8 @@ int intersect_torus(const double* p, const Vec3<T>& o, const Vec3<T>& d, Span<T>
     const T k = q2 + T(1) - rr * rr;
     const T c[5] = {k * k - T(4) * gamma, T(4) * b * k - T(8) * beta,
                     T(4) * b * b + T(2) * uu * k - T(4) * alpha, T(4) * uu * b, uu * uu};
-    T cuts[5];
-    cuts[0] = lo;
-    const int nturn = quartic_turning_points(c, lo, hi, T(4) * eps, cuts + 1);
-    cuts[nturn + 1] = hi;
+    Turn<T> turns[3];
+    const int nturn = quartic_turns(c, lo, hi, turns);
 
     // Walk the monotone pieces; the ends are outside, each sign change of F
     // is one crossing. F == 0 counts as outside (the surface is not inside).
@@ -100,13 +142,30 @@ int intersect_torus(const double* p, const Vec3<T>& o, const Vec3<T>& d, Span<T>
     bool inside = false;
     T enter = T(0);
     T f_prev = T(1);  // the ends are outside: any positive value does
+    T x_prev = lo;
     int n = 0;
-    for (int i = 1; i <= nturn + 1; ++i) {
-        T dummy;
-        const T f = i <= nturn ? line(cuts[i], dummy) : T(1);
+    for (int i = 0; i <= nturn; ++i) {
+        T x = hi, f = T(1);
+        if (i < nturn) {
+            // A turn's first point separates the pieces if P there has the
+            // sign of the extremum; F has P's sign (P = F·((ρ + 1)² + z² - rr²)
+            // and rr < 1). It must be clear of F's rounding (about 4·rr·eps:
+            // the point's rounding times |∇F| = 2·rr) so that undecidable
+            // grazes are still decided at the extremum. Otherwise (a near
+            // miss or a graze) only the extremum itself can tell.
+            Turn<T>& turn = turns[i];
+            T dummy;
+            f = line(turn.x, dummy);
+            const T clear = T(16) * eps * rr;
+            if (!(rr < T(1)) || (turn.min ? !(f < -clear) : !(f > clear))) {
+                refine_turn(c, turn, T(4) * eps);
+                f = line(turn.x, dummy);
+            }
+            x = turn.x;
+        }
         const bool in_b = f < T(0);
         if (in_b != inside) {
-            const T root = bracketed_root<T>(line, cuts[i - 1], cuts[i], f_prev, f, tol, 80);
+            const T root = crossing(line, c, x_prev, x, f_prev < T(0), rr, tol);
             if (in_b) {
                 enter = root;
             } else if (n < kMaxSpans) {
@@ -115,6 +174,7 @@ int intersect_torus(const double* p, const Vec3<T>& o, const Vec3<T>& d, Span<T>
             inside = in_b;
         }
         f_prev = f;
+        x_prev = x;
     }
     return n;
 }

@@ -113,3 +113,107 @@ TEST_CASE("torus: grazing the outer and inner equators down to 1e-9", "[prim][to
         }
     }
 }
+
+// The solve starts each crossing from a model of the quartic and takes
+// Newton steps without confirming them, and isolates the roots with a first
+// guess of the turning point unless F there is undecided: these rays are
+// where a wrong start, an unconfirmed step or a wrong guess would show.
+TEST_CASE("torus: lines tangent to the tube anywhere, just inside and just outside", "[prim][torus][accuracy]") {
+    for (double s : {1e-6, 1.0, 1e6}) {
+        for (double ratio : {0.25, 1e-3, 1e-4}) {
+            const double R = s, r = ratio * s;
+            const auto leaf = make_leaf(PrimKind::Torus, {R, r});
+            RayGen gen(511);
+            CheckStats st, sf;
+            int wrong = 0;
+            std::string first;
+            for (int i = 0; i < 3000; ++i) {
+                const double phi = gen.uniform(0, 6.283185307179586);
+                // Top, outer and inner equators first, then anywhere on the tube.
+                const double theta = i % 4 == 0 ? 1.5707963267948966 : i % 4 == 1 ? 0.0
+                                     : i % 4 == 2 ? 3.141592653589793 : gen.uniform(0, 6.283185307179586);
+                const dvec3 c(std::cos(phi), std::sin(phi), 0);
+                const dvec3 n = std::cos(theta) * c + dvec3(0, 0, std::sin(theta));
+                const dvec3 x = R * c + r * n;  // on the surface, outward normal n
+                dvec3 t = gen.unit();
+                t = glm::normalize(t - glm::dot(t, n) * n);
+                const double back = i % 2 ? 2 * s : 1e3 * s;
+                // Offsets along the normal, from 1e6 down to 64 times the
+                // tolerance band at the foot (capped inside the tube).
+                const double band = 16 * 0x1p-52 * (s + back + glm::length(x));
+                for (double k : {1e6, 1e3, 64.0}) {
+                    const double off = std::min(k * band, 0.5 * r) * (i % 3 ? 1 : -1);
+                    const dvec3 foot = x + off * n, dir = t * gen.uniform(0.1, 10);
+                    const dvec3 o = foot - back * t;
+                    kerf::csg::Span<double> sp[kerf::csg::kMaxSpans];
+                    const int m = check_ray<double>(leaf, o, dir, 16, s, st, sp);
+                    check_ray<float>(leaf, o, dir, 16, s, sf);
+                    // The foot is inside by |off| or outside by off: in a span or not.
+                    const double tf = back / glm::length(dir);
+                    bool in = false;
+                    for (int j = 0; j < m; ++j) in |= sp[j].t0 < tf && tf < sp[j].t1;
+                    if (in != (off < 0) && wrong++ == 0) first = describe(leaf, o, dir);
+                }
+            }
+            INFO("scale " << s << " ratio " << ratio << ": " << first << " | " << st.first_failure << " / "
+                          << sf.first_failure);
+            CHECK(wrong == 0);
+            CHECK(st.failures == 0);
+            CHECK(sf.failures == 0);
+        }
+    }
+}
+
+TEST_CASE("torus: horizontal lines grazing the hole's wall at any height and bearing", "[prim][torus]") {
+    RayGen gen(512);
+    for (double s : {1e-6, 1.0, 1e6}) {
+        for (double ratio : {0.25, 1e-3, 1e-4}) {
+            const double R = s, r = ratio * s;
+            const auto leaf = make_leaf(PrimKind::Torus, {R, r});
+            for (double h : {0.0, 0.5, 0.99}) {
+                // At height z the tube's section is the annulus R - w < ρ < R + w.
+                const double z = h * r, w = std::sqrt((r - z) * (r + z));
+                for (double delta : {1e-3, 1e-6, 1e-9}) {
+                    const double phi = gen.uniform(0, 6.283185307179586);
+                    const dvec3 dir(std::cos(phi), std::sin(phi), 0), side(-std::sin(phi), std::cos(phi), 0);
+                    for (double y : {R - w * (1 + delta), R - w * (1 - delta)}) {
+                        const dvec3 o = -3 * s * dir + y * side + dvec3(0, 0, z);
+                        const double so = std::sqrt((R + w - y) * (R + w + y));
+                        INFO("scale " << s << " ratio " << ratio << " height " << h << " delta " << delta << " y " << y);
+                        if (y < R - w) {  // through the hole: two spans around a short gap
+                            const double si = std::sqrt((R - w - y) * (R - w + y));
+                            CHECK(compare_spans<double>(leaf, o, dir, {{3 * s - so, 3 * s - si}, {3 * s + si, 3 * s + so}},
+                                                        64 * 0x1p-52 * s * s / si) == "");
+                        } else {  // touching the wall from inside the tube: one span
+                            CHECK(compare_spans<double>(leaf, o, dir, {{3 * s - so, 3 * s + so}},
+                                                        64 * 0x1p-52 * s * s / so) == "");
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
+TEST_CASE("torus: thin tori (r/R = 1e-4, 1e-6) seen from 1e6 sizes away", "[prim][torus][accuracy]") {
+    for (double ratio : {1e-4, 1e-6}) {
+        for (double s : {1e-6, 1.0, 1e6}) {
+            const double R = s, r = ratio * s;
+            const auto leaf = make_leaf(PrimKind::Torus, {R, r});
+            // Straight down through the core circle: the span [D - r, D + r].
+            const double D = 1e6 * s;
+            CHECK(compare_spans<double>(leaf, {0, R, D}, {0, 0, -1}, {{D - r, D + r}}, 16 * 0x1p-52 * 2 * D) == "");
+            RayGen gen(513);
+            CheckStats st;
+            for (int i = 0; i < 4000; ++i) {
+                const double phi = gen.uniform(0, 6.283185307179586);
+                const dvec3 aim = s * dvec3(std::cos(phi), std::sin(phi), 0) + 0.9 * r * gen.unit();
+                const dvec3 u = gen.unit();
+                check_ray<double>(leaf, aim - D * u, u * gen.uniform(0.1, 10), 16, s, st);
+            }
+            INFO("ratio " << ratio << " scale " << s << ": " << st.first_failure);
+            CHECK(st.failures == 0);
+            CHECK(st.hits == st.rays);  // every ray aims inside the tube
+        }
+    }
+}
