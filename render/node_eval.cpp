@@ -61,13 +61,16 @@ std::uint32_t eval_leaf(EvalState& es, const Node& n, double a, double b) {
     const glm::dvec3 lo = leaf.object_from_world.point(es.o);
     const glm::dvec3 ld = leaf.object_from_world.vector(es.d);
     csg::Span<double> spans[csg::kMaxSpans];
+    // Span ends outside the window (with room for the degenerate rule) may
+    // be reported inexactly: nothing reads them (see eval's contract).
+    const double wa = a - 4 * es.eps, wb = b + 4 * es.eps;
     int count;
     if (es.impl->use_float) {
         csg::Span<float> fs[csg::kMaxSpans];
-        count = csg::intersect_leaf<float>(leaf, glm::vec3(lo), glm::vec3(ld), fs);
+        count = csg::intersect_leaf<float>(leaf, glm::vec3(lo), glm::vec3(ld), fs, float(wa), float(wb));
         for (int i = 0; i < count; ++i) spans[i] = {double(fs[i].t0), double(fs[i].t1), fs[i].part0, fs[i].part1};
     } else {
-        count = csg::intersect_leaf<double>(leaf, lo, ld, spans);
+        count = csg::intersect_leaf<double>(leaf, lo, ld, spans, wa, wb);
     }
     es.scratch->counters.interval_tests++;
     es.scratch->counters.spans_found += std::uint64_t(count);

@@ -27,7 +27,8 @@ constexpr std::uint8_t kPartNone = 255;  // infinite span end (half-spaces)
 template <typename T> int intersect_sphere(const double* p, const Vec3<T>& o, const Vec3<T>& d, Span<T>* out);
 template <typename T> int intersect_box(const double* p, const Vec3<T>& o, const Vec3<T>& d, Span<T>* out);
 template <typename T> int intersect_cylinder(const double* p, const Vec3<T>& o, const Vec3<T>& d, Span<T>* out);
-template <typename T> int intersect_torus(const double* p, const Vec3<T>& o, const Vec3<T>& d, Span<T>* out);
+template <typename T>
+int intersect_torus(const double* p, const Vec3<T>& o, const Vec3<T>& d, Span<T>* out, T wa, T wb);
 template <typename T> int intersect_plane(const double* p, const Vec3<T>& o, const Vec3<T>& d, Span<T>* out);
 template <typename T> int intersect_paraboloid(const double* p, const Vec3<T>& o, const Vec3<T>& d, Span<T>* out);
 template <typename T> int intersect_hyperboloid(const double* p, const Vec3<T>& o, const Vec3<T>& d, Span<T>* out);

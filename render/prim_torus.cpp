@@ -79,10 +79,33 @@ T crossing(const TorusLine<T>& line, const T c[5], T a, T b, bool a_inside, T rr
     return newton_in_bracket<T>(line, a, b, a_inside, x, tol, 80, rr <= T(0.5) ? T(4) : T(0));
 }
 
+// The crossing in [a, b] (inside at a if a_inside), when only the window
+// [wlo, whi] needs exact roots: a crossing outside it is reported at a point
+// between it and the window (still outside), so rays that start inside a
+// tube or leave the window inside one skip a solve. One F evaluation at a
+// window end inside the piece decides on which side the crossing lies.
+template <typename T>
+T windowed_crossing(const TorusLine<T>& line, const T c[5], T a, T b, bool a_inside, T wlo, T whi, T rr, T tol) {
+    if (b <= wlo) return b;
+    if (a >= whi) return a;
+    T dummy;
+    if (a < wlo) {
+        const bool w_inside = line(wlo, dummy) < T(0);
+        if (w_inside != a_inside) return wlo;  // already crossed before the window
+        a = wlo;
+    }
+    if (b > whi) {
+        const bool w_inside = line(whi, dummy) < T(0);
+        if (w_inside == a_inside) return whi;  // crosses only after the window
+        b = whi;
+    }
+    return crossing(line, c, a, b, a_inside, rr, tol);
+}
+
 }  // namespace
 
 template <typename T>
-int intersect_torus(const double* p, const Vec3<T>& o, const Vec3<T>& d, Span<T>* out) {
+int intersect_torus(const double* p, const Vec3<T>& o, const Vec3<T>& d, Span<T>* out, T wa, T wb) {
     constexpr T eps = std::numeric_limits<T>::epsilon();
     const T R = T(p[0]);
     const T rr = T(p[1] / p[0]);
@@ -139,6 +162,8 @@ int intersect_torus(const double* p, const Vec3<T>& o, const Vec3<T>& d, Span<T>
     // is one crossing. F == 0 counts as outside (the surface is not inside).
     const T scale = R / len;  // λ -> t
     const T tol = T(2) * eps;
+    // The window in λ (see windowed_crossing).
+    const T wlo = (wa - tc) / scale, whi = (wb - tc) / scale;
     bool inside = false;
     T enter = T(0);
     T f_prev = T(1);  // the ends are outside: any positive value does
@@ -165,7 +190,7 @@ int intersect_torus(const double* p, const Vec3<T>& o, const Vec3<T>& d, Span<T>
         }
         const bool in_b = f < T(0);
         if (in_b != inside) {
-            const T root = crossing(line, c, x_prev, x, f_prev < T(0), rr, tol);
+            const T root = windowed_crossing(line, c, x_prev, x, f_prev < T(0), wlo, whi, rr, tol);
             if (in_b) {
                 enter = root;
             } else if (n < kMaxSpans) {
@@ -187,7 +212,8 @@ glm::dvec3 normal_torus(const double* p, const glm::dvec3& x, std::uint8_t) {
     return {x.x - s * x.x, x.y - s * x.y, x.z};
 }
 
-template int intersect_torus<float>(const double*, const Vec3<float>&, const Vec3<float>&, Span<float>*);
-template int intersect_torus<double>(const double*, const Vec3<double>&, const Vec3<double>&, Span<double>*);
+template int intersect_torus<float>(const double*, const Vec3<float>&, const Vec3<float>&, Span<float>*, float, float);
+template int intersect_torus<double>(const double*, const Vec3<double>&, const Vec3<double>&, Span<double>*, double,
+                                     double);
 
 }  // namespace kerf::csg

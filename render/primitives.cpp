@@ -6,12 +6,13 @@
 namespace kerf::csg {
 
 template <typename T>
-int intersect_leaf(const Leaf& leaf, const glm::vec<3, T>& o, const glm::vec<3, T>& d, Span<T> out[kMaxSpans]) {
+int intersect_leaf(const Leaf& leaf, const glm::vec<3, T>& o, const glm::vec<3, T>& d, Span<T> out[kMaxSpans], T wa,
+                   T wb) {
     switch (leaf.kind) {
         case PrimKind::Sphere: return intersect_sphere(leaf.p, o, d, out);
         case PrimKind::Box: return intersect_box(leaf.p, o, d, out);
         case PrimKind::Cylinder: return intersect_cylinder(leaf.p, o, d, out);
-        case PrimKind::Torus: return intersect_torus(leaf.p, o, d, out);
+        case PrimKind::Torus: return intersect_torus(leaf.p, o, d, out, wa, wb);
         case PrimKind::Plane: return intersect_plane(leaf.p, o, d, out);
         case PrimKind::Paraboloid: return intersect_paraboloid(leaf.p, o, d, out);
         case PrimKind::Hyperboloid: return intersect_hyperboloid(leaf.p, o, d, out);
@@ -34,7 +35,9 @@ glm::dvec3 object_normal(const Leaf& leaf, const glm::dvec3& p, std::uint8_t par
     return {0, 0, 1};
 }
 
-template int intersect_leaf<float>(const Leaf&, const glm::vec<3, float>&, const glm::vec<3, float>&, Span<float>*);
-template int intersect_leaf<double>(const Leaf&, const glm::vec<3, double>&, const glm::vec<3, double>&, Span<double>*);
+template int intersect_leaf<float>(const Leaf&, const glm::vec<3, float>&, const glm::vec<3, float>&, Span<float>*, float,
+                                   float);
+template int intersect_leaf<double>(const Leaf&, const glm::vec<3, double>&, const glm::vec<3, double>&, Span<double>*,
+                                    double, double);
 
 }  // namespace kerf::csg

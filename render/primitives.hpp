@@ -5,6 +5,7 @@
 // solid simply sees a span with t0 < tnear, and half-spaces give infinite ends.
 #pragma once
 #include <cstdint>
+#include <limits>
 
 #include <glm/glm.hpp>
 
@@ -24,9 +25,13 @@ constexpr int kMaxSpans = 2;  // every analytic primitive: at most 2 spans per l
 
 // Sorted, disjoint spans of positive length (tangent/zero-length contacts are
 // dropped: see docs/accuracy.md for the degenerate-case rule). Returns count.
+// Only the window [wa, wb] is asked for: a solver may then report a span end
+// that lies outside the window at any value outside it (on the same side),
+// instead of finding it exactly; ends inside the window are exact. (The
+// torus uses this to skip the roots of its quartic the window does not need.)
 template <typename T>
-int intersect_leaf(const Leaf& leaf, const glm::vec<3, T>& o, const glm::vec<3, T>& d,
-                   Span<T> out[kMaxSpans]);
+int intersect_leaf(const Leaf& leaf, const glm::vec<3, T>& o, const glm::vec<3, T>& d, Span<T> out[kMaxSpans],
+                   T wa = -std::numeric_limits<T>::infinity(), T wb = std::numeric_limits<T>::infinity());
 
 // Outward object-space normal (not necessarily unit) at p on surface `part`.
 glm::dvec3 object_normal(const Leaf& leaf, const glm::dvec3& p, std::uint8_t part);

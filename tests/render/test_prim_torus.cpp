@@ -1,5 +1,8 @@
 #include <catch2/catch.hpp>
 
+#include <cmath>
+#include <limits>
+
 #include "prim_check.hpp"
 
 using namespace kerf::test;
@@ -215,5 +218,65 @@ TEST_CASE("torus: thin tori (r/R = 1e-4, 1e-6) seen from 1e6 sizes away", "[prim
             CHECK(st.failures == 0);
             CHECK(st.hits == st.rays);  // every ray aims inside the tube
         }
+    }
+}
+
+TEMPLATE_TEST_CASE("torus: a window gives the same spans inside it", "[prim][torus][window]", float, double) {
+    // intersect_leaf's window contract: span ends inside [wa, wb] are what
+    // the unwindowed solve gives (to the solver's tolerance: a root found
+    // from a narrower bracket may differ in the last bits); ends outside may
+    // move, but only to another point on the same side of the window. So
+    // coverage anywhere inside the window is unchanged. Rays aimed at the
+    // tube, windows starting inside, before and after the tube's spans.
+    using T = TestType;
+    const T tol = T(64) * std::numeric_limits<T>::epsilon() * T(4);  // |t| <= 4 here
+    for (const double ratio : {0.25, 1e-3}) {
+        const auto leaf = make_leaf(PrimKind::Torus, {1.0, ratio});
+        RayGen gen(811);
+        int moved_ends = 0, windows = 0;
+        for (int i = 0; i < 20000; ++i) {
+            const double phi = gen.uniform(0, 6.283185307179586);
+            const dvec3 aim = dvec3(std::cos(phi), std::sin(phi), 0) + ratio * 1.2 * gen.unit();
+            const dvec3 u = gen.unit();
+            const glm::vec<3, T> o(aim - 3.0 * u), d(u * gen.uniform(0.5, 2));
+            kerf::csg::Span<T> full[kerf::csg::kMaxSpans], part[kerf::csg::kMaxSpans];
+            const int nf = kerf::csg::intersect_leaf<T>(leaf, o, d, full);
+            if (nf == 0) continue;
+            const kerf::csg::Span<T>& s = full[i % nf];
+            const T len = s.t1 - s.t0;
+            const T wa = T(i % 3 == 0 ? s.t0 + 0.3 * len : s.t0 - len * gen.uniform(-0.5, 0.5));
+            const T wb = T(wa + len * gen.uniform(0.05, 1.5));
+            const int np = kerf::csg::intersect_leaf<T>(leaf, o, d, part, wa, wb);
+            ++windows;
+            auto near_end = [&](const kerf::csg::Span<T>* sp, int n, T t) {
+                for (int k = 0; k < n; ++k)
+                    if (std::abs(sp[k].t0 - t) <= tol || std::abs(sp[k].t1 - t) <= tol) return true;
+                return false;
+            };
+            auto covered = [](const kerf::csg::Span<T>* sp, int n, T t) {
+                for (int k = 0; k < n; ++k)
+                    if (sp[k].t0 < t && t < sp[k].t1) return true;
+                return false;
+            };
+            INFO("ratio " << ratio << " ray " << i << " window " << wa << " .. " << wb);
+            // Every end inside the window appears in both lists; an end of
+            // the windowed list found in neither is outside the window.
+            for (int k = 0; k < nf; ++k)
+                for (const T e : {full[k].t0, full[k].t1})
+                    if (e > wa + tol && e < wb - tol) CHECK(near_end(part, np, e));
+            for (int m = 0; m < np; ++m)
+                for (const T e : {part[m].t0, part[m].t1})
+                    if (!near_end(full, nf, e)) {
+                        CHECK((e <= wa + tol || e >= wb - tol));
+                        ++moved_ends;
+                    }
+            for (int k = 1; k < 16; ++k) {
+                const T t = wa + (wb - wa) * T(k) / T(16);
+                if (!near_end(full, nf, t)) CHECK(covered(full, nf, t) == covered(part, np, t));
+            }
+        }
+        INFO(windows << " windows, " << moved_ends << " ends not solved");
+        CHECK(windows > 10000);
+        CHECK(moved_ends > windows / 4);  // the window must actually save solves
     }
 }
