@@ -23,7 +23,7 @@ CameraModel::CameraModel(const csg::Camera& c, int width, int height)
     v_scale_ = 2 * half_h_ / height_;
 }
 
-void CameraModel::ray(double px, double py, glm::dvec3& origin, glm::dvec3& direction) const {
+void CameraModel::ray_unnormalised(double px, double py, glm::dvec3& origin, glm::dvec3& direction) const {
     const double u = px * u_scale_ - half_w_;
     const double v = half_h_ - py * v_scale_;
     if (orthographic_) {
@@ -31,8 +31,13 @@ void CameraModel::ray(double px, double py, glm::dvec3& origin, glm::dvec3& dire
         direction = forward_;
     } else {
         origin = position_;
-        direction = glm::normalize(forward_ + u * right_ + v * up_);
+        direction = forward_ + u * right_ + v * up_;
     }
+}
+
+void CameraModel::ray(double px, double py, glm::dvec3& origin, glm::dvec3& direction) const {
+    ray_unnormalised(px, py, origin, direction);
+    if (!orthographic_) direction = glm::normalize(direction);
 }
 
 }  // namespace kerf::render

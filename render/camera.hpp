@@ -15,6 +15,11 @@ public:
     // pixel (x, y)'s centre. The direction is unit length, so t is the
     // Euclidean distance (orthographic: from the image plane).
     void ray(double px, double py, glm::dvec3& origin, glm::dvec3& direction) const;
+    // The same ray with the direction left unnormalised (pinhole: from the
+    // eye to the image-plane point; orthographic: unit anyway). For shading,
+    // where only the hit point matters: a square root and a division less
+    // per pixel (~5 % of a simple render).
+    void ray_unnormalised(double px, double py, glm::dvec3& origin, glm::dvec3& direction) const;
 
 private:
     glm::dvec3 position_, forward_, right_, up_;

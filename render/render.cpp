@@ -118,7 +118,7 @@ Image render(const csg::Scene& scene, const RenderOptions& options, RenderStats*
         }
         glm::dvec3 sum(0.0);
         if (spp == 1) {  // the pixel centre: no jitter, no generator to seed
-            camera.ray(x + 0.5, y + 0.5, o, d);
+            camera.ray_unnormalised(x + 0.5, y + 0.5, o, d);
             ++ts.rays.primary;
             sum = shader.radiance(TraceRay{o, d, 0, std::numeric_limits<double>::infinity()}, 0, ts);
         } else {
@@ -126,7 +126,7 @@ Image render(const csg::Scene& scene, const RenderOptions& options, RenderStats*
             splitmix64(rng);
             for (int i = 0; i < spp; ++i) {
                 const glm::dvec2 s = sample_offset(i, spp, rng);
-                camera.ray(x + s.x, y + s.y, o, d);
+                camera.ray_unnormalised(x + s.x, y + s.y, o, d);
                 ++ts.rays.primary;
                 sum += shader.radiance(TraceRay{o, d, 0, std::numeric_limits<double>::infinity()}, 0, ts);
             }
