@@ -77,6 +77,7 @@ int run(const cli::Options& o) {
     ro.crop = o.crop;
     ro.seed = o.seed;
     ro.double_precision = o.double_precision;
+    ro.srgb8 = render::is_8bit_output(o.output);  // colour for an 8-bit file: store its bytes directly
 
     render::RenderStats stats;
     render::Image image;

@@ -23,6 +23,7 @@
 
 #include "render/oiio_loader.hpp"
 #include "render/png_file.hpp"
+#include "render/srgb.hpp"
 #include "render/render.hpp"
 
 namespace kerf::render {
@@ -39,48 +40,6 @@ std::string lower_extension(const fs::path& p) {
 
 bool is_float_format(const std::string& ext) {
     return ext == ".exr" || ext == ".tif" || ext == ".tiff" || ext == ".hdr" || ext == ".pfm";
-}
-
-// The 8-bit sRGB code of a linear value without a pow per channel: code k
-// starts where the encoded value reaches (k - 0.5) / 255, so counting the
-// thresholds at or below the value gives round(255 * encode(value)). A table
-// over 2^14 equal bins gives the count at the bin's start; the steepest part
-// of the curve (near 0) crosses at most one more threshold within a bin.
-struct SrgbTable {
-    static constexpr int kBins = 1 << 14;
-    std::array<float, 256> threshold{};     // [k]: where code k + 1 starts; [255] = +inf
-    std::array<std::uint8_t, kBins> first{};  // code at the start of each bin
-    SrgbTable() {
-        for (int k = 1; k <= 255; ++k) {
-            const double e = (k - 0.5) / 255.0;
-            threshold[k - 1] = float(e <= 0.04045 ? e / 12.92 : std::pow((e + 0.055) / 1.055, 2.4));
-        }
-        threshold[255] = std::numeric_limits<float>::infinity();
-        int code = 0;
-        for (int b = 0; b < kBins; ++b) {
-            while (float(b) / kBins >= threshold[code]) ++code;
-            first[b] = std::uint8_t(code);
-        }
-        // srgb_byte steps at most one threshold past a bin's first code: true
-        // when no bin holds two thresholds (the narrowest gap, near 0, is
-        // 1/(255·12.92) ≈ 3.0e-4 > 1/2^14 ≈ 6.1e-5).
-        for (int k = 0; k + 1 < 255; ++k)
-            if (int(threshold[k] * kBins) == int(threshold[k + 1] * kBins)) std::abort();
-    }
-};
-
-const SrgbTable& srgb_table() {
-    static const SrgbTable table;
-    return table;
-}
-
-// The table is passed in, so the loop over millions of channels carries no
-// static-initialisation guard; one threshold step suffices (see SrgbTable).
-inline std::uint8_t srgb_byte(const SrgbTable& table, float linear) {
-    if (!(linear > 0)) return 0;  // NaN too
-    if (linear >= 1) return 255;
-    const int code = table.first[int(linear * SrgbTable::kBins)];
-    return std::uint8_t(code + (linear >= table.threshold[code] ? 1 : 0));
 }
 
 std::uint8_t unit_byte(float v) { return std::uint8_t(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f); }
@@ -153,24 +112,32 @@ void check_output_path(const std::string& path) {
     ::unlink(probe.c_str());
 }
 
+bool is_8bit_output(const std::string& path) { return !is_float_format(lower_extension(fs::path(path))); }
+
 void write_image(const Image& image, const std::string& path) {
+    const std::size_t size = std::size_t(image.width) * image.height * image.channels;
+    const bool as_bytes = !image.srgb8.empty();
     if (image.width < 1 || image.height < 1 || image.channels < 1 ||
-        image.pixels.size() != std::size_t(image.width) * image.height * image.channels)
+        (as_bytes ? image.srgb8.size() != size || image.content != ImageContent::Color
+                  : image.pixels.size() != size))
         throw ImageWriteError("cannot write " + path + ": the image is empty or inconsistent");
     const fs::path target(path);
     const std::string ext = lower_extension(target);
     const bool as_float = is_float_format(ext);
+    if (as_float && as_bytes)
+        throw ImageWriteError("cannot write " + path + ": the image was rendered in 8 bits, the format holds floats");
     const bool srgb = !as_float && image.content == ImageContent::Color;
     const std::string tmp = temp_name(target);
-    BigVector<std::uint8_t> bytes;
-    if (!as_float) bytes = encode_8bit(image);
+    BigVector<std::uint8_t> encoded;
+    if (!as_float && !as_bytes) encoded = encode_8bit(image);
+    const std::uint8_t* bytes = as_bytes ? image.srgb8.data() : encoded.data();
     std::string message;
     if (ext == ".png") {
-        message = write_png(tmp, bytes.data(), image.width, image.height, image.channels, srgb);
+        message = write_png(tmp, bytes, image.width, image.height, image.channels, srgb);
     } else {
         const OiioModule& oiio = oiio_module();
         char error[512] = "";
-        const void* data = as_float ? static_cast<const void*>(image.pixels.data()) : bytes.data();
+        const void* data = as_float ? static_cast<const void*>(image.pixels.data()) : bytes;
         if (!oiio.write(tmp.c_str(), data, as_float, image.width, image.height, image.channels, srgb, error,
                         sizeof error))
             message = error[0] ? error : "write failed";

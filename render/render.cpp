@@ -22,6 +22,7 @@
 #include "render/camera.hpp"
 #include "render/csg_tracer.hpp"
 #include "render/shading.hpp"
+#include "render/srgb.hpp"
 
 namespace kerf::render {
 
@@ -88,7 +89,21 @@ Image render(const csg::Scene& scene, const RenderOptions& options, RenderStats*
         case Aov::Normal: image.channels = 3; image.content = ImageContent::Normal; break;
         case Aov::Hits: image.channels = 1; image.content = ImageContent::Hits; break;
     }
-    image.pixels.resize(std::size_t(image.width) * image.height * image.channels);  // not zeroed
+    const bool to_bytes = options.srgb8 && options.aov == Aov::None;
+    const std::size_t values = std::size_t(image.width) * image.height * image.channels;
+    if (to_bytes) image.srgb8.resize(values); else image.pixels.resize(values);  // not zeroed
+    const SrgbTable& srgb = srgb_table();
+    // A colour pixel's three values: linear floats, or their sRGB codes.
+    auto store = [&](int x, int y, const glm::dvec3& c) {
+        const std::size_t at = (std::size_t(y - region[1]) * image.width + std::size_t(x - region[0])) * 3;
+        if (to_bytes) {
+            image.srgb8[at] = srgb_byte(srgb, float(c.x));
+            image.srgb8[at + 1] = srgb_byte(srgb, float(c.y));
+            image.srgb8[at + 2] = srgb_byte(srgb, float(c.z));
+        } else {
+            image.pixels[at] = float(c.x), image.pixels[at + 1] = float(c.y), image.pixels[at + 2] = float(c.z);
+        }
+    };
 
     const int tiles_x = (image.width + kTile - 1) / kTile, tiles_y = (image.height + kTile - 1) / kTile;
     const int tiles = tiles_x * tiles_y;
@@ -97,9 +112,9 @@ Image render(const csg::Scene& scene, const RenderOptions& options, RenderStats*
     int tiles_done = 0;
 
     auto render_pixel = [&](int x, int y, ThreadState& ts) {
-        float* out = &image.at(x - region[0], y - region[1], 0);
         glm::dvec3 o, d;
         if (options.aov != Aov::None) {  // AOVs: one ray through the pixel centre
+            float* out = &image.at(x - region[0], y - region[1], 0);
             camera.ray(x + 0.5, y + 0.5, o, d);
             ++ts.rays.primary;
             const std::uint64_t spans_before = ts.scratch.counters.spans_found;
@@ -132,15 +147,15 @@ Image render(const csg::Scene& scene, const RenderOptions& options, RenderStats*
             }
             sum /= double(spp);
         }
-        out[0] = float(sum.x), out[1] = float(sum.y), out[2] = float(sum.z);
+        store(x, y, sum);
     };
 
     // A pixel of a tile that misses the whole scene: exactly what tracing
     // would store (the same sum for several samples), so a pixel's value
     // never depends on which tile it falls in (crops move tile borders).
     auto miss_pixel = [&](int x, int y, ThreadState& ts) {
-        float* out = &image.at(x - region[0], y - region[1], 0);
         if (options.aov != Aov::None) {
+            float* out = &image.at(x - region[0], y - region[1], 0);
             ++ts.rays.primary;
             for (int c = 0; c < image.channels; ++c)
                 out[c] = options.aov == Aov::Depth ? std::numeric_limits<float>::infinity() : 0.0f;
@@ -153,7 +168,7 @@ Image render(const csg::Scene& scene, const RenderOptions& options, RenderStats*
             sum /= double(spp);
         }
         ts.rays.primary += std::uint64_t(spp);
-        out[0] = float(sum.x), out[1] = float(sum.y), out[2] = float(sum.z);
+        store(x, y, sum);
     };
 
     arena.execute([&] {

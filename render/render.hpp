@@ -27,6 +27,10 @@ struct RenderOptions {
     std::uint64_t seed = 0;          // jitter seed; pixels are seeded by (seed, x, y)
     bool double_precision = true;    // false: primitives intersected in float
     int max_reflect_depth = 4;
+    // Colour only: store 8-bit sRGB codes (Image::srgb8) instead of linear
+    // floats, for 8-bit files: a quarter of the memory, and fresh memory is
+    // expensive (the kernel clears every page; 13 % of a 2048² render).
+    bool srgb8 = false;
 };
 
 // What the pixels mean; write_image() uses it to encode 8-bit files.
@@ -35,9 +39,12 @@ enum class ImageContent : std::uint8_t { Color, Depth, Normal, Hits };
 // Row-major, row 0 at the top, `channels` interleaved floats per pixel.
 // Colour is linear RGB; Depth: distance (+inf on miss); Normal: world unit
 // vector (0 on miss); Hits: count of primitive intervals found.
+// Rendered with RenderOptions::srgb8, `pixels` stays empty and `srgb8`
+// holds the same layout as bytes: srgb_byte() of what pixels would hold.
 struct Image {
     int width = 0, height = 0, channels = 0;
     BigVector<float> pixels;  // every element written by render()
+    BigVector<std::uint8_t> srgb8;
     ImageContent content = ImageContent::Color;
     float& at(int x, int y, int c) { return pixels[(std::size_t(y) * width + x) * channels + c]; }
     float at(int x, int y, int c) const { return pixels[(std::size_t(y) * width + x) * channels + c]; }
@@ -74,5 +81,9 @@ void check_output_path(const std::string& path);
 // Written to a temporary file in the same folder, then renamed over `path`,
 // so a failed write leaves an existing file intact.
 void write_image(const Image& image, const std::string& path);
+
+// Whether write_image() stores `path` in 8 bits (then a colour render can
+// use RenderOptions::srgb8 and lose nothing).
+bool is_8bit_output(const std::string& path);
 
 }  // namespace kerf::render

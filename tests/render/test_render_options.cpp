@@ -2,6 +2,8 @@
 // stats, preview and option validation.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 
 #include "render/render.hpp"
@@ -139,4 +141,38 @@ TEST_CASE("rendering leaves the caller's floating-point mode alone", "[render]")
     render::render(busy_scene(), o);
     volatile double half = tiny * 0.5;
     CHECK(half != 0.0);
+}
+
+TEST_CASE("rendering straight to 8-bit sRGB gives the bytes the float image encodes to", "[render][srgb8]") {
+    // busy_scene: reflections, cut faces, a ground plane, two lights; spp 3
+    // and a crop so jittered sums and tile borders are covered too.
+    const csg::Scene s = busy_scene();
+    for (const bool crop : {false, true}) {
+        render::RenderOptions o;
+        o.width = 70;
+        o.height = 45;
+        o.spp = 3;
+        o.seed = 11;
+        if (crop) o.crop = std::array<int, 4>{13, 5, 61, 44};
+        const render::Image floats = render::render(s, o);
+        o.srgb8 = true;
+        const render::Image bytes = render::render(s, o);
+        REQUIRE(bytes.pixels.empty());
+        REQUIRE(bytes.srgb8.size() == floats.pixels.size());
+        // The independent reference: the sRGB formula on the float image.
+        int differ = 0, near_half = 0;
+        for (std::size_t i = 0; i < floats.pixels.size(); ++i) {
+            const double x = std::clamp(double(floats.pixels[i]), 0.0, 1.0);
+            const double e = 255 * (x <= 0.0031308 ? 12.92 * x : 1.055 * std::pow(x, 1 / 2.4) - 0.055);
+            if (long(bytes.srgb8[i]) == std::lround(e)) continue;
+            ++differ;
+            near_half += std::abs(e - std::floor(e) - 0.5) < 1e-4;  // float rounding at a half-way point
+        }
+        INFO((crop ? "crop" : "whole") << ": " << differ << " bytes differ from the formula");
+        CHECK(differ == near_half);
+        // And a colour image rendered as bytes writes only to 8-bit formats.
+        CHECK(render::is_8bit_output("x.png"));
+        CHECK_FALSE(render::is_8bit_output("x.EXR"));
+        CHECK_THROWS_AS(render::write_image(bytes, "/tmp/never.exr"), render::ImageWriteError);
+    }
 }
