@@ -4,7 +4,8 @@
 // and the union / intersection / difference combinations live in this one
 // file because they call each other recursively on the hot path and must
 // stay inlinable into each other. Mesh leaves are in mesh_leaves.cpp, the
-// point-query first entry of big differences in difference_first_entry.cpp.
+// point-query first entry of big differences in difference_first_entry.cpp,
+// the clearance fast path of small ones in difference_fast_path.cpp.
 #include <algorithm>
 
 #include "render/primitives.hpp"
@@ -138,68 +139,6 @@ std::uint32_t eval_intersection(EvalState& es, const Node& n, double a, double b
     return count;
 }
 
-// The fast path of First/Any for a difference with few subtrahends. A point
-// of minuend span i (its entry; for Any, the middle of its part inside the
-// window) that is farther than twice the degenerate rule's reach from every
-// subtrahend is in the difference, and gathering spans would give the same
-// answer. For First, when only a few subtrahends are near the entry (a ray
-// into a groove), only those are intersected; the piece they leave starts
-// at e, and e is the answer if it is clear of all the others.
-// Minuend spans are at base.., scratch from sbase on. Returns kFound with
-// the piece written at `base`, kPast if this span starts past the window
-// (so do all later ones), kNone if this span has no entry, kUnknown if not
-// proven (gather every subtrahend).
-enum FastPath : std::uint32_t { kUnknown, kFound, kPast, kNone };
-
-std::uint32_t first_piece_if_clear(EvalState& es, const Node& n, std::uint32_t base, std::uint32_t sbase,
-                                   std::uint32_t i, double a, double b, Need need) {
-    SpanStack& st = es.scratch->stack;
-    Span piece = *st.at(base + i);
-    double probe;
-    if (need == Need::First) {
-        if (!(piece.t0 > a)) return kUnknown;  // starts inside the minuend: the entry is later
-        if (piece.t0 > b) return kPast;
-        probe = piece.t0;
-    } else {
-        const double p0 = std::max(a, piece.t0), p1 = std::min(b, piece.t1);
-        if (!(p1 - p0 > 2 * es.eps)) return kUnknown;
-        probe = 0.5 * (p0 + p1);
-        piece.t0 = probe - es.eps;  // a sliver longer than eps answers Any
-        piece.t1 = probe + es.eps;
-    }
-    const double margin = 2 * es.eps * es.len;
-    const std::uint32_t* subs = &es.impl->scene.children[n.first + 1];
-    const std::uint32_t nsub = n.count - 1;
-    constexpr std::uint32_t kMaxNear = 2;
-    std::uint32_t near[kMaxNear], nnear = 0;
-    for (std::uint32_t k = 0; k < nsub; ++k) {
-        if (es.clear_of(subs[k], es.o + probe * es.d, margin)) continue;
-        if (need != Need::First || nnear == kMaxNear) return kUnknown;
-        near[nnear++] = k;
-    }
-    if (nnear > 0) {
-        // Span i minus the near subtrahends, on the span's part in the window.
-        const double wb = std::min(b, piece.t1);
-        st.resize(sbase);
-        for (std::uint32_t j = 0; j < nnear; ++j) es.eval(subs[near[j]], probe, wb, Need::All);
-        int r = 0;
-        const std::uint32_t rbase = es.subtract_gathered(base + i, 1, sbase, r);
-        int k = 0;
-        while (k < r && !(st.at(rbase + std::uint32_t(k))->t0 > a)) ++k;
-        // More subtrahends only shrink the pieces: none here, none at all.
-        if (k == r || st.at(rbase + std::uint32_t(k))->t0 > b) return k == r ? kNone : kPast;
-        piece = *st.at(rbase + std::uint32_t(k));
-        const glm::dvec3 e = es.o + piece.t0 * es.d;
-        for (std::uint32_t m = 0, j = 0; m < nsub; ++m) {
-            if (j < nnear && near[j] == m) { ++j; continue; }
-            if (!es.clear_of(subs[m], e, margin)) return kUnknown;
-        }
-    }
-    *st.at(base) = piece;
-    st.resize(base + 1);
-    return kFound;
-}
-
 std::uint32_t eval_difference(EvalState& es, std::uint32_t node, const Node& n, double a, double b, Need need) {
     es.scratch->counters.difference_ops++;
     SpanStack& st = es.scratch->stack;
@@ -222,10 +161,10 @@ std::uint32_t eval_difference(EvalState& es, std::uint32_t node, const Node& n, 
     const bool few = ai < 0 || !es.impl->node_accels[std::size_t(ai)]->scene;
     for (std::uint32_t i = 0; i < count; ++i) {
         if (few) {
-            const std::uint32_t found = first_piece_if_clear(es, n, base, sbase, i, a, b, need);
-            if (found == kFound) return 1;
-            if (found == kPast) break;
-            if (found == kNone) continue;
+            const FastPath found = es.first_piece_if_clear(n, base, sbase, i, a, b, need);
+            if (found == FastPath::Found) return 1;
+            if (found == FastPath::Past) break;
+            if (found == FastPath::None) continue;
         }
         if (need == Need::First && !few && st.at(base + i)->t0 > a) {
             // Many subtrahends: walk from the minuend's entry with point

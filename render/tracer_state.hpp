@@ -28,6 +28,14 @@ enum class Need : std::uint8_t {
     Any,    // at least one span overlapping the window, if there is one
 };
 
+// Outcome of EvalState::first_piece_if_clear.
+enum class FastPath : std::uint8_t {
+    Unknown,  // not proven: gather every subtrahend
+    Found,    // the answering piece is written at `base`
+    Past,     // this minuend span starts past the window, and so do later ones
+    None,     // this minuend span has no answer
+};
+
 struct EvalState {
     const CsgTracer::Impl* impl;
     glm::dvec3 o, d, invd;
@@ -46,6 +54,9 @@ struct EvalState {
     // clearance.cpp: true if x is provably outside the node and farther than
     // `margin` (world) from it; false if inside, near, or not known.
     bool clear_of(std::uint32_t node, const glm::dvec3& x, double margin) const;
+    // difference_fast_path.cpp
+    FastPath first_piece_if_clear(const csg::Node& n, std::uint32_t base, std::uint32_t sbase, std::uint32_t i,
+                                  double a, double b, Need need);
     // mesh_leaves.cpp
     std::uint32_t eval_mesh(std::uint32_t leaf_id, double a, double b);
     // difference_first_entry.cpp
