@@ -6,6 +6,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <string>
 
 #include "grammar/actions.hpp"
 #include "grammar/errors.hpp"
@@ -55,6 +56,11 @@ std::shared_ptr<const SourceFile> read_source_file(const std::string& path) {
         }
         if (got == 0) break;
         file->text.append(buf, static_cast<std::size_t>(got));
+        // A script is text someone wrote or generated, far below this; a
+        // device or pipe that never ends (/dev/zero) must not read forever.
+        if (file->text.size() > kMaxSourceBytes)
+            throw IoError("cannot read '" + path + "': longer than " + std::to_string(kMaxSourceBytes >> 20) +
+                          " MiB, too large for a scene script");
     }
     return file;
 }

@@ -19,7 +19,9 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-// Reads a whole file; throws IoError naming the path and the reason.
+// Reads a whole file (regular, pipe or device); throws IoError naming the
+// path and the reason, also when it is longer than kMaxSourceBytes.
+constexpr std::size_t kMaxSourceBytes = std::size_t(256) << 20;
 std::shared_ptr<const SourceFile> read_source_file(const std::string& path);
 
 // Parses a whole script. Throws SourceError at the first syntax error, whose

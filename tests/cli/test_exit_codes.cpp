@@ -97,3 +97,10 @@ TEST_CASE("defines (-D) on the command line override a top-level binding") {
     CHECK(run_kerf("check '" + path + "' -D n=3", dir).status == 0);
     CHECK(run_kerf("check '" + path + "' -D 'n=1+2'", dir).status == 0);
 }
+
+TEST_CASE("a scene file that never ends (/dev/zero) exits 2 instead of reading forever") {
+    auto dir = test_dir("endless");
+    auto r = run_kerf("check /dev/zero", dir);
+    CHECK(r.status == 2);
+    CHECK(first_line(r.err) == "kerf: error: cannot read '/dev/zero': longer than 256 MiB, too large for a scene script");
+}
