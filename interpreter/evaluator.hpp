@@ -77,7 +77,9 @@ private:
     void push_element(ValueList& out, Value v, const SourceLoc& loc);
     void do_echo(const std::vector<ast::Binding>& args, Scope& s);
     void do_assert(const std::vector<ast::Binding>& args, Scope& s, const SourceLoc& loc);
-    std::uint64_t iteration_count(const Value& v, const SourceLoc& loc);
+    // Counts (and charges) the iterations of a `for` over v; a string becomes
+    // the list of its characters (as in OpenSCAD), so v may be replaced.
+    std::uint64_t iteration_count(Value& v, const SourceLoc& loc);
 
     // eval_stmt.cpp
     const BlockInfo& prepare(const std::vector<ast::StmtPtr>& stmts);

@@ -108,8 +108,10 @@ TEST_CASE("list comprehensions", "[expr]") {
     CHECK(value_of("[for (i = [1:3], j = [1:i]) j]") == "[1, 1, 2, 1, 2, 3]");
     CHECK(value_of("[for (x = [\"a\", [1], 2]) x]") == "[\"a\", [1], 2]");
     CHECK(value_of("[0, for (i = [1:2]) i, 9]") == "[0, 1, 2, 9]");
+    CHECK(value_of("[for (c = \"ab\", d = \"xy\") str(c, d)]") == "[\"ax\", \"ay\", \"bx\", \"by\"]");
+    CHECK(value_of("len([for (c = \"h€llo\") c])") == "5");
     CHECK(value_of("[for (i = [0:2]) for (j = [0:i]) j]") == "[0, 0, 1, 0, 1, 2]");
-    CHECK(error_of("x = [for (i = 5) i];") == "test.sdl:1:11: error: for: expected a range or a list, got number");
+    CHECK(error_of("x = [for (i = 5) i];") == "test.sdl:1:11: error: for: expected a range, a list or a string, got number");
     CHECK(error_of("x = [for (i = [0:1], i = [0:1]) i];") ==
           "test.sdl:1:22: error: 'i' is already defined at line 1");
 }

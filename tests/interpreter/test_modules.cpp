@@ -76,7 +76,10 @@ TEST_CASE("if, for, let, echo and assert statements", "[modules]") {
     CHECK(echoes("for (i = [0:2]) echo(i);") == std::vector<std::string>{"ECHO: 0", "ECHO: 1", "ECHO: 2"});
     CHECK(echoes("for (i = [0:1]) { j = i * 10; echo(j); }") == std::vector<std::string>{"ECHO: 0", "ECHO: 10"});
     CHECK(error_of("x = 3;\nassert(x < 2, str(\"x is \", x));") == "test.sdl:2:1: error: assertion failed: x is 3");
-    CHECK(error_of("for (i = \"abc\") cube();") == "test.sdl:1:6: error: for: expected a range or a list, got string");
+    CHECK(error_of("for (i = true) cube();") == "test.sdl:1:6: error: for: expected a range, a list or a string, got bool");
+    // A string iterates over its characters (UTF-8 code points), as in OpenSCAD.
+    CHECK(echoes("for (c = \"aé€\") echo(c);") == std::vector<std::string>{"ECHO: \"a\"", "ECHO: \"é\"", "ECHO: \"€\""});
+    CHECK(echoes("for (c = \"\") echo(c);").empty());
     // difference() sees a for loop as one child (the union of its iterations).
     CHECK(shape_of("difference() { cube(); for (i = [0:1]) sphere(); }") == "U(D(box,U(sphere,sphere)))");
     CHECK(shape_of("union() {}") == "U(U())");
