@@ -50,33 +50,25 @@ void Evaluator::count_iterations(std::uint64_t n, const SourceLoc& loc) {
     iterations_ += n;
 }
 
-namespace {
-// Characters as the loop below splits them: a lead byte and its UTF-8
-// continuation bytes (a stray continuation byte at the start is one too).
-std::size_t characters(const std::string& text) {
-    std::size_t n = text.empty() ? 0 : 1;
-    for (std::size_t i = 1; i < text.size(); ++i) n += (static_cast<unsigned char>(text[i]) & 0xC0) != 0x80;
-    return n;
-}
-}  // namespace
-
 std::uint64_t Evaluator::iteration_count(Value& v, const SourceLoc& loc) {
     std::uint64_t n;
     if (v.is_range()) n = v.as_range().size();
     else if (v.is_list()) n = v.as_list().size();
-    else if (v.is_string()) n = characters(v.as_string());
+    else if (v.is_string()) n = utf8_length(v.as_string());
     else throw SourceError(loc, std::string("for: expected a range, a list or a string, got ") + v.type_name());
     count_iterations(n, loc);  // before building a list of characters
     if (v.is_string()) {
-        // One string per character (UTF-8 code point), as OpenSCAD iterates.
+        // One string per character (UTF-8 code point), as OpenSCAD iterates:
+        // the same characters as len() counts and s[i] indexes.
         const std::string& text = v.as_string();
+        auto continues = [&](std::size_t i) { return (static_cast<unsigned char>(text[i]) & 0xC0) == 0x80; };
         ValueList chars;
         chars.reserve(n);
-        for (std::size_t i = 0; i < text.size();) {
+        for (std::size_t i = 0; i < text.size(); ++i) {
+            if (continues(i)) continue;
             std::size_t j = i + 1;
-            while (j < text.size() && (static_cast<unsigned char>(text[j]) & 0xC0) == 0x80) ++j;
+            while (j < text.size() && continues(j)) ++j;
             chars.push_back(Value::string(text.substr(i, j - i)));
-            i = j;
         }
         v = Value::list(std::move(chars));
     }

@@ -17,8 +17,7 @@ namespace kerf::render {
 // Minuend spans are at base.., scratch from sbase on (see FastPath).
 FastPath EvalState::first_piece_if_clear(const csg::Node& n, std::uint32_t base, std::uint32_t sbase, std::uint32_t i,
                                          double a, double b, Need need) {
-    EvalState& es = *this;
-    SpanStack& st = es.scratch->stack;
+    SpanStack& st = scratch->stack;
     Span piece = *st.at(base + i);
     double probe;
     if (need == Need::First) {
@@ -27,18 +26,18 @@ FastPath EvalState::first_piece_if_clear(const csg::Node& n, std::uint32_t base,
         probe = piece.t0;
     } else {
         const double p0 = std::max(a, piece.t0), p1 = std::min(b, piece.t1);
-        if (!(p1 - p0 > 2 * es.eps)) return FastPath::Unknown;
+        if (!(p1 - p0 > 2 * eps)) return FastPath::Unknown;
         probe = 0.5 * (p0 + p1);
-        piece.t0 = probe - es.eps;  // a sliver longer than eps answers Any
-        piece.t1 = probe + es.eps;
+        piece.t0 = probe - eps;  // a sliver longer than eps answers Any
+        piece.t1 = probe + eps;
     }
-    const double margin = 2 * es.eps * es.len;
-    const std::uint32_t* subs = &es.impl->scene.children[n.first + 1];
+    const double margin = 2 * eps * len;
+    const std::uint32_t* subs = &impl->scene.children[n.first + 1];
     const std::uint32_t nsub = n.count - 1;
     constexpr std::uint32_t kMaxNear = 2;
     std::uint32_t near[kMaxNear], nnear = 0;
     for (std::uint32_t k = 0; k < nsub; ++k) {
-        if (es.clear_of(subs[k], es.o + probe * es.d, margin)) continue;
+        if (clear_of(subs[k], o + probe * d, margin)) continue;
         if (need != Need::First || nnear == kMaxNear) return FastPath::Unknown;
         near[nnear++] = k;
     }
@@ -46,18 +45,18 @@ FastPath EvalState::first_piece_if_clear(const csg::Node& n, std::uint32_t base,
         // Span i minus the near subtrahends, on the span's part in the window.
         const double wb = std::min(b, piece.t1);
         st.resize(sbase);
-        for (std::uint32_t j = 0; j < nnear; ++j) es.eval(subs[near[j]], probe, wb, Need::All);
+        for (std::uint32_t j = 0; j < nnear; ++j) eval(subs[near[j]], probe, wb, Need::All);
         int r = 0;
-        const std::uint32_t rbase = es.subtract_gathered(base + i, 1, sbase, r);
+        const std::uint32_t rbase = subtract_gathered(base + i, 1, sbase, r);
         int k = 0;
         while (k < r && !(st.at(rbase + std::uint32_t(k))->t0 > a)) ++k;
         // More subtrahends only shrink the pieces: none here, none at all.
         if (k == r || st.at(rbase + std::uint32_t(k))->t0 > b) return k == r ? FastPath::None : FastPath::Past;
         piece = *st.at(rbase + std::uint32_t(k));
-        const glm::dvec3 e = es.o + piece.t0 * es.d;
+        const glm::dvec3 e = o + piece.t0 * d;
         for (std::uint32_t m = 0, j = 0; m < nsub; ++m) {
             if (j < nnear && near[j] == m) { ++j; continue; }
-            if (!es.clear_of(subs[m], e, margin)) return FastPath::Unknown;
+            if (!clear_of(subs[m], e, margin)) return FastPath::Unknown;
         }
     }
     *st.at(base) = piece;

@@ -3,12 +3,10 @@
 // keeps the previous image. PNG goes through libpng (png_file.cpp); every
 // other format through OpenImageIO, loaded only then (oiio_loader.cpp).
 #include <algorithm>
-#include <array>
 #include <cstdint>
 #include <atomic>
 #include <cerrno>
 #include <cmath>
-#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <limits>

@@ -42,18 +42,8 @@ namespace {
 // split; only eval and collect are reached from other files.
 
 // `box` is already padded by the degenerate rule's reach (Impl::padded).
-// An axis the ray is parallel to has invd = inf: outside the slab gives
-// ±inf on both ends (an empty range), inside -inf..inf; a ray exactly in a
-// face plane gives NaN, which max/min ignore, keeping the box (conservative).
 bool box_hit(const EvalState& es, const csg::Aabb& box, double a, double b) {
-    double t0 = a - es.eps, t1 = b + es.eps;
-    for (int i = 0; i < 3; ++i) {
-        double ta = (box.lo[i] - es.o[i]) * es.invd[i], tb = (box.hi[i] - es.o[i]) * es.invd[i];
-        if (ta > tb) std::swap(ta, tb);
-        t0 = std::max(t0, ta);
-        t1 = std::min(t1, tb);
-    }
-    return t0 <= t1;
+    return slab_hit(box, es.o, es.invd, a - es.eps, b + es.eps);
 }
 
 std::uint32_t eval_leaf(EvalState& es, const Node& n, double a, double b) {

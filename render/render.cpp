@@ -111,16 +111,22 @@ Image render(const csg::Scene& scene, const RenderOptions& options, RenderStats*
     std::mutex progress_mutex;
     int tiles_done = 0;
 
-    auto render_pixel = [&](int x, int y, ThreadState& ts) {
+    // `traced` false: the pixel's tile misses the whole scene (tile_cull.cpp)
+    // and every ray is taken as a miss without tracing. The pixel gets what
+    // tracing would give (the same sums), so its value never depends on
+    // which tile it falls in (crops move tile borders).
+    auto render_pixel = [&](int x, int y, ThreadState& ts, bool traced) {
         glm::dvec3 o, d;
         if (options.aov != Aov::None) {  // AOVs: one ray through the pixel centre
             float* out = &image.at(x - region[0], y - region[1], 0);
-            camera.ray(x + 0.5, y + 0.5, o, d);
             ++ts.rays.primary;
             const std::uint64_t spans_before = ts.scratch.counters.spans_found;
             TraceHit hit;
-            const bool found = tracer.intersect(TraceRay{o, d, 0, std::numeric_limits<double>::infinity()}, hit,
-                                                ts.scratch);
+            bool found = false;
+            if (traced) {
+                camera.ray(x + 0.5, y + 0.5, o, d);
+                found = tracer.intersect(TraceRay{o, d, 0, std::numeric_limits<double>::infinity()}, hit, ts.scratch);
+            }
             if (options.aov == Aov::Depth) {
                 out[0] = found ? float(hit.t) : std::numeric_limits<float>::infinity();
             } else if (options.aov == Aov::Normal) {
@@ -131,43 +137,24 @@ Image render(const csg::Scene& scene, const RenderOptions& options, RenderStats*
             }
             return;
         }
+        auto sample = [&](double px, double py) {
+            ++ts.rays.primary;
+            if (!traced) return scene.background;
+            camera.ray_unnormalised(px, py, o, d);
+            return shader.radiance(TraceRay{o, d, 0, std::numeric_limits<double>::infinity()}, 0, ts);
+        };
         glm::dvec3 sum(0.0);
         if (spp == 1) {  // the pixel centre: no jitter, no generator to seed
-            camera.ray_unnormalised(x + 0.5, y + 0.5, o, d);
-            ++ts.rays.primary;
-            sum = shader.radiance(TraceRay{o, d, 0, std::numeric_limits<double>::infinity()}, 0, ts);
+            sum = sample(x + 0.5, y + 0.5);
         } else {
             std::uint64_t rng = options.seed * 0x9E3779B97F4A7C15ull ^ (std::uint64_t(y) << 32 | std::uint32_t(x));
             splitmix64(rng);
             for (int i = 0; i < spp; ++i) {
                 const glm::dvec2 s = sample_offset(i, spp, rng);
-                camera.ray_unnormalised(x + s.x, y + s.y, o, d);
-                ++ts.rays.primary;
-                sum += shader.radiance(TraceRay{o, d, 0, std::numeric_limits<double>::infinity()}, 0, ts);
+                sum += sample(x + s.x, y + s.y);
             }
             sum /= double(spp);
         }
-        store(x, y, sum);
-    };
-
-    // A pixel of a tile that misses the whole scene: exactly what tracing
-    // would store (the same sum for several samples), so a pixel's value
-    // never depends on which tile it falls in (crops move tile borders).
-    auto miss_pixel = [&](int x, int y, ThreadState& ts) {
-        if (options.aov != Aov::None) {
-            float* out = &image.at(x - region[0], y - region[1], 0);
-            ++ts.rays.primary;
-            for (int c = 0; c < image.channels; ++c)
-                out[c] = options.aov == Aov::Depth ? std::numeric_limits<float>::infinity() : 0.0f;
-            return;
-        }
-        glm::dvec3 sum = scene.background;
-        if (spp > 1) {
-            sum = glm::dvec3(0.0);
-            for (int i = 0; i < spp; ++i) sum += scene.background;
-            sum /= double(spp);
-        }
-        ts.rays.primary += std::uint64_t(spp);
         store(x, y, sum);
     };
 
@@ -188,9 +175,9 @@ Image render(const csg::Scene& scene, const RenderOptions& options, RenderStats*
                 camera.ray(tx1, ty0, co[1], cd[1]);
                 camera.ray(tx1, ty1, co[2], cd[2]);
                 camera.ray(tx0, ty1, co[3], cd[3]);
-                const bool empty = tracer.misses_all(co, cd);
+                const bool traced = !tracer.misses_all(co, cd);
                 for (int y = ty0; y < ty1; ++y)
-                    for (int x = tx0; x < tx1; ++x) empty ? miss_pixel(x, y, ts) : render_pixel(x, y, ts);
+                    for (int x = tx0; x < tx1; ++x) render_pixel(x, y, ts, traced);
                 if (progress) {
                     std::lock_guard<std::mutex> lock(progress_mutex);
                     progress(double(++tiles_done) / tiles);

@@ -76,27 +76,29 @@ struct EvalState {
     }
 };
 
+// Whether the ray o + t·d meets `box` for some t in [t0, t1], with invd the
+// reciprocal of d per axis. An axis the ray is parallel to has invd = ±inf:
+// outside the slab gives ±inf at both ends (an empty range), inside
+// -inf..inf; exactly in a face plane gives NaN, which max/min ignore, so the
+// box is kept (conservative).
+inline bool slab_hit(const csg::Aabb& box, const glm::dvec3& o, const glm::dvec3& invd, double t0, double t1) {
+    for (int i = 0; i < 3; ++i) {
+        double ta = (box.lo[i] - o[i]) * invd[i], tb = (box.hi[i] - o[i]) * invd[i];
+        if (ta > tb) std::swap(ta, tb);
+        t0 = std::max(t0, ta);
+        t1 = std::min(t1, tb);
+    }
+    return t0 <= t1;
+}
+
 // Sets up `st` for a query along `ray`. Returns false, with the rest of the
 // set-up skipped, when the ray's line misses `reach` (the box around every
 // bounded unit): a slab test on the whole line (no t-window, so no tolerance
 // to get wrong), so background pixels cost three divisions and no more.
 inline bool make_state(EvalState& st, const CsgTracer::Impl* impl, const TraceRay& ray, double eps_world,
                        double scale, TraceScratch& scratch) {
-    double t0 = -kInf, t1 = kInf;
-    for (int i = 0; i < 3; ++i) {
-        const double lo = impl->reach.lo[i], hi = impl->reach.hi[i];
-        if (ray.d[i] == 0) {
-            st.invd[i] = kInf;
-            if (!(lo <= ray.o[i] && ray.o[i] <= hi)) return false;
-            continue;
-        }
-        st.invd[i] = 1.0 / ray.d[i];
-        double ta = (lo - ray.o[i]) * st.invd[i], tb = (hi - ray.o[i]) * st.invd[i];
-        if (ta > tb) std::swap(ta, tb);
-        t0 = std::max(t0, ta);
-        t1 = std::min(t1, tb);
-    }
-    if (!(t0 <= t1)) return false;
+    st.invd = 1.0 / ray.d;  // ±inf on axes the ray is parallel to
+    if (!slab_hit(impl->reach, ray.o, st.invd, -kInf, kInf)) return false;
     st.impl = impl;
     st.o = ray.o;
     st.d = ray.d;
