@@ -17,8 +17,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "interpreter/huge_pages.hpp"
-#include "interpreter/lower.hpp"
+#include "csg/huge_pages.hpp"
+#include "lower/lower.hpp"
 
 using namespace kerf;
 using scene::NodeKind;

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "render/primitives.hpp"
+#include "render/primitives/primitives.hpp"
 
 namespace {
 

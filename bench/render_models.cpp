@@ -9,7 +9,7 @@
 #include <string>
 
 #include "render/render.hpp"
-#include "../tests/render/scene_builder.hpp"
+#include "tests/render/scene_builder.hpp"
 
 using namespace kerf;
 using namespace kerf::test;

@@ -53,8 +53,8 @@ def main():
     sums, failed = {}, []
     for name, path in scene_files(a.out):
         for variant, args in VARIANTS:
-            png = os.path.join(a.out, f"{name}.{variant}.png")
-            r = subprocess.run([a.kerf, "render", path, "-o", png, "--threads", "2"] + args + LIMITS,
+            png = os.path.join(os.path.abspath(a.out), f"{name}.{variant}.png")
+            r = subprocess.run([a.kerf, "render", os.path.basename(path), "-o", png, "--threads", "2"] + args + LIMITS,
                                capture_output=True, text=True, cwd=os.path.dirname(path))
             key = f"{name}.{variant}"
             if r.returncode != 0:
@@ -63,7 +63,9 @@ def main():
             sums[key] = hashlib.sha256(open(png, "rb").read()).hexdigest()
         # The lowered tree itself (kerf dump), so a change that keeps the
         # pixels of these small images but alters the scene shows too.
-        r = subprocess.run([a.kerf, "dump", path] + LIMITS, capture_output=True, cwd=os.path.dirname(path))
+        # (Relative paths: the dump names the scene file.)
+        r = subprocess.run([a.kerf, "dump", os.path.basename(path)] + LIMITS, capture_output=True,
+                           cwd=os.path.dirname(path))
         if r.returncode != 0:
             failed.append(f"{name}.dump: exit {r.returncode}")
         else:

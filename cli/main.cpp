@@ -10,8 +10,8 @@
 #include "cli/options.hpp"
 #include "cli/progress.hpp"
 #include "interpreter/interpreter.hpp"
-#include "interpreter/lower.hpp"
-#include "render/csg_dump.hpp"
+#include "lower/lower.hpp"
+#include "csg/dump.hpp"
 #include "render/render.hpp"
 
 namespace {

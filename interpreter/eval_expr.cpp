@@ -2,7 +2,7 @@
 #include <cmath>
 #include <iostream>
 
-#include "interpreter/builtins.hpp"
+#include "interpreter/builtins/builtins.hpp"
 #include "interpreter/evaluator.hpp"
 #include "interpreter/operators.hpp"
 

@@ -4,7 +4,7 @@
 #pragma once
 #include <glm/glm.hpp>
 
-#include "render/csg_scene.hpp"
+#include "csg/scene.hpp"
 
 namespace kerf::render {
 

@@ -20,9 +20,9 @@
 #include <tbb/task_arena.h>
 
 #include "render/camera.hpp"
-#include "render/csg_tracer.hpp"
+#include "render/tracer/tracer.hpp"
 #include "render/shading.hpp"
-#include "render/srgb.hpp"
+#include "render/image/srgb_bytes.hpp"
 
 namespace kerf::render {
 

@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "render/big_buffer.hpp"
+#include "render/image/big_buffer.hpp"
 
-#include "render/csg_scene.hpp"
+#include "csg/scene.hpp"
 
 namespace kerf::render {
 

@@ -5,8 +5,8 @@
 
 #include <glm/glm.hpp>
 
-#include "render/csg_scene.hpp"
-#include "render/csg_tracer.hpp"
+#include "csg/scene.hpp"
+#include "render/tracer/tracer.hpp"
 
 namespace kerf::render {
 

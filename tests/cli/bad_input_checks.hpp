@@ -8,7 +8,7 @@
 
 #include <regex>
 
-#include "run_kerf.hpp"
+#include "tests/cli/run_kerf.hpp"
 
 struct Located {
     std::string path;

@@ -2,7 +2,7 @@
 // recursion, runaway loops and lists, include cycles, NaN and infinity where
 // geometry needs a number. Through the real binary, bounded in time and
 // memory (bad_input_checks.hpp).
-#include "bad_input_checks.hpp"
+#include "tests/cli/bad_input_checks.hpp"
 
 namespace fs = std::filesystem;
 

@@ -4,7 +4,7 @@
 // memory bounds of run_kerf_bounded.
 #include <random>
 
-#include "bad_input_checks.hpp"
+#include "tests/cli/bad_input_checks.hpp"
 
 namespace fs = std::filesystem;
 

@@ -1,7 +1,7 @@
 // Spec §8 exit statuses and the one-line diagnostics, through the real binary.
 #include <catch2/catch.hpp>
 
-#include "run_kerf.hpp"
+#include "tests/cli/run_kerf.hpp"
 
 namespace fs = std::filesystem;
 

@@ -7,9 +7,9 @@
 
 #include <cmath>
 
-#include "run_kerf.hpp"
+#include "tests/cli/run_kerf.hpp"
 #include "interpreter/interpreter.hpp"
-#include "interpreter/lower.hpp"
+#include "lower/lower.hpp"
 #include "render/render.hpp"
 
 namespace {

@@ -3,7 +3,7 @@
 // image is never destroyed by a render that fails or is killed.
 #include <catch2/catch.hpp>
 
-#include "run_kerf.hpp"
+#include "tests/cli/run_kerf.hpp"
 
 namespace fs = std::filesystem;
 

@@ -12,7 +12,7 @@
 #include "grammar/parser.hpp"
 #include "grammar/source.hpp"
 #include "interpreter/interpreter.hpp"
-#include "interpreter/lower.hpp"
+#include "lower/lower.hpp"
 
 namespace {
 

@@ -3,7 +3,7 @@
 // strings are written by hand from the input.
 #include <catch2/catch.hpp>
 
-#include "grammar_test_util.hpp"
+#include "tests/grammar/grammar_test_util.hpp"
 
 using kerf::test::error_of;
 

@@ -3,7 +3,7 @@
 // spec's precedence table, not taken from parser output.
 #include <catch2/catch.hpp>
 
-#include "grammar_test_util.hpp"
+#include "tests/grammar/grammar_test_util.hpp"
 
 using kerf::test::ex;
 

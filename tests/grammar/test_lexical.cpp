@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "grammar/literals.hpp"
-#include "grammar_test_util.hpp"
+#include "tests/grammar/grammar_test_util.hpp"
 
 using kerf::test::parse;
 namespace ast = kerf::ast;

@@ -10,7 +10,7 @@
 #include <tao/pegtl/contrib/analyze.hpp>
 
 #include "grammar/rules_stmt.hpp"
-#include "grammar_test_util.hpp"
+#include "tests/grammar/grammar_test_util.hpp"
 
 using kerf::test::error_of;
 

@@ -2,7 +2,7 @@
 // token, operators at their operator, instantiations at their name.
 #include <catch2/catch.hpp>
 
-#include "grammar_test_util.hpp"
+#include "tests/grammar/grammar_test_util.hpp"
 
 using kerf::test::parse;
 namespace ast = kerf::ast;

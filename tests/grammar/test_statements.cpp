@@ -2,7 +2,7 @@
 // children, modifiers, if/else, for, let, include/use, blocks.
 #include <catch2/catch.hpp>
 
-#include "grammar_test_util.hpp"
+#include "tests/grammar/grammar_test_util.hpp"
 
 using kerf::test::parse;
 using kerf::test::sx;

@@ -2,7 +2,7 @@
 // ranges, comprehensions, let/echo/assert prefixes.
 #include <catch2/catch.hpp>
 
-#include "eval_helpers.hpp"
+#include "tests/interpreter/eval_helpers.hpp"
 
 using kerf::test::error_of;
 using kerf::test::echoes;

@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include "eval_helpers.hpp"
+#include "tests/interpreter/eval_helpers.hpp"
 
 using namespace kerf;
 using kerf::test::error_of;

@@ -5,8 +5,8 @@
 #include <fstream>
 #include <random>
 
-#include "eval_helpers.hpp"
-#include "temp_tree.hpp"
+#include "tests/interpreter/eval_helpers.hpp"
+#include "tests/interpreter/temp_tree.hpp"
 
 namespace fs = std::filesystem;
 

@@ -5,7 +5,7 @@
 #include <chrono>
 #include <ctime>
 
-#include "eval_helpers.hpp"
+#include "tests/interpreter/eval_helpers.hpp"
 
 using kerf::test::error_of;
 using kerf::test::value_of;

@@ -2,7 +2,7 @@
 // children(), $children; statements if/for/let/echo/assert; modifiers.
 #include <catch2/catch.hpp>
 
-#include "eval_helpers.hpp"
+#include "tests/interpreter/eval_helpers.hpp"
 
 using kerf::test::echoes;
 using kerf::test::error_of;

@@ -2,7 +2,7 @@
 // undefined names, use before definition, dynamic `$` variables.
 #include <catch2/catch.hpp>
 
-#include "eval_helpers.hpp"
+#include "tests/interpreter/eval_helpers.hpp"
 
 using kerf::test::echoes;
 using kerf::test::error_of;

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "eval_helpers.hpp"
+#include "tests/interpreter/eval_helpers.hpp"
 
 using kerf::test::echoes;
 using kerf::test::error_of;

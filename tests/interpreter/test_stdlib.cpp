@@ -7,7 +7,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "eval_helpers.hpp"
+#include "tests/interpreter/eval_helpers.hpp"
 
 using namespace kerf;
 using namespace kerf::test;

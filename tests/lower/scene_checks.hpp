@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "render/csg_scene.hpp"
+#include "csg/scene.hpp"
 
 namespace kerf::test {
 

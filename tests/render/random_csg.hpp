@@ -5,8 +5,8 @@
 #include <cmath>
 #include <random>
 
-#include "render/membership.hpp"
-#include "scene_builder.hpp"
+#include "csg/membership.hpp"
+#include "tests/render/scene_builder.hpp"
 
 namespace kerf::test {
 

@@ -10,7 +10,7 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "render/csg_scene.hpp"
+#include "csg/scene.hpp"
 
 namespace kerf::test {
 

@@ -6,7 +6,7 @@
 
 #include "render/camera.hpp"
 #include "render/render.hpp"
-#include "scene_builder.hpp"
+#include "tests/render/scene_builder.hpp"
 
 using namespace kerf;
 using namespace kerf::test;

@@ -2,7 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include "render/render.hpp"
-#include "scene_builder.hpp"
+#include "tests/render/scene_builder.hpp"
 
 using namespace kerf;
 using namespace kerf::test;

@@ -7,7 +7,7 @@
 #include <cstring>
 
 #include "render/render.hpp"
-#include "scene_builder.hpp"
+#include "tests/render/scene_builder.hpp"
 
 using namespace kerf;
 using namespace kerf::test;

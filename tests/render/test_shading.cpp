@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "render/render.hpp"
-#include "scene_builder.hpp"
+#include "tests/render/scene_builder.hpp"
 
 using namespace kerf;
 using namespace kerf::test;

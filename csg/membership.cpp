@@ -1,0 +1,91 @@
+// The defining inequalities of spec §4's solids, one case each.
+#include "csg/membership.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace kerf::csg {
+
+namespace {
+
+double radial(const glm::dvec3& p) { return std::hypot(p.x, p.y); }
+
+// Cylinder/cone radius at height z.
+double cone_radius(const double* c, double z) { return c[2] + (c[3] - c[2]) * (z - c[0]) / (c[1] - c[0]); }
+
+// Hyperboloid radius² at height z: waist² at 0, r² at ±h/2, quadratic in z.
+double hyper_radius2(const double* c, double z) {
+    const double s = 2 * z / c[0];
+    return c[2] * c[2] + (c[1] * c[1] - c[2] * c[2]) * s * s;
+}
+
+}  // namespace
+
+bool contains(const Leaf& leaf, const glm::dvec3& x) {
+    const double* c = leaf.p;
+    switch (leaf.kind) {
+        case PrimKind::Sphere: return glm::dot(x, x) < c[0] * c[0];
+        case PrimKind::Box:
+            return c[0] < x.x && x.x < c[3] && c[1] < x.y && x.y < c[4] && c[2] < x.z && x.z < c[5];
+        case PrimKind::Cylinder: return c[0] < x.z && x.z < c[1] && radial(x) < cone_radius(c, x.z);
+        case PrimKind::Torus: {
+            const double e = radial(x) - c[0];
+            return e * e + x.z * x.z < c[1] * c[1];
+        }
+        case PrimKind::Plane: return c[0] * x.x + c[1] * x.y + c[2] * x.z < c[3];
+        case PrimKind::Paraboloid: {
+            const double rho = radial(x);
+            return x.z < c[0] && x.z > c[0] * rho * rho / (c[1] * c[1]);
+        }
+        case PrimKind::Hyperboloid: {
+            const double rho = radial(x);
+            return std::abs(x.z) < 0.5 * c[0] && rho * rho < hyper_radius2(c, x.z);
+        }
+        case PrimKind::Mesh: return false;
+    }
+    return false;
+}
+
+double surface_distance(const Leaf& leaf, const glm::dvec3& x) {
+    const double* c = leaf.p;
+    switch (leaf.kind) {
+        case PrimKind::Sphere: return glm::length(x) - c[0];
+        case PrimKind::Box: {
+            const glm::dvec3 lo(c[0], c[1], c[2]), hi(c[3], c[4], c[5]);
+            const glm::dvec3 q = glm::max(lo - x, x - hi);  // per axis, > 0 outside the slab
+            const double inner = std::min(std::max(q.x, std::max(q.y, q.z)), 0.0);
+            return glm::length(glm::max(q, glm::dvec3(0.0))) + inner;
+        }
+        case PrimKind::Cylinder: {
+            // Distance to the side line is (ρ - r(z)) · cos(atan(slope)).
+            const double slope = (c[3] - c[2]) / (c[1] - c[0]);
+            const double side = (radial(x) - cone_radius(c, x.z)) / std::sqrt(1 + slope * slope);
+            const double caps = std::max(c[0] - x.z, x.z - c[1]);
+            if (side > 0 && caps > 0) return std::hypot(side, caps);  // outside the rim
+            return std::max(side, caps);
+        }
+        case PrimKind::Torus: return std::hypot(radial(x) - c[0], x.z) - c[1];
+        case PrimKind::Plane: return c[0] * x.x + c[1] * x.y + c[2] * x.z - c[3];
+        case PrimKind::Paraboloid: {
+            const double k = c[0] / (c[1] * c[1]);
+            const double rho = radial(x);
+            const double f = k * rho * rho - x.z;  // ∇f = (2k·x, 2k·y, -1)
+            const double side = f / std::sqrt(4 * k * k * rho * rho + 1);
+            return std::max(side, x.z - c[0]);
+        }
+        case PrimKind::Hyperboloid: {
+            const double half = 0.5 * c[0];
+            const double kappa = (c[1] * c[1] - c[2] * c[2]) / (half * half);
+            const double rho = radial(x);
+            const double f = rho * rho - hyper_radius2(c, x.z);  // ∇f = (2x, 2y, -2κz)
+            const double g = 2 * std::sqrt(rho * rho + kappa * kappa * x.z * x.z);
+            const double side = g > 0 ? f / g : (f == 0 ? 0.0 : std::copysign(std::sqrt(std::abs(f)), f));
+            return std::max(side, std::abs(x.z) - half);
+        }
+        case PrimKind::Mesh: break;
+    }
+    return std::numeric_limits<double>::infinity();
+}
+
+}  // namespace kerf::csg

@@ -1,0 +1,22 @@
+// Point membership and distance to the surface for analytic primitives,
+// straight from each solid's defining inequalities. Written independently of
+// the ray code on purpose: it is the oracle the tests check spans against.
+#pragma once
+#include <glm/glm.hpp>
+
+#include "csg/scene.hpp"
+
+namespace kerf::csg {
+
+// True when p (object space) is strictly inside the solid. The boundary is
+// outside, matching the span rule (tangent contacts are no span). Meshes:
+// always false (they have no analytic inequality).
+bool contains(const Leaf& leaf, const glm::dvec3& p_object);
+
+// Signed distance to the surface (negative inside): exact where simple
+// (sphere, box, torus, plane, cylinder/cone), otherwise max over the solid's
+// constraints of implicit value / gradient length, which is first-order
+// exact near the surface. Meshes: +inf.
+double surface_distance(const Leaf& leaf, const glm::dvec3& p_object);
+
+}  // namespace kerf::csg

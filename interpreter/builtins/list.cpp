@@ -1,0 +1,55 @@
+// List built-ins of spec §2: len and concat, as in OpenSCAD. Results are
+// bounded by the list-size limit so `concat` doubling in a recursion ends in
+// a located error instead of exhausting memory.
+#include "interpreter/builtins/support.hpp"
+
+namespace kerf::builtin {
+namespace {
+
+// Number of Unicode code points (OpenSCAD counts characters, not bytes):
+// every byte that is not a UTF-8 continuation byte starts one.
+std::size_t utf8_length(const std::string& s) {
+    std::size_t n = 0;
+    for (unsigned char c : s)
+        if ((c & 0xC0) != 0x80) ++n;
+    return n;
+}
+
+// len of a list, a string (characters) or a range (its element count).
+Value len_fn(std::span<const Value> args, const BuiltinContext& ctx) {
+    expect_count(args, ctx, "len", 1);
+    const Value& v = args[0];
+    if (v.is_list()) return Value(static_cast<double>(v.as_list().size()));
+    if (v.is_string()) return Value(static_cast<double>(utf8_length(v.as_string())));
+    if (v.is_range()) return Value(static_cast<double>(v.as_range().size()));
+    fail(ctx, "len: expected a list or a string, got " + describe(v));
+}
+
+// concat(a, b, ...): the elements of each list argument in order; any other
+// argument (number, string, range, ...) is appended as one element.
+Value concat_fn(std::span<const Value> args, const BuiltinContext& ctx) {
+    std::size_t total = 0;
+    for (const Value& a : args) total += a.is_list() ? a.as_list().size() : 1;
+    if (total > ctx.max_list_elements)
+        fail(ctx, "concat: list size limit " + std::to_string(ctx.max_list_elements) + " exceeded (" +
+                      std::to_string(total) + " elements)");
+    if (args.size() == 1 && args[0].is_list()) return args[0];  // shares the storage
+    ValueList out;
+    out.reserve(total);
+    for (const Value& a : args) {
+        if (a.is_list()) out.insert(out.end(), a.as_list().begin(), a.as_list().end());
+        else out.push_back(a);
+    }
+    return Value::list(std::move(out));
+}
+
+const Entry kEntries[] = {
+    {"len", len_fn},
+    {"concat", concat_fn},
+};
+
+}  // namespace
+
+std::span<const Entry> list_entries() { return kEntries; }
+
+}  // namespace kerf::builtin

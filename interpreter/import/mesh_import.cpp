@@ -1,0 +1,125 @@
+// import(): file reading, dispatch by extension, validation shared by all
+// formats, and the turn into OpenSCAD's clockwise face order.
+#include "interpreter/import/mesh_import.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+#include "interpreter/import/formats.hpp"
+
+namespace kerf::eval {
+
+namespace mesh_format {
+
+std::size_t line_of(std::string_view bytes, std::size_t at) {
+    at = std::min(at, bytes.size());
+    return 1 + static_cast<std::size_t>(std::count(bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
+}
+
+std::string_view Tokens::next() {
+    while (pos_ < s_.size() && std::isspace(static_cast<unsigned char>(s_[pos_]))) ++pos_;
+    last_ = pos_;
+    while (pos_ < s_.size() && !std::isspace(static_cast<unsigned char>(s_[pos_]))) ++pos_;
+    return s_.substr(last_, pos_ - last_);
+}
+
+void Tokens::expect(std::string_view word) {
+    std::string_view t = next();
+    if (t != word) fail("expected '" + std::string(word) + "', got " + quoted(t));
+}
+
+std::string Tokens::quoted(std::string_view token) {
+    return token.empty() ? std::string("the end of the file") : "'" + std::string(token.substr(0, 40)) + "'";
+}
+
+double Tokens::number(const char* what) {
+    std::string_view t = next();
+    double v = 0;
+    if (!parse_number(t, v)) fail(std::string("expected ") + what + ", got " + quoted(t));
+    return v;
+}
+
+void Tokens::skip_line() {
+    while (pos_ < s_.size() && s_[pos_] != '\n') ++pos_;
+}
+
+bool Tokens::at_end() {
+    while (pos_ < s_.size() && std::isspace(static_cast<unsigned char>(s_[pos_]))) ++pos_;
+    return pos_ >= s_.size();
+}
+
+void Tokens::fail(const std::string& message) const {
+    throw MeshFormatError("line " + std::to_string(line_of(s_, last_)) + ": " + message);
+}
+
+bool parse_number(std::string_view tok, double& out) {
+    if (!tok.empty() && tok.front() == '+') tok.remove_prefix(1);
+    if (tok.empty()) return false;
+    auto [end, ec] = std::from_chars(tok.data(), tok.data() + tok.size(), out);
+    return ec == std::errc() && end == tok.data() + tok.size();
+}
+
+void check_count(std::uint64_t count, std::size_t bytes_left, std::size_t min_bytes, const std::string& what,
+                 std::uint64_t limit) {
+    if (count > limit)
+        throw MeshFormatError("the file declares " + std::to_string(count) + " " + what + ", more than the limit " +
+                              std::to_string(limit) + " (--max-list)");
+    if (count > bytes_left / min_bytes)
+        throw MeshFormatError("the file declares " + std::to_string(count) + " " + what + " but only " +
+                              std::to_string(bytes_left) + " bytes follow (truncated?)");
+}
+
+}  // namespace mesh_format
+
+namespace {
+
+std::string read_bytes(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw MeshFormatError("cannot open the file");
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (in.bad()) throw MeshFormatError("cannot read the file");
+    return bytes;
+}
+
+void validate(const scene::Mesh& m) {
+    if (m.faces.empty()) throw MeshFormatError("the file holds no faces");
+    for (const glm::dvec3& p : m.points)
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+            throw MeshFormatError("a vertex is not finite");
+    std::size_t fi = 0;
+    for (const auto& f : m.faces) {
+        if (f.size() < 3) throw MeshFormatError("face " + std::to_string(fi) + " has fewer than 3 corners");
+        for (std::uint32_t i : f)
+            if (i >= m.points.size())
+                throw MeshFormatError("face " + std::to_string(fi) + " refers to vertex " + std::to_string(i) +
+                                      " (there are " + std::to_string(m.points.size()) + ")");
+        ++fi;
+    }
+}
+
+}  // namespace
+
+scene::Mesh import_mesh(const std::string& path, std::uint64_t max_faces) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    scene::Mesh m;
+    if (ext == ".stl") {
+        m = mesh_format::read_stl(read_bytes(path), max_faces);
+    } else if (ext == ".obj") {
+        m = mesh_format::read_obj(read_bytes(path), max_faces);
+    } else if (ext == ".ply") {
+        m = mesh_format::read_ply(read_bytes(path), max_faces);
+    } else {
+        throw MeshFormatError("unknown mesh format '" + ext + "' (kerf reads .stl, .obj and .ply)");
+    }
+    validate(m);
+    for (auto& f : m.faces) std::reverse(f.begin(), f.end());  // counter-clockwise → OpenSCAD's clockwise
+    return m;
+}
+
+}  // namespace kerf::eval

@@ -1,0 +1,101 @@
+// STL, binary (80-byte header, triangle count, 50 bytes per triangle) and
+// ASCII (solid / facet normal / outer loop / vertex ... ). STL has no shared
+// vertices: each triangle brings its own three points.
+#include <algorithm>
+#include <cstring>
+
+#include "interpreter/import/mesh_import.hpp"
+#include "interpreter/import/formats.hpp"
+
+namespace kerf::eval::mesh_format {
+
+namespace {
+
+std::uint32_t le_u32(const char* p) {
+    const auto* b = reinterpret_cast<const unsigned char*>(p);
+    return std::uint32_t(b[0]) | std::uint32_t(b[1]) << 8 | std::uint32_t(b[2]) << 16 | std::uint32_t(b[3]) << 24;
+}
+
+float le_f32(const char* p) {
+    std::uint32_t u = le_u32(p);
+    float f;
+    std::memcpy(&f, &u, sizeof f);
+    return f;
+}
+
+scene::Mesh read_binary(std::string_view bytes, std::uint64_t count, std::uint64_t max_faces) {
+    check_count(count, bytes.size() - 84, 50, "triangles", max_faces);
+    scene::Mesh m;
+    m.points.reserve(3 * count);
+    m.faces.reserve(count);
+    for (std::uint64_t t = 0; t < count; ++t) {
+        const char* rec = bytes.data() + 84 + 50 * t + 12;  // skip the stored normal: the winding decides
+        std::vector<std::uint32_t> face;
+        for (int v = 0; v < 3; ++v) {
+            const char* p = rec + 12 * v;
+            face.push_back(static_cast<std::uint32_t>(m.points.size()));
+            m.points.emplace_back(le_f32(p), le_f32(p + 4), le_f32(p + 8));
+        }
+        m.faces.push_back(std::move(face));
+    }
+    return m;
+}
+
+scene::Mesh read_ascii(std::string_view bytes, std::uint64_t max_faces) {
+    Tokens in(bytes);
+    scene::Mesh m;
+    in.expect("solid");
+    in.skip_line();  // the solid's name
+    for (;;) {
+        std::string_view t = in.next();
+        if (t == "endsolid") {
+            in.skip_line();
+            if (in.at_end()) break;
+            in.expect("solid");  // files may hold several solids
+            in.skip_line();
+            continue;
+        }
+        if (t != "facet") in.fail("expected 'facet' or 'endsolid', got " + Tokens::quoted(t));
+        if (m.faces.size() >= max_faces)
+            in.fail("more than " + std::to_string(max_faces) + " triangles (--max-list)");
+        in.expect("normal");
+        for (int i = 0; i < 3; ++i) in.number("a normal coordinate");
+        in.expect("outer");
+        in.expect("loop");
+        std::vector<std::uint32_t> face;
+        for (t = in.next(); t == "vertex"; t = in.next()) {
+            double x = in.number("a vertex coordinate");
+            double y = in.number("a vertex coordinate");
+            double z = in.number("a vertex coordinate");
+            face.push_back(static_cast<std::uint32_t>(m.points.size()));
+            m.points.emplace_back(x, y, z);
+        }
+        if (t != "endloop") in.fail("expected 'vertex' or 'endloop'");
+        if (face.size() < 3) in.fail("a facet needs 3 vertices, got " + std::to_string(face.size()));
+        in.expect("endfacet");
+        m.faces.push_back(std::move(face));
+    }
+    return m;
+}
+
+}  // namespace
+
+scene::Mesh read_stl(std::string_view bytes, std::uint64_t max_faces) {
+    // A binary file's header may begin with "solid" too: the size decides,
+    // and control bytes tell a broken binary file from a broken ASCII one.
+    const bool text = std::none_of(bytes.begin(), bytes.end(), [](char c) {
+        return (c >= 0 && c < 9) || (c > 13 && c < 32);
+    });
+    if (bytes.size() >= 84) {
+        const std::uint64_t count = le_u32(bytes.data() + 80);
+        if (bytes.size() == 84 + 50 * count) return read_binary(bytes, count, max_faces);
+        if (!text || bytes.substr(0, 5) != "solid")
+            throw MeshFormatError("binary STL header counts " + std::to_string(count) + " triangles (" +
+                                  std::to_string(84 + 50 * count) + " bytes) but the file has " +
+                                  std::to_string(bytes.size()) + " bytes");
+    }
+    if (bytes.substr(0, 5) == "solid") return read_ascii(bytes, max_faces);
+    throw MeshFormatError("not an STL file (shorter than a binary STL header, no 'solid')");
+}
+
+}  // namespace kerf::eval::mesh_format

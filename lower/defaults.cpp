@@ -1,0 +1,62 @@
+#include "lower/defaults.hpp"
+
+#include <cmath>
+
+namespace kerf {
+
+namespace {
+
+bool finite(const csg::Aabb& b) {
+    for (int i = 0; i < 3; ++i)
+        if (!std::isfinite(b.lo[i]) || !std::isfinite(b.hi[i])) return false;
+    return !b.empty();
+}
+
+}  // namespace
+
+csg::Aabb framing_box(const csg::Scene& scene) {
+    const csg::Aabb root = scene.bounds();
+    if (finite(root)) return root;
+    csg::Aabb frame;
+    for (const csg::Leaf& leaf : scene.leaves)
+        if (finite(leaf.bounds)) frame.extend(leaf.bounds);
+    if (frame.empty()) frame = {glm::dvec3(-1), glm::dvec3(1)};
+    return frame;
+}
+
+csg::Camera default_camera(const csg::Aabb& frame) {
+    csg::Camera cam;
+    cam.fov = 40;
+    cam.up = {0, 0, 1};
+    const glm::dvec3 centre = 0.5 * (frame.lo + frame.hi);
+    double radius = 0.5 * glm::length(frame.hi - frame.lo);
+    // A point or a vanishing box still needs a camera some distance away.
+    if (!(radius > 1e-9 * (1 + glm::length(centre)))) radius = 1;
+    const double half = glm::radians(cam.fov / 2);
+    const double distance = 1.05 * radius / std::sin(half);
+    cam.look_at = centre;
+    cam.position = centre + distance * glm::normalize(glm::dvec3(1, -1, 0.8));
+    return cam;
+}
+
+std::vector<csg::Light> default_lights(const csg::Camera& cam) {
+    glm::dvec3 to_camera = cam.position - cam.look_at;
+    double distance = glm::length(to_camera);
+    // A user camera may sit on its look_at point or look along its up vector.
+    if (!(distance > 0)) to_camera = {1, -1, 0.8}, distance = glm::length(to_camera);
+    const glm::dvec3 forward = -to_camera / distance;
+    glm::dvec3 side = glm::cross(forward, cam.up);
+    if (!(glm::length(side) > 1e-9)) side = glm::cross(forward, glm::dvec3(0, 1, 0));
+    if (!(glm::length(side) > 1e-9)) side = glm::cross(forward, glm::dvec3(1, 0, 0));
+    const glm::dvec3 right = glm::normalize(side);
+    const glm::dvec3 up = glm::cross(right, forward);
+    csg::Light key;
+    key.position = cam.position + distance * (0.7 * up - 0.6 * right);
+    key.intensity = 1.0;
+    csg::Light head;
+    head.position = cam.position;
+    head.intensity = 0.25;
+    return {key, head};
+}
+
+}  // namespace kerf

@@ -1,0 +1,352 @@
+// build_flat_tree: one post-order walk over the scene graph with an explicit
+// stack of frames. Each frame gathers its operands as it goes (merging
+// nested unions/intersections/subtrahend unions by list splicing, dropping
+// what its box rules out), and turns them into one flat node when done.
+#include <stdexcept>
+
+#include "lower/flat_tree.hpp"
+#include "csg/huge_pages.hpp"
+#include "lower/leaf_placement.hpp"
+#include "lower/primitive_bounds.hpp"
+
+namespace kerf::lowering {
+
+namespace {
+
+using csg::Aabb;
+using csg::kNone;
+using scene::NodeKind;
+
+// One scene-graph node being lowered: its context (transform and material
+// scope for its children) and the operands gathered so far.
+struct Frame {
+    std::uint32_t gnode = 0;
+    NodeKind kind = NodeKind::Union;
+    std::uint32_t next_child = 0;
+    csg::Affine xf;                     // world_from_object for the children
+    std::uint32_t material = kNone;     // graph material index, kNone = default
+    bool empty = false;                 // already known to be the empty solid
+    std::uint32_t head = kNone, tail = kNone, count = 0;  // operands / subtrahends
+    std::uint32_t minuend = kNone;
+    Aabb bounds;                        // union: running box; difference: minuend's box
+};
+
+csg::Affine compose(const csg::Affine& parent, const glm::dmat4& child) {
+    const glm::dmat3 l(child);
+    const glm::dvec3 t(child[3]);
+    return {parent.linear * l, parent.linear * t + parent.offset};
+}
+
+class TreeBuilder {
+public:
+    // Leaves are written straight into the scene's vector (in creation order;
+    // the emitter compacts away the pruned ones in place) so the largest
+    // array of the scene is touched once.
+    TreeBuilder(const scene::SceneGraph& g, std::vector<csg::Leaf>& out) : leaves(out), g_(g) {
+        std::size_t prims = 0;
+        for (const scene::Node& n : g.nodes) prims += n.kind == NodeKind::Primitive;
+        reserve_huge(out, prims);
+        reserve_huge(nodes, g.nodes.size());
+    }
+
+    std::vector<TNode> nodes;
+    std::vector<csg::Leaf>& leaves;  // material/mesh/source hold graph indices until emit
+
+    // Returns the root TNode, or kNone for the empty solid.
+    std::uint32_t build() {
+        if (g_.root >= g_.nodes.size()) return kNone;
+        if (g_.nodes[g_.root].kind == NodeKind::Primitive) return make_leaf(g_.root, {}, kNone);
+        std::vector<Frame> stack;
+        stack.push_back(open(g_.root, {}, kNone));
+        for (;;) {
+            Frame& f = stack.back();
+            const scene::Node& gn = g_.nodes[f.gnode];
+            if (f.next_child < gn.child_count) {
+                const std::uint32_t c = child(gn, f.gnode, f.next_child++);
+                if (g_.nodes[c].kind == NodeKind::Primitive) {
+                    deliver(f, make_leaf(c, f.xf, f.material));
+                } else {
+                    Frame next = open(c, f.xf, f.material);
+                    stack.push_back(std::move(next));
+                }
+                continue;
+            }
+            const std::uint32_t result = finish(f);
+            stack.pop_back();
+            if (stack.empty()) return result;
+            deliver(stack.back(), result);
+        }
+    }
+
+private:
+    const scene::SceneGraph& g_;
+
+    std::uint32_t child(const scene::Node& gn, std::uint32_t parent, std::uint32_t i) const {
+        const std::size_t ref = std::size_t(gn.first_child) + i;
+        // Children precede parents in the arena: checking it rules out cycles.
+        if (ref >= g_.child_refs.size() || g_.child_refs[ref] >= parent)
+            throw std::invalid_argument("lower_to_csg: malformed scene graph (bad child reference)");
+        return g_.child_refs[ref];
+    }
+
+    Frame open(std::uint32_t gnode, const csg::Affine& xf, std::uint32_t material) const {
+        const scene::Node& gn = g_.nodes[gnode];
+        Frame f;
+        f.gnode = gnode;
+        f.kind = gn.kind;
+        f.xf = xf;
+        f.material = material;
+        if (gn.kind == NodeKind::Transform) {
+            if (gn.index >= g_.matrices.size())
+                throw std::invalid_argument("lower_to_csg: malformed scene graph (bad matrix index)");
+            f.xf = compose(xf, g_.matrices[gn.index]);
+        } else if (gn.kind == NodeKind::Appearance) {
+            if (gn.index >= g_.materials.size())
+                throw std::invalid_argument("lower_to_csg: malformed scene graph (bad material index)");
+            f.material = gn.index;  // the innermost scope wins
+        }
+        return f;
+    }
+
+    std::uint32_t make_leaf(std::uint32_t gnode, const csg::Affine& xf, std::uint32_t material) {
+        const scene::Node& gn = g_.nodes[gnode];
+        csg::Leaf& leaf = leaves.emplace_back();
+        leaf.kind = static_cast<csg::PrimKind>(gn.prim);
+        for (int i = 0; i < 6; ++i) leaf.p[i] = gn.p[i];
+        leaf.material = material;
+        leaf.source = gnode;
+        const std::vector<glm::dvec3>* points = nullptr;
+        if (gn.prim == scene::PrimKind::Mesh) {
+            if (gn.index >= g_.meshes.size())
+                throw std::invalid_argument("lower_to_csg: malformed scene graph (bad mesh index)");
+            leaf.mesh = gn.index;
+            points = &g_.meshes[gn.index].points;
+        }
+        place_leaf(leaf, xf, points, gn.loc);
+        if (leaf.bounds.empty()) {  // e.g. a mesh without points
+            leaves.pop_back();
+            return kNone;
+        }
+        TNode t;
+        t.op = csg::Op::Leaf;
+        t.leaf = static_cast<std::uint32_t>(leaves.size() - 1);
+        t.bounds = leaf.bounds;
+        nodes.push_back(t);
+        return static_cast<std::uint32_t>(nodes.size() - 1);
+    }
+
+    void append(Frame& f, std::uint32_t n) {
+        nodes[n].next = kNone;
+        if (f.head == kNone) f.head = n; else nodes[f.tail].next = n;
+        f.tail = n;
+        ++f.count;
+    }
+
+    void splice(Frame& f, const TNode& t) {
+        if (f.head == kNone) f.head = t.head; else nodes[f.tail].next = t.head;
+        f.tail = t.tail;
+        f.count += t.count;
+    }
+
+    bool is_plane(std::uint32_t n) const {
+        return nodes[n].op == csg::Op::Leaf && leaves[nodes[n].leaf].kind == csg::PrimKind::Plane;
+    }
+
+    void add_subtrahend(Frame& f, std::uint32_t n) {
+        // A subtrahend whose box misses the minuend's cannot remove anything;
+        // nor can a (tilted, so unbounded-box) half-space missing that box.
+        if (Aabb::overlap(nodes[n].bounds, f.bounds).empty()) return;
+        if (is_plane(n) && clip_by_halfspace(f.bounds, world_halfspace(leaves[nodes[n].leaf])).empty()) return;
+        append(f, n);
+    }
+
+    void deliver(Frame& f, std::uint32_t r) {
+        switch (f.kind) {
+            case NodeKind::Intersection:
+                if (r == kNone) f.empty = true;
+                else if (nodes[r].op == csg::Op::Intersection) splice(f, nodes[r]);
+                else append(f, r);
+                return;
+            case NodeKind::Difference:
+                if (f.next_child == 1) {
+                    if (r == kNone) { f.empty = true; return; }
+                    f.bounds = nodes[r].bounds;
+                    if (nodes[r].op == csg::Op::Difference) {
+                        // (a − b) − c = a − (b ∪ c): adopt the inner minuend and subtrahends.
+                        const TNode& d = nodes[r];
+                        f.minuend = d.head;
+                        f.head = nodes[d.head].next;
+                        f.tail = d.tail;
+                        f.count = d.count - 1;
+                        nodes[d.head].next = kNone;
+                    } else {
+                        f.minuend = r;
+                    }
+                    return;
+                }
+                if (r == kNone || f.empty) return;
+                if (nodes[r].op == csg::Op::Union) {
+                    for (std::uint32_t c = nodes[r].head; c != kNone;) {
+                        const std::uint32_t next = nodes[c].next;
+                        add_subtrahend(f, c);
+                        c = next;
+                    }
+                } else {
+                    add_subtrahend(f, r);
+                }
+                return;
+            default:  // Union, Transform, Appearance: all unions of their children
+                if (r == kNone) return;
+                if (nodes[r].op == csg::Op::Union) splice(f, nodes[r]); else append(f, r);
+                f.bounds.extend(nodes[r].bounds);
+                return;
+        }
+    }
+
+    std::uint32_t make_op(csg::Op op, std::uint32_t head, std::uint32_t tail, std::uint32_t count,
+                          const Aabb& bounds) {
+        TNode t;
+        t.op = op;
+        t.head = head;
+        t.tail = tail;
+        t.count = count;
+        t.bounds = bounds;
+        nodes.push_back(t);
+        return static_cast<std::uint32_t>(nodes.size() - 1);
+    }
+
+    std::uint32_t single(std::uint32_t n) {
+        nodes[n].next = kNone;
+        return n;
+    }
+
+    std::uint32_t finish(Frame& f) {
+        switch (f.kind) {
+            case NodeKind::Intersection: return finish_intersection(f);
+            case NodeKind::Difference: return finish_difference(f);
+            default:
+                if (f.count == 0) return kNone;
+                if (f.count == 1) return single(f.head);
+                return make_op(csg::Op::Union, f.head, f.tail, f.count, f.bounds);
+        }
+    }
+
+    std::uint32_t finish_intersection(Frame& f) {
+        if (f.empty || f.count == 0) return kNone;
+        Aabb box = Aabb::everything();
+        for (std::uint32_t c = f.head; c != kNone; c = nodes[c].next) box = Aabb::overlap(box, nodes[c].bounds);
+        for (std::uint32_t c = f.head; c != kNone && !box.empty(); c = nodes[c].next)
+            if (is_plane(c)) box = clip_by_halfspace(box, world_halfspace(leaves[nodes[c].leaf]));
+        if (box.empty()) return kNone;
+        drop_redundant_halfspaces(f, box);
+        if (f.count == 1) return single(f.head);
+        if (!trim_union_operands(f, box)) return kNone;
+        return make_op(csg::Op::Intersection, f.head, f.tail, f.count, box);
+    }
+
+    // A half-space containing the whole box of the intersection changes
+    // nothing; drop it (keeping at least one operand).
+    void drop_redundant_halfspaces(Frame& f, const Aabb& box) {
+        std::uint32_t c = f.head;
+        f.head = f.tail = kNone;
+        const std::uint32_t total = f.count;
+        f.count = 0;
+        std::uint32_t dropped = 0;
+        while (c != kNone) {
+            const std::uint32_t next = nodes[c].next;
+            bool redundant = false;
+            if (is_plane(c) && dropped + 1 < total) {
+                const HalfSpace h = world_halfspace(leaves[nodes[c].leaf]);
+                redundant = clip_by_halfspace(box, {-h.normal, -h.offset}).empty();
+            }
+            if (redundant) ++dropped; else append(f, c);
+            c = next;
+        }
+    }
+
+    // Only the parts of a union operand inside the intersection's box can
+    // matter: drop union members that miss it (and tighten the box with the
+    // trimmed unions). Returns false when some operand has nothing left,
+    // i.e. the intersection is empty.
+    bool trim_union_operands(Frame& f, Aabb& box) {
+        std::uint32_t c = f.head;
+        f.head = f.tail = kNone;
+        f.count = 0;
+        while (c != kNone) {
+            const std::uint32_t next = nodes[c].next;
+            if (nodes[c].op != csg::Op::Union) {
+                append(f, c);
+                c = next;
+                continue;
+            }
+            TNode& u = nodes[c];
+            std::uint32_t head = kNone, tail = kNone, count = 0;
+            Aabb ubox;
+            for (std::uint32_t m = u.head; m != kNone;) {
+                const std::uint32_t after = nodes[m].next;
+                if (!Aabb::overlap(nodes[m].bounds, box).empty()) {
+                    nodes[m].next = kNone;
+                    if (head == kNone) head = m; else nodes[tail].next = m;
+                    tail = m;
+                    ++count;
+                    ubox.extend(nodes[m].bounds);
+                }
+                m = after;
+            }
+            if (count == 0) return false;
+            box = Aabb::overlap(box, ubox);
+            if (count == 1 && nodes[head].op == csg::Op::Intersection) {
+                splice(f, nodes[head]);  // keep intersections flat
+            } else if (count == 1) {
+                append(f, head);
+            } else {
+                u.head = head;
+                u.tail = tail;
+                u.count = count;
+                u.bounds = ubox;
+                append(f, c);
+            }
+            c = next;
+        }
+        return !box.empty();
+    }
+
+    std::uint32_t finish_difference(Frame& f) {
+        if (f.empty || f.minuend == kNone) return kNone;
+        // Subtracting a half-space keeps only the minuend's part outside it.
+        bool clipped = false;
+        for (std::uint32_t c = f.head; c != kNone && !f.bounds.empty(); c = nodes[c].next) {
+            if (!is_plane(c)) continue;
+            HalfSpace h = world_halfspace(leaves[nodes[c].leaf]);
+            f.bounds = clip_by_halfspace(f.bounds, {-h.normal, -h.offset});
+            clipped = true;
+        }
+        if (f.bounds.empty()) return kNone;
+        if (clipped) {  // the box shrank: drop subtrahends that now miss it
+            std::uint32_t c = f.head;
+            f.head = f.tail = kNone;
+            f.count = 0;
+            while (c != kNone) {
+                const std::uint32_t next = nodes[c].next;
+                add_subtrahend(f, c);
+                c = next;
+            }
+        }
+        if (f.count == 0) return single(f.minuend);
+        nodes[f.minuend].next = f.head;
+        return make_op(csg::Op::Difference, f.minuend, f.tail, f.count + 1, f.bounds);
+    }
+};
+
+
+}  // namespace
+
+FlatTree build_flat_tree(const scene::SceneGraph& graph, std::vector<csg::Leaf>& leaves) {
+    TreeBuilder builder(graph, leaves);
+    FlatTree tree;
+    tree.root = builder.build();
+    tree.nodes = std::move(builder.nodes);
+    return tree;
+}
+
+}  // namespace kerf::lowering

@@ -1,0 +1,42 @@
+// Lowering's intermediate form (issue 3): the flattened, pruned operation
+// tree as linked lists, built by one post-order walk of the scene graph
+// (flat_tree.cpp) and written into csg::Scene by one pre-order walk
+// (flat_tree_emit.cpp). Both walks use explicit stacks, so a lopsided chain
+// of a million unions cannot overflow the call stack; child lists are linked
+// lists so merging a nested union into its parent is O(1).
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "interpreter/scene_graph.hpp"
+#include "csg/scene.hpp"
+
+namespace kerf::lowering {
+
+// A node of the flattened tree. Children form a singly linked list through
+// `next` (for a Difference the first one is the minuend).
+struct TNode {
+    csg::Op op = csg::Op::Leaf;
+    std::uint32_t leaf = csg::kNone;  // Leaf: index into the leaves vector
+    std::uint32_t head = csg::kNone, tail = csg::kNone, count = 0;
+    std::uint32_t next = csg::kNone;
+    csg::Aabb bounds;
+};
+
+struct FlatTree {
+    std::vector<TNode> nodes;
+    std::uint32_t root = csg::kNone;  // kNone: the empty solid
+};
+
+// Flattens and prunes the graph. Leaves are appended to `leaves` in creation
+// order with their world matrices and boxes set, while material, mesh and
+// source still hold graph indices (material kNone = default, source = the
+// graph node). Throws SourceError for singular transforms.
+FlatTree build_flat_tree(const scene::SceneGraph& graph, std::vector<csg::Leaf>& leaves);
+
+// Writes nodes/children in pre-order into `scene` (whose `leaves` are the
+// ones build_flat_tree filled), keeps only the leaves the tree uses, and
+// resolves materials, meshes and sources into the scene's tables.
+void emit_flat_tree(const scene::SceneGraph& graph, const FlatTree& tree, csg::Scene& scene);
+
+}  // namespace kerf::lowering

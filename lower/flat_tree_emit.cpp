@@ -1,0 +1,177 @@
+// emit_flat_tree: the flat tree into csg::Scene arrays (pre-order, contiguous
+// child runs), plus the tables only surviving leaves need: materials,
+// meshes (converted once each), files and source locations.
+#include <string>
+#include <unordered_map>
+
+#include "lower/flat_tree.hpp"
+#include "csg/huge_pages.hpp"
+#include "lower/mesh_lowering.hpp"
+
+namespace kerf::lowering {
+
+namespace {
+
+using csg::kNone;
+
+// Writes the flattened tree into the scene in pre-order, remapping leaves,
+// materials, meshes and sources to only those the surviving leaves use.
+class Emitter {
+public:
+    Emitter(const scene::SceneGraph& g, const FlatTree& t, csg::Scene& s) : g_(g), t_(t), s_(s) {}
+
+    void emit(std::uint32_t root) {
+        s_.materials.push_back(csg::Material{});  // 0: the default light grey
+        material_map_.assign(g_.materials.size(), kNone);
+        mesh_map_.assign(g_.meshes.size(), kNone);
+        if (root != kNone) {
+            reserve_huge(s_.nodes, t_.nodes.size());
+            reserve_huge(s_.children, t_.nodes.size());
+            emit_tree(root);
+        }
+        keep_emitted_leaves();
+    }
+
+private:
+    // Leaf i of the scene is builder leaf order_[i].
+    std::vector<std::uint32_t> order_;
+
+    // Pre-order visits leaves in the order the builder created them (every
+    // merge keeps operand order), so the survivors can be moved down in place.
+    void keep_emitted_leaves() {
+        std::vector<csg::Leaf>& leaves = s_.leaves;
+        bool increasing = true;
+        for (std::size_t k = 0; k < order_.size(); ++k) increasing = increasing && order_[k] >= k && (k == 0 || order_[k] > order_[k - 1]);
+        if (increasing) {
+            for (std::size_t k = 0; k < order_.size(); ++k)
+                if (order_[k] != k) leaves[k] = leaves[order_[k]];
+            leaves.resize(order_.size());
+        } else {  // not expected; kept so a future merge rule cannot corrupt leaves
+            std::vector<csg::Leaf> out;
+            out.reserve(order_.size());
+            for (std::uint32_t t : order_) out.push_back(leaves[t]);
+            leaves = std::move(out);
+        }
+        for (csg::Leaf& leaf : leaves) resolve(leaf);
+    }
+
+    void emit_tree(std::uint32_t root) {
+        s_.root = 0;
+        struct Item { std::uint32_t tnode, parent, slot; };
+        std::vector<Item> stack{{root, kNone, kNone}};
+        std::vector<std::uint32_t> kids;
+        while (!stack.empty()) {
+            const Item it = stack.back();
+            stack.pop_back();
+            const TNode& tn = t_.nodes[it.tnode];
+            const auto index = static_cast<std::uint32_t>(s_.nodes.size());
+            csg::Node node;
+            node.op = tn.op;
+            node.parent = it.parent;
+            node.bounds = tn.bounds;
+            if (it.slot != kNone) s_.children[it.slot] = index;
+            if (tn.op == csg::Op::Leaf) {
+                node.first = static_cast<std::uint32_t>(order_.size());
+                node.count = 0;
+                order_.push_back(tn.leaf);
+                s_.nodes.push_back(node);
+                continue;
+            }
+            node.first = static_cast<std::uint32_t>(s_.children.size());
+            node.count = tn.count;
+            s_.nodes.push_back(node);
+            s_.children.resize(s_.children.size() + tn.count, kNone);
+            kids.clear();
+            for (std::uint32_t c = tn.head; c != kNone; c = t_.nodes[c].next) kids.push_back(c);
+            // Reverse push so the first child is emitted (and numbered) first.
+            for (std::size_t k = kids.size(); k-- > 0;)
+                stack.push_back({kids[k], index, node.first + static_cast<std::uint32_t>(k)});
+        }
+    }
+
+    const scene::SceneGraph& g_;
+    const FlatTree& t_;
+    csg::Scene& s_;
+    std::vector<std::uint32_t> material_map_, mesh_map_;
+    std::unordered_map<const SourceFile*, std::uint32_t> file_by_ptr_;
+    std::unordered_map<std::string, std::uint32_t> file_by_path_;
+    struct SourceKey {
+        std::uint32_t file, line, col;
+        bool operator==(const SourceKey&) const = default;
+    };
+    struct SourceHash {
+        std::size_t operator()(const SourceKey& k) const {
+            return std::hash<std::uint64_t>{}((std::uint64_t(k.file) << 40) ^ (std::uint64_t(k.line) << 16) ^ k.col);
+        }
+    };
+    std::unordered_map<SourceKey, std::uint32_t, SourceHash> source_map_;
+    const SourceFile* last_file_ = nullptr;
+    std::uint32_t last_file_index_ = kNone;
+
+    void resolve(csg::Leaf& leaf) {
+        leaf.material = material(leaf.material);
+        if (leaf.mesh != kNone) leaf.mesh = mesh(leaf.mesh);
+        leaf.source = source(g_.nodes[leaf.source].loc);
+    }
+
+    std::uint32_t material(std::uint32_t gm) {
+        if (gm == kNone) return 0;
+        if (material_map_[gm] == kNone) {
+            const scene::Material& m = g_.materials[gm];
+            csg::Material c;
+            c.color = m.color;
+            c.alpha = m.alpha;
+            c.interior = m.interior;
+            c.diffuse = m.diffuse;
+            c.specular = m.specular;
+            c.shininess = m.shininess;
+            c.reflect = m.reflect;
+            material_map_[gm] = static_cast<std::uint32_t>(s_.materials.size());
+            s_.materials.push_back(c);
+        }
+        return material_map_[gm];
+    }
+
+    std::uint32_t mesh(std::uint32_t gm) {
+        if (mesh_map_[gm] == kNone) {  // converted once, shared by every leaf using it
+            mesh_map_[gm] = static_cast<std::uint32_t>(s_.meshes.size());
+            s_.meshes.push_back(lower_mesh(g_.meshes[gm]));
+        }
+        return mesh_map_[gm];
+    }
+
+    std::uint32_t file(const SourceFile* f) {
+        if (f == last_file_) return last_file_index_;
+        auto it = file_by_ptr_.find(f);
+        std::uint32_t index;
+        if (it != file_by_ptr_.end()) {
+            index = it->second;
+        } else {
+            const std::string path = f ? f->path : std::string("<command line>");
+            auto [pit, added] = file_by_path_.try_emplace(path, static_cast<std::uint32_t>(s_.files.size()));
+            if (added) s_.files.push_back(path);
+            index = pit->second;
+            file_by_ptr_.emplace(f, index);
+        }
+        last_file_ = f;
+        last_file_index_ = index;
+        return index;
+    }
+
+    std::uint32_t source(const SourceLoc& loc) {
+        if (!loc.file && loc.line == 0) return kNone;
+        const SourceKey key{file(loc.file.get()), loc.line, loc.col};
+        auto [it, added] = source_map_.try_emplace(key, static_cast<std::uint32_t>(s_.sources.size()));
+        if (added) s_.sources.push_back({key.file, key.line, key.col});
+        return it->second;
+    }
+};
+
+
+}  // namespace
+
+void emit_flat_tree(const scene::SceneGraph& graph, const FlatTree& tree, csg::Scene& scene) {
+    Emitter(graph, tree, scene).emit(tree.root);
+}
+
+}  // namespace kerf::lowering

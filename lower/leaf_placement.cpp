@@ -1,0 +1,62 @@
+#include "lower/leaf_placement.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "lower/mesh_lowering.hpp"
+#include "lower/primitive_bounds.hpp"
+
+namespace kerf {
+
+namespace {
+
+bool all_finite(const csg::Affine& a) {
+    for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r)
+            if (!std::isfinite(a.linear[c][r])) return false;
+    return std::isfinite(a.offset.x) && std::isfinite(a.offset.y) && std::isfinite(a.offset.z);
+}
+
+// |det| relative to the product of the column lengths (Hadamard's bound):
+// 1 for any rotation/uniform scale, 0 for a flattening map, independent of
+// the overall size so tiny or huge models are not mistaken for singular.
+// (Columns are normalised first so the ratio cannot underflow.)
+double volume_ratio(const glm::dmat3& m) {
+    glm::dmat3 unit;
+    for (int c = 0; c < 3; ++c) {
+        const double len = glm::length(m[c]);
+        if (!(len > 0)) return 0;
+        unit[c] = m[c] / len;
+    }
+    return std::abs(glm::determinant(unit));
+}
+
+}  // namespace
+
+void place_leaf(csg::Leaf& leaf, const csg::Affine& wfo, const std::vector<glm::dvec3>* mesh_points,
+                const SourceLoc& loc) {
+    if (!all_finite(wfo)) throw SourceError(loc, "the transforms around this primitive are not finite");
+    if (!(volume_ratio(wfo.linear) > 1e-12))
+        throw SourceError(loc, "the transforms around this primitive are singular (they flatten it to zero volume)");
+    leaf.world_from_object = wfo;
+    // Inverting the rescaled matrix keeps the determinant from under- or
+    // overflowing for very small or very large (but regular) maps.
+    double size = 0;
+    for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r) size = std::max(size, std::abs(wfo.linear[c][r]));
+    leaf.object_from_world.linear = glm::inverse(wfo.linear / size) / size;
+    leaf.object_from_world.offset = -(leaf.object_from_world.linear * wfo.offset);
+    if (!all_finite(leaf.object_from_world))
+        throw SourceError(loc, "the transforms around this primitive cannot be inverted");
+    // Normals map by the inverse transpose, which keeps them outward under
+    // mirrors too: for an outward step v (n·v > 0), (L⁻ᵀn)·(L v) = n·v > 0.
+    leaf.normal_to_world = glm::transpose(leaf.object_from_world.linear);
+    if (leaf.kind == csg::PrimKind::Mesh)
+        leaf.bounds = mesh_points ? mesh_bounds(*mesh_points, wfo) : csg::Aabb{};
+    else if (leaf.kind == csg::PrimKind::Plane)
+        leaf.bounds = clip_by_halfspace(csg::Aabb::everything(), world_halfspace(leaf));
+    else
+        leaf.bounds = primitive_bounds(leaf.kind, leaf.p, wfo);
+}
+
+}  // namespace kerf

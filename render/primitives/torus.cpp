@@ -1,0 +1,219 @@
+// Torus in the XY plane: (ρ - R)² + z² < r². Work in units of R along a unit
+// direction from the point of the line closest to the centre, so every
+// quantity is O(1) whatever the scale, distance or ray length. The quartic
+// P = (|x|² + 1 - r²)² - 4ρ² only locates the turning points that separate
+// the roots and brings each root close (no sqrt); signs and final roots come
+// from F = (ρ - 1)² + z² - r², which has the same sign and roots but no
+// cancellation of O(1) terms for thin tori (r << R).
+#include <algorithm>
+#include <cmath>
+
+#include "render/primitives/kinds.hpp"
+#include "render/primitives/quartic.hpp"
+
+namespace kerf::csg {
+
+namespace {
+
+template <typename T>
+struct TorusLine {
+    Vec3<T> q, u;  // line q + λ·u, torus R = 1, minor radius rr
+    T rr2;
+    // F(λ)·ρ and F'(λ)·ρ: same sign and same Newton step F/F' as F itself,
+    // without a division by ρ (ρ > 0 except on the axis, far from the tube).
+    // F < 0 strictly inside.
+    T operator()(T lambda, T& deriv) const {
+        const Vec3<T> x = q + lambda * u;
+        const T rho = std::sqrt(x.x * x.x + x.y * x.y);
+        const T e = rho - T(1);
+        const T f = e * e + x.z * x.z - rr2;
+        if (rho == T(0)) {  // on the axis: F > 0 there, keep it unscaled
+            deriv = T(2) * x.z * u.z;
+            return f;
+        }
+        deriv = T(2) * (e * (x.x * u.x + x.y * u.y) + x.z * u.z * rho);
+        return f * rho;
+    }
+};
+
+// The crossing in the piece [a, b] of the chord, where F changes sign once;
+// the inside end t (F(t) < 0) is at or near a minimum of P. Three stages,
+// each cheaper than the sqrt of an F evaluation:
+//  1. a quadratic model P(t + δ) ≈ P(t) + P'(t)·δ + A·δ² (A: P''(t)/2, or the
+//     curvature of the chord to the outside end if larger, which keeps the
+//     model's root inside the piece); for a thin tube F is nearly quadratic
+//     there, so this is already close;
+//  2. Newton on the polynomial P until its steps predict ~1e-10 (no sqrt; P
+//     loses digits to cancellation for thin tori, so only to start stage 3);
+//  3. bracketed Newton on F, which is exact; usually one step suffices.
+template <typename T>
+T crossing(const TorusLine<T>& line, const T c[5], T a, T b, bool a_inside, T rr, T tol) {
+    const T t = a_inside ? a : b, e = a_inside ? b : a, w = e - t;
+    T dp, hp2, dummy;
+    const T p = poly_taylor2<T, 4>(c, t, dp, hp2);
+    const T pe = poly_eval<T, 4>(c, e, dummy);
+    T x = T(0.5) * (a + b);
+    if (p < T(0) && pe > T(0)) {
+        const T A = std::max(hp2, (pe - p - dp * w) / (w * w));
+        // The model's root on e's side, in the form without cancellation.
+        const T sdp = w > T(0) ? dp : -dp;
+        const T xq = t + std::copysign(T(-2) * p / (std::sqrt(dp * dp - T(4) * A * p) + sdp), w);
+        if (xq > a && xq < b) x = xq;
+    }
+    const T coarse = std::sqrt(std::numeric_limits<T>::epsilon()) * T(0.01);
+    T prev = b - a;
+    for (int it = 0; it < 8; ++it) {
+        T dpx;
+        const T step = poly_eval<T, 4>(c, x, dpx) / dpx;
+        const T next = x - step;
+        if (!(next > a && next < b)) break;  // P's rounding or a far start: F takes over
+        x = next;
+        // Newton's error after this step is about step³/prev² once it converges.
+        const T as = std::abs(step);
+        if (as * as * as <= coarse * std::max(T(1), std::abs(x)) * prev * prev) break;
+        prev = as;
+    }
+    // Near the surface, when rr <= 1/2: |F''|/2 = |ρ'² + z'² + (ρ - 1)·ρ''| <= 2
+    // (ρ'' <= 1/ρ) and the returned derivative is F'·ρ with ρ <= 1.5, so 4
+    // bounds |F''|/2·ρ for newton_in_bracket.
+    return newton_in_bracket<T>(line, a, b, a_inside, x, tol, 80, rr <= T(0.5) ? T(4) : T(0));
+}
+
+// The crossing in [a, b] (inside at a if a_inside), when only the window
+// [wlo, whi] needs exact roots: a crossing outside it is reported at a point
+// between it and the window (still outside), so rays that start inside a
+// tube or leave the window inside one skip a solve. One F evaluation at a
+// window end inside the piece decides on which side the crossing lies.
+template <typename T>
+T windowed_crossing(const TorusLine<T>& line, const T c[5], T a, T b, bool a_inside, T wlo, T whi, T rr, T tol) {
+    if (b <= wlo) return b;
+    if (a >= whi) return a;
+    T dummy;
+    if (a < wlo) {
+        const bool w_inside = line(wlo, dummy) < T(0);
+        if (w_inside != a_inside) return wlo;  // already crossed before the window
+        a = wlo;
+    }
+    if (b > whi) {
+        const bool w_inside = line(whi, dummy) < T(0);
+        if (w_inside == a_inside) return whi;  // crosses only after the window
+        b = whi;
+    }
+    return crossing(line, c, a, b, a_inside, rr, tol);
+}
+
+}  // namespace
+
+template <typename T>
+int intersect_torus(const double* p, const Vec3<T>& o, const Vec3<T>& d, Span<T>* out, T wa, T wb) {
+    constexpr T eps = std::numeric_limits<T>::epsilon();
+    const T R = T(p[0]);
+    const T rr = T(p[1] / p[0]);
+    const T dd = glm::dot(d, d);
+    const T tc = -glm::dot(o, d) / dd;
+    const Vec3<T> q = (o + tc * d) / R;
+    // Cheap rejection: bounding sphere (radius 1 + rr), then the slab |z| < rr.
+    const T outer = T(1) + rr;
+    const T q2 = glm::dot(q, q);
+    if (q2 >= outer * outer) return 0;
+    const T len = std::sqrt(dd);
+    const Vec3<T> u = d / len;
+    T half = std::sqrt((outer - std::sqrt(q2)) * (outer + std::sqrt(q2)));
+    T lo = -half, hi = half;
+    if (u.z != T(0)) {
+        T za = (-rr - q.z) / u.z, zb = (rr - q.z) / u.z;
+        if (za > zb) { const T t = za; za = zb; zb = t; }
+        lo = std::max(lo, za);
+        hi = std::min(hi, zb);
+    } else if (!(std::abs(q.z) < rr)) {
+        return 0;
+    }
+    if (!(lo < hi)) return 0;
+    // Ring test: the tube lies in (1 - rr)² <= ρ² <= (1 + rr)². ρ²(λ) is a
+    // convex parabola, so its largest value on [lo, hi] is at an end and its
+    // smallest at the vertex or an end. A chord that stays in the hole (a ray
+    // looking down through the ring) or outside the ring's rim misses, and
+    // costs no quartic. Cut only with a margin, so grazing rays are solved.
+    const T alpha = u.x * u.x + u.y * u.y, beta = q.x * u.x + q.y * u.y, gamma = q.x * q.x + q.y * q.y;
+    {
+        const T r_lo = alpha * lo * lo + T(2) * beta * lo + gamma;
+        const T r_hi = alpha * hi * hi + T(2) * beta * hi + gamma;
+        const T slack = T(64) * eps;
+        if (rr < T(1) && std::max(r_lo, r_hi) < (T(1) - rr) * (T(1) - rr) - slack) return 0;
+        const T vertex = alpha > T(0) ? std::clamp(-beta / alpha, lo, hi) : lo;
+        const T r_min = std::min({r_lo, r_hi, alpha * vertex * vertex + T(2) * beta * vertex + gamma});
+        if (r_min > (T(1) + rr) * (T(1) + rr) + slack) return 0;
+    }
+    // Widen by a few ulps so the ends are surely outside the torus (they are
+    // on its bounding surfaces): the sign walk below assumes they are.
+    const T margin = T(8) * eps * (T(1) + half);
+    lo -= margin;
+    hi += margin;
+
+    const TorusLine<T> line{q, u, rr * rr};
+    const T uu = glm::dot(u, u), b = glm::dot(q, u);
+    const T k = q2 + T(1) - rr * rr;
+    const T c[5] = {k * k - T(4) * gamma, T(4) * b * k - T(8) * beta,
+                    T(4) * b * b + T(2) * uu * k - T(4) * alpha, T(4) * uu * b, uu * uu};
+    Turn<T> turns[3];
+    const int nturn = quartic_turns(c, lo, hi, turns);
+
+    // Walk the monotone pieces; the ends are outside, each sign change of F
+    // is one crossing. F == 0 counts as outside (the surface is not inside).
+    const T scale = R / len;  // λ -> t
+    const T tol = T(2) * eps;
+    // The window in λ (see windowed_crossing).
+    const T wlo = (wa - tc) / scale, whi = (wb - tc) / scale;
+    bool inside = false;
+    T enter = T(0);
+    T f_prev = T(1);  // the ends are outside: any positive value does
+    T x_prev = lo;
+    int n = 0;
+    for (int i = 0; i <= nturn; ++i) {
+        T x = hi, f = T(1);
+        if (i < nturn) {
+            // A turn's first point separates the pieces if P there has the
+            // sign of the extremum; F has P's sign (P = F·((ρ + 1)² + z² - rr²)
+            // and rr < 1). It must be clear of F's rounding (about 4·rr·eps:
+            // the point's rounding times |∇F| = 2·rr) so that undecidable
+            // grazes are still decided at the extremum. Otherwise (a near
+            // miss or a graze) only the extremum itself can tell.
+            Turn<T>& turn = turns[i];
+            T dummy;
+            f = line(turn.x, dummy);
+            const T clear = T(16) * eps * rr;
+            if (!(rr < T(1)) || (turn.min ? !(f < -clear) : !(f > clear))) {
+                refine_turn(c, turn, T(4) * eps);
+                f = line(turn.x, dummy);
+            }
+            x = turn.x;
+        }
+        const bool in_b = f < T(0);
+        if (in_b != inside) {
+            const T root = windowed_crossing(line, c, x_prev, x, f_prev < T(0), wlo, whi, rr, tol);
+            if (in_b) {
+                enter = root;
+            } else if (n < kMaxSpans) {
+                emit_span(out, n, tc, enter * scale, root * scale, kPartSide, kPartSide);
+            }
+            inside = in_b;
+        }
+        f_prev = f;
+        x_prev = x;
+    }
+    return n;
+}
+
+glm::dvec3 normal_torus(const double* p, const glm::dvec3& x, std::uint8_t) {
+    // From the nearest point of the core circle out to x.
+    const double rho = std::sqrt(x.x * x.x + x.y * x.y);
+    if (rho == 0) return {0, 0, x.z >= 0 ? 1.0 : -1.0};
+    const double s = p[0] / rho;
+    return {x.x - s * x.x, x.y - s * x.y, x.z};
+}
+
+template int intersect_torus<float>(const double*, const Vec3<float>&, const Vec3<float>&, Span<float>*, float, float);
+template int intersect_torus<double>(const double*, const Vec3<double>&, const Vec3<double>&, Span<double>*, double,
+                                     double);
+
+}  // namespace kerf::csg

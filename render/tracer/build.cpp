@@ -1,0 +1,161 @@
+// Builds a CsgTracer's Embree scenes once per scene (README.md, "Tracer
+// design"): the tolerances from the scene's scale, the top BVH whose
+// primitives are the root's units (closest-hit semantics, first_hit.cpp,
+// shadow_rays.cpp) and an own BVH for every union or difference with more
+// than kDirectChildren operands (node_eval.cpp). Boxes are rounded outwards
+// and padded, so Embree's float traversal only ever culls.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+
+#include "render/tracer/float_round.hpp"
+#include "render/tracer/build.hpp"
+
+namespace kerf::render {
+
+namespace {
+
+using csg::Node;
+using csg::Op;
+
+constexpr std::uint32_t kDirectChildren = 8;  // more children than this: own BVH
+
+bool finite_box(const csg::Aabb& b) {
+    constexpr double big = 1e30;
+    for (int i = 0; i < 3; ++i)
+        if (!(std::abs(b.lo[i]) < big && std::abs(b.hi[i]) < big)) return false;
+    return true;
+}
+
+void embree_error(void*, RTCError code, const char* message) {
+    std::fprintf(stderr, "kerf: embree error %d: %s\n", int(code), message ? message : "");
+}
+
+void bounds_callback(const RTCBoundsFunctionArguments* args) {
+    const Accel* accel = static_cast<const Accel*>(args->geometryUserPtr);
+    *args->bounds_o = accel->boxes[args->primID];
+}
+
+// Operands of the root's union chain, in order: the units.
+std::vector<std::uint32_t> root_units(const csg::Scene& scene) {
+    std::vector<std::uint32_t> units, stack{scene.root};
+    while (!stack.empty()) {
+        const std::uint32_t id = stack.back();
+        stack.pop_back();
+        const Node& n = scene.nodes[id];
+        if (n.op == Op::Union) {
+            for (std::uint32_t k = n.count; k-- > 0;) stack.push_back(scene.children[n.first + k]);
+        } else {
+            units.push_back(id);
+        }
+    }
+    return units;
+}
+
+}  // namespace
+
+CsgTracer::Impl::~Impl() {
+    if (top.scene) rtcReleaseScene(top.scene);
+    for (auto& a : node_accels)
+        if (a->scene) rtcReleaseScene(a->scene);
+    for (RTCScene m : mesh_scenes)
+        if (m) rtcReleaseScene(m);
+    if (device) rtcReleaseDevice(device);
+}
+
+void CsgTracer::Impl::build_accel(Accel& accel, const std::vector<std::uint32_t>& nodes, bool top_level,
+                                  double scale) {
+    for (std::uint32_t node : nodes) {
+        const csg::Aabb& b = scene.nodes[node].bounds;
+        if (b.empty()) continue;  // an empty solid can never be hit
+        if (!finite_box(b)) {
+            accel.always.push_back(node);
+            continue;
+        }
+        // Outward rounding plus slack for the float ray's own rounding.
+        RTCBounds r;
+        const double pad = 1e-6 * scale;
+        r.lower_x = round_down(b.lo.x - pad - 1e-6 * std::abs(b.lo.x));
+        r.lower_y = round_down(b.lo.y - pad - 1e-6 * std::abs(b.lo.y));
+        r.lower_z = round_down(b.lo.z - pad - 1e-6 * std::abs(b.lo.z));
+        r.upper_x = round_up(b.hi.x + pad + 1e-6 * std::abs(b.hi.x));
+        r.upper_y = round_up(b.hi.y + pad + 1e-6 * std::abs(b.hi.y));
+        r.upper_z = round_up(b.hi.z + pad + 1e-6 * std::abs(b.hi.z));
+        r.align0 = r.align1 = 0;
+        accel.items.push_back(node);
+        accel.boxes.push_back(r);
+    }
+    // A few units are cheaper to box-test in a loop than through Embree, whose
+    // per-query set-up costs about as much as tracing a background pixel.
+    if (accel.items.size() <= kDirectChildren) return;
+    accel.scene = rtcNewScene(device);
+    rtcSetSceneFlags(accel.scene, RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneBuildQuality(accel.scene, RTC_BUILD_QUALITY_HIGH);
+    RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
+    rtcSetGeometryUserPrimitiveCount(geom, unsigned(accel.items.size()));
+    rtcSetGeometryUserData(geom, &accel);
+    rtcSetGeometryBoundsFunction(geom, bounds_callback, nullptr);
+    rtcSetGeometryIntersectFunction(geom, top_level ? top_intersect_callback : collect_callback);
+    if (top_level) rtcSetGeometryOccludedFunction(geom, top_occluded_callback);
+    rtcCommitGeometry(geom);
+    rtcAttachGeometry(accel.scene, geom);
+    rtcReleaseGeometry(geom);
+    rtcCommitScene(accel.scene);
+    if (RTCError e = rtcGetDeviceError(device); e != RTC_ERROR_NONE)
+        throw std::runtime_error("embree failed to build the scene (error " + std::to_string(int(e)) + ")");
+}
+
+CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_unique<Impl>(scene, use_float)) {
+    // Scale: the magnitude of coordinates that matter, for relative tolerances.
+    // (The camera is left out: a far camera must not coarsen the geometry's
+    // tolerance; its distance enters per ray, see make_state.)
+    double scale = 0;
+    for (const csg::Leaf& leaf : scene.leaves)
+        if (finite_box(leaf.bounds))
+            scale = std::max({scale, glm::length(leaf.bounds.lo), glm::length(leaf.bounds.hi)});
+    scale_ = scale > 0 ? scale : std::max(1.0, glm::length(scene.camera.position));
+    eps_ = (use_float ? 2e-5 : 1e-9) * scale_;
+
+    impl_->device = rtcNewDevice(nullptr);
+    if (!impl_->device) throw std::runtime_error("cannot create the Embree device");
+    rtcSetDeviceErrorFunction(impl_->device, embree_error, nullptr);
+
+    impl_->accel_of_node.assign(scene.nodes.size(), -1);
+    for (const Node& n : scene.nodes)
+        impl_->padded.push_back({n.bounds.lo - glm::dvec3(eps_), n.bounds.hi + glm::dvec3(eps_)});
+    for (const csg::Leaf& leaf : scene.leaves) {
+        const glm::dmat3& m = leaf.object_from_world.linear;
+        impl_->leaf_stretch.push_back(
+            std::sqrt(glm::dot(m[0], m[0]) + glm::dot(m[1], m[1]) + glm::dot(m[2], m[2])));
+    }
+    if (scene.root == csg::kNone) return;
+    impl_->build_meshes();
+    const std::vector<std::uint32_t> units = root_units(scene);
+    for (std::uint32_t id = 0; id < scene.nodes.size(); ++id) {
+        const Node& n = scene.nodes[id];
+        const std::uint32_t skip = n.op == Op::Difference ? 1 : 0;
+        if ((n.op == Op::Union || n.op == Op::Difference) && n.count - skip > kDirectChildren) {
+            std::vector<std::uint32_t> kids(scene.children.begin() + n.first + skip,
+                                            scene.children.begin() + n.first + n.count);
+            impl_->node_accels.push_back(std::make_unique<Accel>());
+            impl_->build_accel(*impl_->node_accels.back(), kids, false, scale_);
+            impl_->accel_of_node[id] = std::int32_t(impl_->node_accels.size() - 1);
+        }
+    }
+    impl_->build_accel(impl_->top, units, true, scale_);
+    if (impl_->top.always.empty()) {
+        // Padded far beyond the eval box tests' eps_ slack, so the early out
+        // never culls what they would keep.
+        csg::Aabb reach;
+        for (std::uint32_t unit : impl_->top.items) reach.extend(scene.nodes[unit].bounds);
+        const double pad = 1e-6 * scale_ + 4 * eps_;
+        if (!reach.empty()) reach = {reach.lo - glm::dvec3(pad), reach.hi + glm::dvec3(pad)};
+        impl_->reach = reach;
+    }
+}
+
+CsgTracer::~CsgTracer() = default;
+
+}  // namespace kerf::render

@@ -1,0 +1,61 @@
+// What a CsgTracer builds once and every query then only reads: the Embree
+// device, the top BVH over the root's units, the own BVHs of large union and
+// difference nodes, and one triangle scene per mesh. Its own header because
+// the build (tracer_build.cpp, mesh_leaves.cpp) and the per-ray files all
+// need the layout.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include <embree3/rtcore.h>
+#include <glm/glm.hpp>
+
+#include "csg/scene.hpp"
+#include "render/tracer/tracer.hpp"
+
+namespace kerf::render {
+
+// A BVH over some nodes (the root's units, or a large node's children).
+struct Accel {
+    RTCScene scene = nullptr;          // null: few items, tested one by one
+    std::vector<std::uint32_t> items;  // node per Embree primID
+    std::vector<RTCBounds> boxes;
+    std::vector<std::uint32_t> always;  // unbounded nodes (half-spaces): tested for every ray
+};
+
+struct CsgTracer::Impl {
+    const csg::Scene& scene;
+    bool use_float;
+    RTCDevice device = nullptr;
+    Accel top;
+    // The padded box around every bounded unit; everything() when a unit is
+    // unbounded. A ray whose line misses it hits nothing (first_hit.cpp).
+    csg::Aabb reach = csg::Aabb::everything();
+    std::vector<csg::Aabb> padded;            // per node: bounds grown by eps (box tests)
+    std::vector<std::int32_t> accel_of_node;  // -1: children evaluated directly
+    std::vector<std::unique_ptr<Accel>> node_accels;
+    std::vector<double> leaf_stretch;         // per leaf: Frobenius norm of object_from_world.linear
+    std::vector<RTCScene> mesh_scenes;        // per csg::Mesh used by a leaf (object space)
+    std::vector<csg::Aabb> mesh_boxes;        // object-space bounds of each mesh
+
+    Impl(const csg::Scene& s, bool f) : scene(s), use_float(f) {}
+    ~Impl();
+    void build_accel(Accel& accel, const std::vector<std::uint32_t>& nodes, bool top_level, double scale);
+    void build_meshes();  // mesh_leaves.cpp
+};
+
+// Embree callbacks the build installs, each defined beside the query it serves.
+void top_intersect_callback(const RTCIntersectFunctionNArguments* args);  // first_hit.cpp
+void top_occluded_callback(const RTCOccludedFunctionNArguments* args);    // shadow_rays.cpp
+void collect_callback(const RTCIntersectFunctionNArguments* args);        // node_eval.cpp
+
+// Outward (CCW seen from outside) normal of a mesh triangle, not normalised.
+// Crossing orientation (mesh_leaves.cpp) and hit normals (surface_normal.cpp)
+// must use the same one.
+inline glm::dvec3 triangle_normal(const csg::Mesh& m, std::uint32_t prim) {
+    const std::uint32_t* tri = &m.triangles[std::size_t(prim) * 3];
+    return glm::cross(m.points[tri[1]] - m.points[tri[0]], m.points[tri[2]] - m.points[tri[0]]);
+}
+
+}  // namespace kerf::render

@@ -1,0 +1,67 @@
+// The clearance fast path of a difference with few subtrahends asked for
+// its first entry or any span (README.md, "Tracer design"; the distance
+// bounds are in clearance.cpp).
+#include <algorithm>
+
+#include "render/tracer/ray_state.hpp"
+
+namespace kerf::render {
+
+// The fast path of First/Any for a difference with few subtrahends. A point
+// of minuend span i (its entry; for Any, the middle of its part inside the
+// window) that is farther than twice the degenerate rule's reach from every
+// subtrahend is in the difference, and gathering spans would give the same
+// answer. For First, when only one or two subtrahends are near the entry (a
+// ray into a groove), only those are intersected; the piece they leave
+// starts at e, and e is the answer if it is clear of all the others.
+// Minuend spans are at base.., scratch from sbase on (see FastPath).
+FastPath EvalState::first_piece_if_clear(const csg::Node& n, std::uint32_t base, std::uint32_t sbase, std::uint32_t i,
+                                         double a, double b, Need need) {
+    SpanStack& st = scratch->stack;
+    Span piece = *st.at(base + i);
+    double probe;
+    if (need == Need::First) {
+        if (!(piece.t0 > a)) return FastPath::Unknown;  // starts inside the minuend: the entry is later
+        if (piece.t0 > b) return FastPath::Past;
+        probe = piece.t0;
+    } else {
+        const double p0 = std::max(a, piece.t0), p1 = std::min(b, piece.t1);
+        if (!(p1 - p0 > 2 * eps)) return FastPath::Unknown;
+        probe = 0.5 * (p0 + p1);
+        piece.t0 = probe - eps;  // a sliver longer than eps answers Any
+        piece.t1 = probe + eps;
+    }
+    const double margin = 2 * eps * len;
+    const std::uint32_t* subs = &impl->scene.children[n.first + 1];
+    const std::uint32_t nsub = n.count - 1;
+    constexpr std::uint32_t kMaxNear = 2;
+    std::uint32_t near[kMaxNear], nnear = 0;
+    for (std::uint32_t k = 0; k < nsub; ++k) {
+        if (clear_of(subs[k], o + probe * d, margin)) continue;
+        if (need != Need::First || nnear == kMaxNear) return FastPath::Unknown;
+        near[nnear++] = k;
+    }
+    if (nnear > 0) {
+        // Span i minus the near subtrahends, on the span's part in the window.
+        const double wb = std::min(b, piece.t1);
+        st.resize(sbase);
+        for (std::uint32_t j = 0; j < nnear; ++j) eval(subs[near[j]], probe, wb, Need::All);
+        int r = 0;
+        const std::uint32_t rbase = subtract_gathered(base + i, 1, sbase, r);
+        int k = 0;
+        while (k < r && !(st.at(rbase + std::uint32_t(k))->t0 > a)) ++k;
+        // More subtrahends only shrink the pieces: none here, none at all.
+        if (k == r || st.at(rbase + std::uint32_t(k))->t0 > b) return k == r ? FastPath::None : FastPath::Past;
+        piece = *st.at(rbase + std::uint32_t(k));
+        const glm::dvec3 e = o + piece.t0 * d;
+        for (std::uint32_t m = 0, j = 0; m < nsub; ++m) {
+            if (j < nnear && near[j] == m) { ++j; continue; }
+            if (!clear_of(subs[m], e, margin)) return FastPath::Unknown;
+        }
+    }
+    *st.at(base) = piece;
+    st.resize(base + 1);
+    return FastPath::Found;
+}
+
+}  // namespace kerf::render

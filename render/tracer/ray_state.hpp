@@ -1,0 +1,163 @@
+// Per-ray state of the tracer. One EvalState lives on the stack of each
+// intersect/occluded call; the Embree contexts that carry it through nested
+// BVH queries start with an RTCIntersectContext (Embree hands that pointer
+// back to our callbacks). The evaluation is spread over several files (node
+// evaluation, difference first entry, mesh leaves, first hit, shadow rays);
+// what they share on the hot path is here, inline: no virtual calls, no heap
+// allocation, no locks per ray.
+#pragma once
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+
+#include <embree3/rtcore.h>
+#include <glm/glm.hpp>
+
+#include "render/tracer/tracer.hpp"
+#include "render/tracer/float_round.hpp"
+#include "render/tracer/span_list.hpp"
+#include "render/tracer/build.hpp"
+
+namespace kerf::render {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+enum class Need : std::uint8_t {
+    All,    // every span overlapping the window
+    First,  // a list whose first span with t0 > a is the true first entry
+    Any,    // at least one span overlapping the window, if there is one
+};
+
+// Outcome of EvalState::first_piece_if_clear.
+enum class FastPath : std::uint8_t {
+    Unknown,  // not proven: gather every subtrahend
+    Found,    // the answering piece is written at `base`
+    Past,     // this minuend span starts past the window, and so do later ones
+    None,     // this minuend span has no answer
+};
+
+struct EvalState {
+    const CsgTracer::Impl* impl;
+    glm::dvec3 o, d, invd;
+    float org[3], dir[3];
+    double len;       // |d|: world length per unit of t
+    double eps;       // t-length of the degenerate rule
+    double t_pad;     // t slack of float Embree windows
+    TraceScratch* scratch;
+
+    // node_eval.cpp: pushes the node's spans overlapping [a, b] and returns
+    // their count. Starts with the node's own box test.
+    std::uint32_t eval(std::uint32_t node, double a, double b, Need need);
+    // node_eval.cpp: pushes the spans of every node of `accel` the ray
+    // crosses on [a, b] (unsorted, possibly overlapping).
+    void collect(const Accel& accel, double a, double b);
+    // clearance.cpp: true if x is provably outside the node and farther than
+    // `margin` (world) from it; false if inside, near, or not known.
+    bool clear_of(std::uint32_t node, const glm::dvec3& x, double margin) const;
+    // difference_fast_path.cpp
+    FastPath first_piece_if_clear(const csg::Node& n, std::uint32_t base, std::uint32_t sbase, std::uint32_t i,
+                                  double a, double b, Need need);
+    // mesh_leaves.cpp
+    std::uint32_t eval_mesh(std::uint32_t leaf_id, double a, double b);
+    // difference_first_entry.cpp
+    std::uint32_t first_entry_by_points(const Accel& subtrahends, std::uint32_t base, std::uint32_t i, double b);
+
+    // The spans gathered on the stack from `sbase` up are subtrahends: merges
+    // them into their union (left at sbase) and subtracts it from the `nm`
+    // minuend spans at index `m` (below sbase). The pieces are written from
+    // the returned index on; their count goes to `pieces`.
+    std::uint32_t subtract_gathered(std::uint32_t m, std::uint32_t nm, std::uint32_t sbase, int& pieces) {
+        SpanStack& st = scratch->stack;
+        const int ns = span_normalize_union(st.at(sbase), int(st.size() - sbase), eps);
+        const std::uint32_t rbase = sbase + std::uint32_t(ns);
+        st.resize(rbase + nm + std::uint32_t(ns));
+        pieces = span_difference(st.at(m), int(nm), st.at(sbase), ns, st.at(rbase), eps);
+        return rbase;
+    }
+};
+
+// Whether the ray o + t·d meets `box` for some t in [t0, t1], with invd the
+// reciprocal of d per axis. An axis the ray is parallel to has invd = ±inf:
+// outside the slab gives ±inf at both ends (an empty range), inside
+// -inf..inf; exactly in a face plane gives NaN, which max/min ignore, so the
+// box is kept (conservative).
+inline bool slab_hit(const csg::Aabb& box, const glm::dvec3& o, const glm::dvec3& invd, double t0, double t1) {
+    for (int i = 0; i < 3; ++i) {
+        double ta = (box.lo[i] - o[i]) * invd[i], tb = (box.hi[i] - o[i]) * invd[i];
+        if (ta > tb) std::swap(ta, tb);
+        t0 = std::max(t0, ta);
+        t1 = std::min(t1, tb);
+    }
+    return t0 <= t1;
+}
+
+// Sets up `st` for a query along `ray`. Returns false, with the rest of the
+// set-up skipped, when the ray's line misses `reach` (the box around every
+// bounded unit): a slab test on the whole line (no t-window, so no tolerance
+// to get wrong), so background pixels cost three divisions and no more.
+inline bool make_state(EvalState& st, const CsgTracer::Impl* impl, const TraceRay& ray, double eps_world,
+                       double scale, TraceScratch& scratch) {
+    st.invd = 1.0 / ray.d;  // ±inf on axes the ray is parallel to
+    if (!slab_hit(impl->reach, ray.o, st.invd, -kInf, kInf)) return false;
+    st.impl = impl;
+    st.o = ray.o;
+    st.d = ray.d;
+    for (int i = 0; i < 3; ++i) {
+        st.org[i] = float(ray.o[i]);
+        st.dir[i] = float(ray.d[i]);
+    }
+    st.len = glm::length(ray.d);
+    const double inv_len = 1 / st.len, dist = glm::length(ray.o);
+    // Round-off of t also grows with the origin's distance (far cameras).
+    st.eps = (eps_world + (impl->use_float ? 1e-6 : 1e-13) * dist) * inv_len;
+    st.t_pad = 1e-5 * (scale + dist) * inv_len;
+    st.scratch = &scratch;
+    return true;
+}
+
+// A float Embree ray over (tnear, tfar) that has hit nothing yet.
+inline RTCRayHit embree_ray(float ox, float oy, float oz, float dx, float dy, float dz, float tnear, float tfar) {
+    RTCRayHit rh;
+    rh.ray.org_x = ox;
+    rh.ray.org_y = oy;
+    rh.ray.org_z = oz;
+    rh.ray.dir_x = dx;
+    rh.ray.dir_y = dy;
+    rh.ray.dir_z = dz;
+    rh.ray.tnear = tnear;
+    rh.ray.tfar = tfar;
+    rh.ray.time = 0;
+    rh.ray.mask = 0xFFFFFFFFu;
+    rh.ray.id = 0;
+    rh.ray.flags = 0;
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    return rh;
+}
+
+// The state's ray on the t-window [a, b], widened by t_pad for float round-off.
+inline RTCRayHit make_rayhit(const EvalState& st, double a, double b) {
+    return embree_ray(st.org[0], st.org[1], st.org[2], st.dir[0], st.dir[1], st.dir[2],
+                      std::max(0.0f, round_down(a) - float(st.t_pad)),
+                      b == kInf ? std::numeric_limits<float>::infinity() : round_up(b) + float(st.t_pad));
+}
+
+// A query over the root's units (first_hit.cpp, shadow_rays.cpp).
+struct TopContext {
+    RTCIntersectContext rtc;  // first member: Embree passes our pointer through
+    EvalState* state;
+    const Accel* accel;
+    double tnear;
+    double best;              // intersect: current first entry; occluded: tfar
+    std::uint32_t best_unit;
+    SpanEnd best_end;
+    bool found;
+
+    TopContext(EvalState& st, const TraceRay& ray)
+        : state(&st), accel(&st.impl->top), tnear(ray.tnear), best(ray.tfar), best_unit(0), found(false) {
+        rtcInitIntersectContext(&rtc);
+    }
+};
+
+}  // namespace kerf::render

@@ -1,0 +1,54 @@
+// CsgTracer::occluded, for shadow rays: does any unit of the root have a
+// span of positive length inside (tnear, tfar)? Uses Embree's occlusion
+// query and stops at the first unit that blocks (the callback sets
+// tfar = -inf); differences stop at their first piece that answers (Need::Any).
+#include <algorithm>
+#include <limits>
+
+#include "render/tracer/ray_state.hpp"
+
+namespace kerf::render {
+
+namespace {
+
+bool unit_blocks(TopContext& ctx, std::uint32_t node) {
+    TraceScratch& s = *ctx.state->scratch;
+    const std::uint32_t base = s.stack.size();
+    const std::uint32_t n = ctx.state->eval(node, ctx.tnear, ctx.best, Need::Any);
+    bool blocks = false;
+    for (std::uint32_t i = 0; i < n && !blocks; ++i) {
+        const Span& sp = *s.stack.at(base + i);
+        blocks = std::min(sp.t1, ctx.best) - std::max(sp.t0, ctx.tnear) > ctx.state->eps;
+    }
+    s.stack.resize(base);
+    return blocks;
+}
+
+}  // namespace
+
+void top_occluded_callback(const RTCOccludedFunctionNArguments* args) {
+    if (!args->valid[0]) return;
+    auto* ctx = reinterpret_cast<TopContext*>(args->context);
+    if (unit_blocks(*ctx, ctx->accel->items[args->primID])) {
+        ctx->found = true;
+        reinterpret_cast<RTCRay*>(args->ray)->tfar = -std::numeric_limits<float>::infinity();
+    }
+}
+
+bool CsgTracer::occluded(const TraceRay& ray, TraceScratch& scratch) const {
+    EvalState st;
+    if (!make_state(st, impl_.get(), ray, eps_, scale_, scratch)) return false;
+    TopContext ctx(st, ray);
+    for (std::uint32_t node : impl_->top.always)
+        if (unit_blocks(ctx, node)) return true;
+    if (!impl_->top.scene) {
+        for (std::uint32_t node : impl_->top.items)
+            if (unit_blocks(ctx, node)) return true;
+        return false;
+    }
+    RTCRay r = make_rayhit(st, ray.tnear, ray.tfar).ray;
+    rtcOccluded1(impl_->top.scene, &ctx.rtc, &r);
+    return ctx.found;
+}
+
+}  // namespace kerf::render

@@ -1,0 +1,70 @@
+// Ray–CSG queries over a csg::Scene on top of Embree 3 (design: README.md).
+// Built once per scene; const and thread-safe afterwards. Each thread passes
+// its own TraceScratch (span stack and counters), so tracing never locks or
+// allocates per ray.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "csg/scene.hpp"
+#include "render/tracer/span_list.hpp"
+
+namespace kerf::render {
+
+struct TraceCounters {
+    std::uint64_t union_ops = 0, difference_ops = 0, intersection_ops = 0;
+    std::uint64_t interval_tests = 0;  // intersect_leaf calls
+    std::uint64_t spans_found = 0;     // primitive intervals those calls returned
+};
+
+struct TraceScratch {
+    SpanStack stack;
+    TraceCounters counters;
+};
+
+// d need not be unit length; t is measured in units of d.
+struct TraceRay {
+    glm::dvec3 o, d;
+    double tnear = 0, tfar = 0;
+};
+
+struct TraceHit {
+    double t = 0;
+    SpanEnd surface;  // the root solid's entry surface
+};
+
+class CsgTracer {
+public:
+    CsgTracer(const csg::Scene& scene, bool use_float);
+    ~CsgTracer();
+    CsgTracer(const CsgTracer&) = delete;
+    CsgTracer& operator=(const CsgTracer&) = delete;
+
+    // First entry of the root solid with tnear < t < tfar.
+    bool intersect(const TraceRay& ray, TraceHit& hit, TraceScratch& scratch) const;
+    // Whether the root solid has a span of positive length inside (tnear, tfar).
+    bool occluded(const TraceRay& ray, TraceScratch& scratch) const;
+
+    // True if every ray whose origin and direction are convex combinations
+    // of these four corner rays (in order round a quad) misses the solid:
+    // a whole image tile can then be filled without tracing (tile_cull.cpp).
+    bool misses_all(const glm::dvec3 (&o)[4], const glm::dvec3 (&d)[4]) const;
+    // World unit normal of the final solid at a hit point.
+    glm::dvec3 normal(const TraceHit& hit, const glm::dvec3& world_point) const;
+
+    // Span lengths below this are empty (the degenerate rule), world units.
+    double epsilon() const { return eps_; }
+    // Largest coordinate magnitude of the scene's bounded parts (>= tiny).
+    double scale() const { return scale_; }
+
+    struct Impl;
+
+private:
+    std::unique_ptr<Impl> impl_;
+    double eps_ = 0, scale_ = 1;
+};
+
+}  // namespace kerf::render

@@ -1,0 +1,127 @@
+// A difference asked for its first entry (camera rays) or for any span
+// (shadow rays) skips its subtrahends when the minuend's point is provably
+// clear of them (render/clearance.cpp). Here every subtrahend kind, under a
+// rotation, non-uniform scale and translation, cuts the top face of a box
+// minuend, and rays land all over that face — inside, outside and near each
+// subtrahend. The oracle is point membership along the ray (no ray code):
+// a distance bound that is too large, or a sign that is wrong, shows the
+// minuend's face where the subtrahend should have cut it.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include "tests/render/random_csg.hpp"
+#include "render/tracer/tracer.hpp"
+#include "tests/render/scene_builder.hpp"
+
+using namespace kerf;
+using namespace kerf::test;
+using csg::Op;
+using csg::PrimKind;
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Whether t is the solid's first entry along o + t·d on (0, 10), by point
+// membership alone: outside at every sample before t and just before it,
+// inside just after (t = kInf: outside at every sample). Samples are 2.5e-3
+// apart, so a slab thinner than that could hide in front of t; the rays here
+// cross the minuend face at t > 4 and the cuts are far thicker.
+bool is_first_entry(const csg::Scene& s, const glm::dvec3& o, const glm::dvec3& d, double t) {
+    constexpr int kSamples = 4000;
+    constexpr double h = 1e-7;
+    const double t_end = 10, step = t_end / kSamples;
+    for (int i = 1; i <= kSamples && step * i < t - h; ++i)
+        if (csg_contains(s, o + step * i * d)) return false;
+    if (std::isinf(t)) return true;
+    return !csg_contains(s, o + (t - h) * d) && csg_contains(s, o + (t + h) * d);
+}
+
+// Rays from above onto random points of the box minuend's top face (z = 1),
+// slightly tilted: every answer of intersect() must be the first entry, and
+// occluded() must agree with it. Counts rays whose entry is the face itself
+// (clear) and rays cut deeper (covered).
+void check_rays(const csg::Scene& s, const char* name, std::mt19937_64& rng, int& covered, int& clear) {
+    std::uniform_real_distribution<double> u(-1, 1);
+    const render::CsgTracer tracer(s, false);
+    render::TraceScratch scratch;
+    for (int i = 0; i < 1500; ++i) {
+        const glm::dvec3 target(u(rng), u(rng), 1.0);
+        const glm::dvec3 o = target + glm::dvec3(0.3 * u(rng), 0.3 * u(rng), 4.0);
+        const glm::dvec3 d = glm::normalize(target - o);
+        render::TraceHit hit;
+        const bool found = tracer.intersect(render::TraceRay{o, d, 0, kInf}, hit, scratch);
+        const double t = found ? hit.t : kInf;
+        const double t_face = glm::length(target - o);
+        (t > t_face + 1e-6 ? covered : clear)++;
+        INFO(name << " ray " << i << " first entry " << t << " (the face at " << t_face << ")");
+        CHECK(is_first_entry(s, o, d, t));
+        // Shadow-style query on (0, tfar): blocked exactly when the first
+        // entry comes before tfar (the ray starts outside everything).
+        const double tfar = t_face + 0.05 + 0.5 * (u(rng) + 1);
+        if (std::abs(t - tfar) > 1e-6)
+            CHECK(tracer.occluded(render::TraceRay{o, d, 0, tfar}, scratch) == (t < tfar));
+    }
+}
+
+Tree minuend() { return leaf(box({-1, -1, -1}, {1, 1, 1})); }
+
+// Transforms that stretch by up to 3x and shrink by up to 0.4x, so the
+// world/object distance conversion is exercised both ways.
+const glm::dmat4 twist = rotate_deg(27, glm::normalize(glm::dvec3(1, 2, 0.5)));
+const glm::dmat4 near_top = translate(0.1, -0.2, 1.0);
+
+}  // namespace
+
+TEST_CASE("difference fast path: first entry and occlusion match point membership for every subtrahend kind",
+          "[render][difference]") {
+    const std::pair<const char*, csg::Leaf> cuts[] = {
+        {"sphere", sphere(0.5, near_top * twist * scale(1.8, 0.6, 1.0))},
+        {"box", box({-0.5, -0.3, -0.4}, {0.4, 0.5, 0.3}, near_top * twist * scale(0.4, 1.5, 1.0))},
+        {"cylinder", make_leaf(PrimKind::Cylinder, {-0.6, 0.6, 0.4, 0.4}, near_top * twist * scale(1.0, 2.0, 1.0))},
+        {"cone", make_leaf(PrimKind::Cylinder, {-0.5, 0.7, 0.7, 0.05}, near_top * twist * scale(1.2, 0.8, 3.0))},
+        {"torus", make_leaf(PrimKind::Torus, {0.6, 0.3}, near_top * twist * scale(1.5, 1.4, 1.0))},
+        {"plane", make_leaf(PrimKind::Plane, {0.3, -0.2, 1.0, 0.8}, twist * scale(1.0, 0.5, 2.0))},
+    };
+    std::mt19937_64 rng(20261201);
+    for (const auto& [name, cut] : cuts) {
+        int covered = 0, clear = 0;
+        check_rays(make_scene(op(Op::Difference, {minuend(), leaf(cut)})), name, rng, covered, clear);
+        // Both outcomes must be common, or the test proves little.
+        INFO(name << ": " << covered << " covered, " << clear << " clear");
+        CHECK(covered > 100);
+        CHECK(clear > 100);
+    }
+}
+
+TEST_CASE("difference fast path: overlapping and composite subtrahends", "[render][difference]") {
+    // Grooves that cross each other (a ray leaving one groove may land in
+    // the next), and subtrahends that are unions, intersections and
+    // differences themselves.
+    const auto groove = [](double x, double deg) {
+        return leaf(make_leaf(PrimKind::Torus, {0.8, 0.12},
+                              translate(x, 0, 1.0) * rotate_deg(deg, {1, 0, 0}) * scale(1.0, 1.0, 2.5)));
+    };
+    const Tree lump = op(Op::Union, {leaf(sphere(0.3, translate(-0.4, 0.5, 1.1))),
+                                     leaf(sphere(0.25, translate(-0.1, 0.6, 0.95)))});
+    const Tree lens = op(Op::Intersection, {leaf(sphere(0.6, translate(0.5, -0.5, 1.3))),
+                                            leaf(sphere(0.6, translate(0.5, -0.5, 0.5)))});
+    const Tree ring = op(Op::Difference, {leaf(make_leaf(PrimKind::Cylinder, {0.8, 1.2, 0.5, 0.5})),
+                                          leaf(make_leaf(PrimKind::Cylinder, {0.7, 1.3, 0.3, 0.3}))});
+    const std::pair<const char*, Tree> sets[] = {
+        {"crossing grooves", op(Op::Difference, {minuend(), groove(-0.3, 0), groove(0.3, 90), groove(0, 45)})},
+        {"composites", op(Op::Difference, {minuend(), lump, lens, ring})},
+        {"grooves and composites", op(Op::Difference, {minuend(), groove(0.2, 30), lump, ring})},
+    };
+    std::mt19937_64 rng(1201);
+    for (const auto& [name, tree] : sets) {
+        int covered = 0, clear = 0;
+        check_rays(make_scene(tree), name, rng, covered, clear);
+        INFO(name << ": " << covered << " covered, " << clear << " clear");
+        CHECK(covered > 100);
+        CHECK(clear > 100);
+    }
+}
