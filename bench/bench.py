@@ -198,7 +198,7 @@ class Bench:
         wanted = lambda s: not only or only.search(s.name)
         if not self.a.no_pov:
             self.startup()
-        # Reference models first (the issue-5 targets), then the CSG tax, then
+        # Reference models first (the speed targets), then the CSG tax, then
         # the families: a run cut short keeps what matters most.
         for s in filter(wanted, refs):
             self.row(s, self.a.ref_size)
@@ -245,7 +245,7 @@ def main():
     p.add_argument("--quick", action="store_true", help="small sizes, small families, one run: a smoke test")
     p.add_argument("--threads", type=int, default=2)
     p.add_argument("--runs", type=int, default=3)
-    p.add_argument("--ref-size", type=int, default=2048, help="reference models (issue 5 targets: 2048)")
+    p.add_argument("--ref-size", type=int, default=2048, help="reference models (speed targets are quoted at 2048)")
     p.add_argument("--family-size", type=int, default=512)
     p.add_argument("--mask-size", type=int, default=512, help="silhouette comparison size")
     p.add_argument("--pov-once", type=float, default=60, help="a POV-Ray run longer than this (s) is not repeated")

@@ -1,4 +1,4 @@
-// Lowering speed (issue 3): a scene graph of 1,000,000 leaves built directly
+// Lowering speed: a scene graph of 1,000,000 leaves built directly
 // (no parser), lowered several times; prints the median and the peak RSS.
 //   bench_lower [leaves=1000000] [runs=5]
 // Shape: a for-loop-like top-level union of translated "parts", each part a

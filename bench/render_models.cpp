@@ -1,4 +1,4 @@
-// Renders the reference models of spec §9, built directly as csg::Scene (no
+// Renders the reference models of docs/spec.md §9, built directly as csg::Scene (no
 // interpreter), and prints timing and per-ray operation counts. For profiling
 // the tracer alone:  render_models MODEL [size] [spp] [threads] [out.png]
 // KERF_FLOAT=1 measures the float path.

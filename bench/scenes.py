@@ -166,7 +166,7 @@ def to_pov(node, ind="  ", bare_ok=False, xfs=()):
 @dataclass
 class Scene:
     name: str
-    group: str        # "ref" (spec §9 model), or a family name
+    group: str        # "ref" (docs/spec.md §9 model), or a family name
     param: float      # the family's size parameter (for plots)
     tree: tuple
     camera: tuple     # (position, look_at, vertical fov)

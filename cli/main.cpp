@@ -1,5 +1,5 @@
 // kerf: check, dump or render a .sdl scene. Everything here is argument
-// handling, reporting and exit codes (spec §7–§8); the work is library calls.
+// handling, reporting and exit codes (docs/spec.md §7–§8); the work is library calls.
 #include <cstdio>
 #include <exception>
 #include <iostream>
@@ -12,6 +12,7 @@
 #include "interpreter/interpreter.hpp"
 #include "lower/lower.hpp"
 #include "csg/dump.hpp"
+#include "render/image/image.hpp"
 #include "render/render.hpp"
 
 namespace {

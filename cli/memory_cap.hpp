@@ -1,4 +1,4 @@
-// The last of spec §8's limits: memory. A script can stay within every
+// The last of docs/spec.md §8's limits: memory. A script can stay within every
 // element limit and still build a list of millions of large lists; capping
 // the process's data size turns that into a located "out of memory" error
 // (interpreter/eval_stmt.cpp) instead of swapping the machine to a halt or

@@ -49,7 +49,7 @@ const char* usage_text() {
            "                        [--seed N] [--precision double|float]\n"
            "  kerf check  SCENE.sdl   parse, evaluate and lower; print diagnostics only\n"
            "  kerf dump   SCENE.sdl   print the lowered, flattened CSG tree\n"
-           "limits (spec §8): --max-call-depth N --max-nesting N --max-iterations N\n"
+           "limits (docs/spec.md §8): --max-call-depth N --max-nesting N --max-iterations N\n"
            "                  --max-list N --max-primitives N --max-steps N\n"
            "exit status: 0 ok, 1 scene errors, 2 bad command line or unreadable file,\n"
            "             3 render failed (e.g. output not writable)\n";

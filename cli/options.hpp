@@ -1,4 +1,4 @@
-// The kerf command line (spec §7): parsed into plain data, no side effects.
+// The kerf command line (docs/spec.md §7): parsed into plain data, no side effects.
 #pragma once
 #include <array>
 #include <optional>

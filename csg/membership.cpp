@@ -1,4 +1,4 @@
-// The defining inequalities of spec §4's solids, one case each.
+// The defining inequalities of docs/spec.md §4's solids, one case each.
 #include "csg/membership.hpp"
 
 #include <algorithm>

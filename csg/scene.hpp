@@ -110,7 +110,7 @@ struct Scene {
 
     std::vector<Material> materials;      // at least one (the default light grey)
     std::vector<Mesh> meshes;
-    Camera camera;                        // always resolved (spec §6 defaults applied)
+    Camera camera;                        // always resolved (docs/spec.md §6 defaults applied)
     std::vector<Light> lights;            // always resolved (defaults applied)
     glm::dvec3 background{0.2, 0.2, 0.2};
 

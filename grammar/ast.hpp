@@ -1,4 +1,4 @@
-// The abstract syntax tree of a .sdl script (spec §1–§3). Plain owning
+// The abstract syntax tree of a .sdl script (docs/spec.md §1–§3). Plain owning
 // structs: every node carries its SourceLoc, nothing points into the input
 // buffer, so the tree outlives the parse. One fat node type per category
 // (Expr, Stmt) keeps the parser's actions and the interpreter's switch simple.

@@ -1,4 +1,4 @@
-// Decoding of number and string literals (spec §1), separate from the
+// Decoding of number and string literals (docs/spec.md §1), separate from the
 // grammar so it can be tested on its own.
 #pragma once
 #include <optional>

@@ -10,7 +10,7 @@
 namespace kerf {
 
 struct ParseLimits {
-    std::size_t max_nesting = 256;  // spec §8: nesting depth of source
+    std::size_t max_nesting = 256;  // docs/spec.md §8: nesting depth of source
 };
 
 // Thrown when a file cannot be read (CLI exit status 2, not 1).

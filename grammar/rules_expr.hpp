@@ -1,4 +1,4 @@
-// Expression rules of .sdl (spec §2). Precedence, lowest to highest:
+// Expression rules of .sdl (docs/spec.md §2). Precedence, lowest to highest:
 //   ?:   ||   &&   == !=   < <= > >=   + -   * / %   unary - + !   ^ (right)
 //   postfix [i] .x .y .z   primary (literal, name, call, (e), [list|range],
 //   let(...) e, echo(...) e, assert(...) e)

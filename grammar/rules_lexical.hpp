@@ -1,4 +1,4 @@
-// Lexical PEGTL rules of .sdl (spec §1): whitespace and comments, names,
+// Lexical PEGTL rules of .sdl (docs/spec.md §1): whitespace and comments, names,
 // keywords, numbers, strings and punctuation.
 //
 // Convention: every token rule ending in `_tok` (and every punctuation rule)
@@ -35,7 +35,7 @@ struct block_comment {
     }
 };
 
-// `"..."` with the escapes `\" \\ \n \t \r`. Decision (spec §1 lists only
+// `"..."` with the escapes `\" \\ \n \t \r`. Decision (docs/spec.md §1 lists only
 // the first four; `\r` is accepted too because OpenSCAD has it): any other
 // escape (`\x41`, `\u263A`, `\q`, ...) is an error at its backslash, in line
 // with the spec's "strict" rule, instead of OpenSCAD's warn-and-keep.

@@ -1,4 +1,4 @@
-// The nesting guard of the grammar (spec §8: "nesting depth of source 256").
+// The nesting guard of the grammar (docs/spec.md §8: "nesting depth of source 256").
 //
 // Every recursive path through the grammar passes through a `nest<>` rule,
 // so the C stack used by the parser is bounded by max_nesting times the

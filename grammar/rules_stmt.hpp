@@ -1,4 +1,4 @@
-// Statement rules of .sdl (spec §3) and the whole-file grammar.
+// Statement rules of .sdl (docs/spec.md §3) and the whole-file grammar.
 //
 // A statement that can own children (instantiation, if, module body) takes a
 // `child`: `;`, a `{ ... }` block whose statements become its children

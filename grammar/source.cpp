@@ -8,7 +8,7 @@ namespace {
 
 // Diagnostics go to a terminal whatever the script holds: a 1 MB identifier,
 // binary garbage or a newline inside a message must not flood it, garble it
-// or break the one-line form editors parse (spec §8). These bounds keep a
+// or break the one-line form editors parse (docs/spec.md §8). These bounds keep a
 // diagnostic a few hundred bytes whatever the input.
 constexpr std::size_t kMaxWord = 64;       // longer names are shown as their start + "..."
 constexpr std::size_t kWordKept = 40;

@@ -31,7 +31,7 @@ struct Diagnostic {
 };
 
 // "PATH:LINE:COL: error: MESSAGE" followed, when the text is known, by the
-// source line and a caret under the column (spec §8). No trailing newline.
+// source line and a caret under the column (docs/spec.md §8). No trailing newline.
 std::string format_diagnostic(const Diagnostic& d);
 
 // The one-line head only ("PATH:LINE:COL: error: MESSAGE").

@@ -1,5 +1,5 @@
 // Byte-level screening of a script before parsing: the source must be UTF-8
-// text (spec §1, §8). Binary garbage is rejected up front with one located
+// text (docs/spec.md §1, §8). Binary garbage is rejected up front with one located
 // error instead of confusing the grammar.
 #pragma once
 #include <cstddef>

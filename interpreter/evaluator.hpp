@@ -3,7 +3,7 @@
 // every SourceLoc and AST pointer stays valid), the limit counters, the
 // dynamic `$` variables and the scene being built.
 //
-// Strictness decisions (spec §3 leaves them to the implementation):
+// Strictness decisions (docs/spec.md §3 leaves them to the implementation):
 // - A block's assignments run first, in source order, before its other
 //   statements (as in OpenSCAD), so a statement may use a name assigned
 //   below it. An assignment's expression may use only names assigned above

@@ -1,4 +1,4 @@
-// The arithmetic, comparison and indexing operators of spec §2 on Values.
+// The arithmetic, comparison and indexing operators of docs/spec.md §2 on Values.
 // Strict: an operator that does not apply to its operands' types (`1 + "a"`,
 // `undef * 2`, vectors of different lengths) is a located error, where
 // OpenSCAD would warn and yield undef.

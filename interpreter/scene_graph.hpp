@@ -1,6 +1,6 @@
 // What evaluating a script produces (the interpreter's output, lowering's
 // input): solids, booleans, transforms and appearance scopes as one arena,
-// children stored before parents, plus the scene statements of spec §6.
+// children stored before parents, plus the scene statements of docs/spec.md §6.
 // Primitive parameters are already validated and canonical (a cube is its
 // two corners, a cylinder its z-range and two radii) so later stages never
 // re-interpret OpenSCAD's argument conventions.
@@ -51,7 +51,7 @@ struct Node {
 struct Material {
     glm::dvec3 color{0.8, 0.8, 0.8};   // linear RGB in [0,1]
     double alpha = 1.0;
-    glm::dvec3 interior{0.8, 0.8, 0.8};  // colour of cut faces (spec §5)
+    glm::dvec3 interior{0.8, 0.8, 0.8};  // colour of cut faces (docs/spec.md §5)
     double diffuse = 0.8;
     double specular = 0.2;
     double shininess = 32;
@@ -91,7 +91,7 @@ struct SceneGraph {
     std::vector<Mesh> meshes;
     std::uint32_t root = 0;                  // a Union node (implicit top-level union)
 
-    std::optional<Camera> camera;            // none: lowering applies spec §6 defaults
+    std::optional<Camera> camera;            // none: lowering applies docs/spec.md §6 defaults
     std::vector<Light> lights;               // empty: default lights
     std::optional<glm::dvec3> background;    // none: default dark grey
 };

@@ -1,4 +1,4 @@
-// Lexical scopes of the evaluator (spec §3). A Scope lives on the C++ stack
+// Lexical scopes of the evaluator (docs/spec.md §3). A Scope lives on the C++ stack
 // of the block, call or loop that made it and points to its parent, so a
 // binding costs no heap allocation beyond its slot; functions and modules
 // are not first-class values, so no definition can outlive its scope, and

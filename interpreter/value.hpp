@@ -1,4 +1,4 @@
-// The values of the language (spec §2): undef, bool, number, string, list,
+// The values of the language (docs/spec.md §2): undef, bool, number, string, list,
 // range. Copying a Value is cheap: strings and lists are shared, immutable
 // arrays (bindings are immutable, so sharing is safe), ranges stay lazy
 // (three doubles) so `[0:1e12]` costs nothing until someone iterates it.

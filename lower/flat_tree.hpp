@@ -1,4 +1,4 @@
-// Lowering's intermediate form (issue 3): the flattened, pruned operation
+// Lowering's intermediate form: the flattened, pruned operation
 // tree as linked lists, built by one post-order walk of the scene graph
 // (flat_tree.cpp) and written into csg::Scene by one pre-order walk
 // (flat_tree_emit.cpp). Both walks use explicit stacks, so a lopsided chain

@@ -1,5 +1,5 @@
 // lower_to_csg: flatten and prune (flat_tree.cpp), lay out (flat_tree_emit.cpp),
-// then the scene statements or their spec §6 defaults (scene_defaults.cpp).
+// then the scene statements or their docs/spec.md §6 defaults (scene_defaults.cpp).
 #include "lower/lower.hpp"
 
 #include "lower/flat_tree.hpp"

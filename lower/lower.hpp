@@ -1,4 +1,4 @@
-// Lowering (issue 3): the scene graph becomes csg::Scene, the renderer's only
+// Lowering: the scene graph becomes csg::Scene, the renderer's only
 // input — flattened n-ary operations, transforms pushed into the leaves,
 // clipped bounds, pruned subtrees, resolved materials and scene defaults.
 #pragma once

@@ -1,4 +1,4 @@
-// Tight world boxes of transformed primitives (lowering, issue 3). Every
+// Tight world boxes of transformed primitives (lowering). Every
 // analytic primitive has a cheap closed-form support function h(w) = max over
 // the solid of w·u; for x = L u + c the world extent along axis i is
 // [c_i − h(−row_i L), c_i + h(row_i L)], which is the exact box under any

@@ -1,4 +1,4 @@
-// The pinhole and orthographic cameras of spec §6: pixel (x, y) in
+// The pinhole and orthographic cameras of docs/spec.md §6: pixel (x, y) in
 // full-image coordinates, row 0 at the top, right = forward × up, image plane
 // 2·tan(fov/2) high at distance 1 (orthographic: `height` high).
 #pragma once

@@ -1,5 +1,6 @@
-// The renderer's public API (issue 5): a lowered csg::Scene in, an image out.
-// The CLI (`kerf render`) is a thin layer over render() and write_image().
+// The renderer's public API: a lowered csg::Scene in, an image out
+// (render/image/image.hpp writes it). The CLI (`kerf render`) is a thin
+// layer over render() and write_image().
 #pragma once
 #include <array>
 #include <cstdint>
@@ -9,9 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "render/image/big_buffer.hpp"
-
 #include "csg/scene.hpp"
+#include "render/image/image.hpp"
 
 namespace kerf::render {
 
@@ -33,23 +33,6 @@ struct RenderOptions {
     bool srgb8 = false;
 };
 
-// What the pixels mean; write_image() uses it to encode 8-bit files.
-enum class ImageContent : std::uint8_t { Color, Depth, Normal, Hits };
-
-// Row-major, row 0 at the top, `channels` interleaved floats per pixel.
-// Colour is linear RGB; Depth: distance (+inf on miss); Normal: world unit
-// vector (0 on miss); Hits: count of primitive intervals found.
-// Rendered with RenderOptions::srgb8, `pixels` stays empty and `srgb8`
-// holds the same layout as bytes: srgb_byte() of what pixels would hold.
-struct Image {
-    int width = 0, height = 0, channels = 0;
-    BigVector<float> pixels;  // every element written by render()
-    BigVector<std::uint8_t> srgb8;
-    ImageContent content = ImageContent::Color;
-    float& at(int x, int y, int c) { return pixels[(std::size_t(y) * width + x) * channels + c]; }
-    float at(int x, int y, int c) const { return pixels[(std::size_t(y) * width + x) * channels + c]; }
-};
-
 // Totals over the whole image (the caller divides for per-ray means).
 struct RenderStats {
     std::uint64_t primary_rays = 0, shadow_rays = 0, reflect_rays = 0;
@@ -64,26 +47,5 @@ struct RenderStats {
 // finished fraction from render threads, one call at a time.
 Image render(const csg::Scene& scene, const RenderOptions& options, RenderStats* stats = nullptr,
              std::function<void(double fraction)> progress = {});
-
-class ImageWriteError : public std::runtime_error {
-public:
-    using std::runtime_error::runtime_error;
-};
-
-// Throws ImageWriteError (one line) if write_image() could not write `path`:
-// OpenImageIO has no writer for its extension, or its folder is missing or
-// refuses a new file. The CLI calls it before evaluating and rendering, so a
-// typo in -o costs nothing.
-void check_output_path(const std::string& path);
-
-// Format by extension (OpenImageIO). EXR/TIFF/HDR/PFM: linear float; others
-// (PNG, JPEG, ...): 8-bit, colour sRGB-encoded, AOVs normalised (spec §7).
-// Written to a temporary file in the same folder, then renamed over `path`,
-// so a failed write leaves an existing file intact.
-void write_image(const Image& image, const std::string& path);
-
-// Whether write_image() stores `path` in 8 bits (then a colour render can
-// use RenderOptions::srgb8 and lose nothing).
-bool is_8bit_output(const std::string& path);
 
 }  // namespace kerf::render

@@ -1,4 +1,4 @@
-// Blinn–Phong shading with hard shadows and mirror reflection (spec §5–6),
+// Blinn–Phong shading with hard shadows and mirror reflection (docs/spec.md §5–6),
 // on top of the CSG tracer. One Shader is shared by all render threads.
 #pragma once
 #include <cstdint>

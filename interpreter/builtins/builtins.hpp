@@ -1,4 +1,4 @@
-// Built-in functions of spec §2 (sin cos ... str is_*): the evaluator looks
+// Built-in functions of docs/spec.md §2 (sin cos ... str is_*): the evaluator looks
 // a callee up here when no user function of that name is in scope. Each
 // builtin receives its already-evaluated positional arguments (named
 // arguments to a builtin are rejected by the evaluator) and reports user

@@ -1,4 +1,4 @@
-// List built-ins of spec §2: len and concat, as in OpenSCAD. Results are
+// List built-ins of docs/spec.md §2: len and concat, as in OpenSCAD. Results are
 // bounded by the list-size limit so `concat` doubling in a recursion ends in
 // a located error instead of exhausting memory.
 #include "interpreter/builtins/support.hpp"

@@ -1,4 +1,4 @@
-// Numeric built-ins of spec §2 with OpenSCAD's semantics: trigonometry in
+// Numeric built-ins of docs/spec.md §2 with OpenSCAD's semantics: trigonometry in
 // degrees, exact at the angles people type (sin(180) is 0, not 1.2e-16, so
 // rotated grids line up and `==` tests work), log base 10, ln natural,
 // round half away from zero. Domain errors such as sqrt(-1) give NaN values

@@ -1,4 +1,4 @@
-// str() and the type tests of spec §2. str's result is bounded: a string
+// str() and the type tests of docs/spec.md §2. str's result is bounded: a string
 // longer than the list-size limit (in bytes) is a located error, checked
 // before the text is built, so `str(s, s)` doubling in a recursion or str()
 // of a huge shared nested list cannot exhaust memory.

@@ -1,5 +1,5 @@
-// color(), material() (spec §5) and the scene statements camera, light,
-// background (spec §6, top level only).
+// color(), material() (docs/spec.md §5) and the scene statements camera, light,
+// background (docs/spec.md §6, top level only).
 #include <cmath>
 
 #include "interpreter/evaluator.hpp"

@@ -1,5 +1,5 @@
 // Typed access to the arguments of builtin modules, with the located
-// errors of spec §4/§8: every message starts with the module's name and
+// errors of docs/spec.md §4/§8: every message starts with the module's name and
 // points at the statement ("cube: size must be positive, got 0").
 #pragma once
 #include <optional>

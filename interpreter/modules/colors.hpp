@@ -1,4 +1,4 @@
-// CSS/SVG colour names for color("steelblue") (spec §5).
+// CSS/SVG colour names for color("steelblue") (docs/spec.md §5).
 #pragma once
 #include <optional>
 #include <string_view>

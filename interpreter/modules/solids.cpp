@@ -1,4 +1,4 @@
-// Primitive solids (spec §4), validated and canonicalised as the PrimKind
+// Primitive solids (docs/spec.md §4), validated and canonicalised as the PrimKind
 // comments in scene_graph.hpp say.
 #include <cmath>
 

@@ -1,4 +1,4 @@
-// Dispatch of the builtin modules (spec §4–§6) and their argument matching.
+// Dispatch of the builtin modules (docs/spec.md §4–§6) and their argument matching.
 #include <string_view>
 
 #include "interpreter/evaluator.hpp"

@@ -1,4 +1,4 @@
-// Booleans and transforms (spec §4). Matrices are world_from_child and
+// Booleans and transforms (docs/spec.md §4). Matrices are world_from_child and
 // compose like OpenSCAD's: the statement's matrix applies to its block.
 #include <cmath>
 

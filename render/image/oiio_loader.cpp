@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <string>
 
-#include "render/render.hpp"
+#include "render/image/image.hpp"
 
 namespace kerf::render {
 

@@ -2,6 +2,8 @@
 // folder, then rename), so readers never see half a file and a failed write
 // keeps the previous image. PNG goes through libpng (png_file.cpp); every
 // other format through OpenImageIO, loaded only then (oiio_loader.cpp).
+#include "render/image/image.hpp"
+
 #include <algorithm>
 #include <cstdint>
 #include <atomic>
@@ -22,7 +24,6 @@
 #include "render/image/oiio_loader.hpp"
 #include "render/image/png_file.hpp"
 #include "render/image/srgb_bytes.hpp"
-#include "render/render.hpp"
 
 namespace kerf::render {
 
@@ -43,7 +44,7 @@ bool is_float_format(const std::string& ext) {
 std::uint8_t unit_byte(float v) { return std::uint8_t(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f); }
 
 // 8-bit files cannot hold linear floats or +inf: encode what the pixels mean
-// (spec §7: depth normalised to the nearest and farthest hit, misses 0).
+// (docs/spec.md §7: depth normalised to the nearest and farthest hit, misses 0).
 BigVector<std::uint8_t> encode_8bit(const Image& im) {
     BigVector<std::uint8_t> out(im.pixels.size());
     switch (im.content) {

@@ -1,4 +1,4 @@
-// Exact ray–primitive intervals in object space (issue 4). The ray is
+// Exact ray–primitive intervals in object space. The ray is
 // o + t·d with d NOT normalised (it is the world direction mapped by the
 // leaf's object_from_world), so t is shared by every leaf along a world ray.
 // Spans cover the whole line, t in (-inf, inf): a ray that starts inside a

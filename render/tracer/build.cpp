@@ -2,7 +2,7 @@
 // design"): the tolerances from the scene's scale, the top BVH whose
 // primitives are the root's units (closest-hit semantics, first_hit.cpp,
 // shadow_rays.cpp) and an own BVH for every union or difference with more
-// than kDirectChildren operands (node_eval.cpp). Boxes are rounded outwards
+// than kDirectChildren operands (node_spans.cpp). Boxes are rounded outwards
 // and padded, so Embree's float traversal only ever culls.
 #include <algorithm>
 #include <cmath>
@@ -57,10 +57,10 @@ std::vector<std::uint32_t> root_units(const csg::Scene& scene) {
 }  // namespace
 
 CsgTracer::Impl::~Impl() {
-    if (top.scene) rtcReleaseScene(top.scene);
+    if (top.bvh) rtcReleaseScene(top.bvh);
     for (auto& a : node_accels)
-        if (a->scene) rtcReleaseScene(a->scene);
-    for (RTCScene m : mesh_scenes)
+        if (a->bvh) rtcReleaseScene(a->bvh);
+    for (RTCScene m : mesh_bvhs)
         if (m) rtcReleaseScene(m);
     if (device) rtcReleaseDevice(device);
 }
@@ -90,9 +90,9 @@ void CsgTracer::Impl::build_accel(Accel& accel, const std::vector<std::uint32_t>
     // A few units are cheaper to box-test in a loop than through Embree, whose
     // per-query set-up costs about as much as tracing a background pixel.
     if (accel.items.size() <= kDirectChildren) return;
-    accel.scene = rtcNewScene(device);
-    rtcSetSceneFlags(accel.scene, RTC_SCENE_FLAG_ROBUST);
-    rtcSetSceneBuildQuality(accel.scene, RTC_BUILD_QUALITY_HIGH);
+    accel.bvh = rtcNewScene(device);
+    rtcSetSceneFlags(accel.bvh, RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneBuildQuality(accel.bvh, RTC_BUILD_QUALITY_HIGH);
     RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
     rtcSetGeometryUserPrimitiveCount(geom, unsigned(accel.items.size()));
     rtcSetGeometryUserData(geom, &accel);
@@ -100,9 +100,9 @@ void CsgTracer::Impl::build_accel(Accel& accel, const std::vector<std::uint32_t>
     rtcSetGeometryIntersectFunction(geom, top_level ? top_intersect_callback : collect_callback);
     if (top_level) rtcSetGeometryOccludedFunction(geom, top_occluded_callback);
     rtcCommitGeometry(geom);
-    rtcAttachGeometry(accel.scene, geom);
+    rtcAttachGeometry(accel.bvh, geom);
     rtcReleaseGeometry(geom);
-    rtcCommitScene(accel.scene);
+    rtcCommitScene(accel.bvh);
     if (RTCError e = rtcGetDeviceError(device); e != RTC_ERROR_NONE)
         throw std::runtime_error("embree failed to build the scene (error " + std::to_string(int(e)) + ")");
 }
@@ -146,7 +146,7 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
     }
     impl_->build_accel(impl_->top, units, true, scale_);
     if (impl_->top.always.empty()) {
-        // Padded far beyond the eval box tests' eps_ slack, so the early out
+        // Padded far beyond the node box tests' eps_ slack, so the early out
         // never culls what they would keep.
         csg::Aabb reach;
         for (std::uint32_t unit : impl_->top.items) reach.extend(scene.nodes[unit].bounds);

@@ -1,7 +1,7 @@
 // What a CsgTracer builds once and every query then only reads: the Embree
 // device, the top BVH over the root's units, the own BVHs of large union and
 // difference nodes, and one triangle scene per mesh. Its own header because
-// the build (tracer_build.cpp, mesh_leaves.cpp) and the per-ray files all
+// the build (tracer_build.cpp, mesh_spans.cpp) and the per-ray files all
 // need the layout.
 #pragma once
 #include <cstdint>
@@ -18,7 +18,7 @@ namespace kerf::render {
 
 // A BVH over some nodes (the root's units, or a large node's children).
 struct Accel {
-    RTCScene scene = nullptr;          // null: few items, tested one by one
+    RTCScene bvh = nullptr;            // null: few items, tested one by one
     std::vector<std::uint32_t> items;  // node per Embree primID
     std::vector<RTCBounds> boxes;
     std::vector<std::uint32_t> always;  // unbounded nodes (half-spaces): tested for every ray
@@ -36,22 +36,22 @@ struct CsgTracer::Impl {
     std::vector<std::int32_t> accel_of_node;  // -1: children evaluated directly
     std::vector<std::unique_ptr<Accel>> node_accels;
     std::vector<double> leaf_stretch;         // per leaf: Frobenius norm of object_from_world.linear
-    std::vector<RTCScene> mesh_scenes;        // per csg::Mesh used by a leaf (object space)
+    std::vector<RTCScene> mesh_bvhs;        // per csg::Mesh used by a leaf (object space)
     std::vector<csg::Aabb> mesh_boxes;        // object-space bounds of each mesh
 
     Impl(const csg::Scene& s, bool f) : scene(s), use_float(f) {}
     ~Impl();
     void build_accel(Accel& accel, const std::vector<std::uint32_t>& nodes, bool top_level, double scale);
-    void build_meshes();  // mesh_leaves.cpp
+    void build_meshes();  // mesh_spans.cpp
 };
 
 // Embree callbacks the build installs, each defined beside the query it serves.
 void top_intersect_callback(const RTCIntersectFunctionNArguments* args);  // first_hit.cpp
 void top_occluded_callback(const RTCOccludedFunctionNArguments* args);    // shadow_rays.cpp
-void collect_callback(const RTCIntersectFunctionNArguments* args);        // node_eval.cpp
+void collect_callback(const RTCIntersectFunctionNArguments* args);        // node_spans.cpp
 
 // Outward (CCW seen from outside) normal of a mesh triangle, not normalised.
-// Crossing orientation (mesh_leaves.cpp) and hit normals (surface_normal.cpp)
+// Crossing orientation (mesh_spans.cpp) and hit normals (surface_normal.cpp)
 // must use the same one.
 inline glm::dvec3 triangle_normal(const csg::Mesh& m, std::uint32_t prim) {
     const std::uint32_t* tri = &m.triangles[std::size_t(prim) * 3];

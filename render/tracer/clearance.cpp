@@ -64,7 +64,7 @@ double object_clearance(const csg::Leaf& leaf, const glm::dvec3& q) {
 
 }  // namespace
 
-bool EvalState::clear_of(std::uint32_t node, const glm::dvec3& x, double margin) const {
+bool RayState::clear_of(std::uint32_t node, const glm::dvec3& x, double margin) const {
     const Node& n = impl->scene.nodes[node];
     if (box_distance2(n.bounds, x) > margin * margin) return true;
     const std::uint32_t* kids = n.op == Op::Leaf ? nullptr : impl->scene.children.data() + n.first;

@@ -15,7 +15,7 @@ namespace kerf::render {
 // ray into a groove), only those are intersected; the piece they leave
 // starts at e, and e is the answer if it is clear of all the others.
 // Minuend spans are at base.., scratch from sbase on (see FastPath).
-FastPath EvalState::first_piece_if_clear(const csg::Node& n, std::uint32_t base, std::uint32_t sbase, std::uint32_t i,
+FastPath RayState::first_piece_if_clear(const csg::Node& n, std::uint32_t base, std::uint32_t sbase, std::uint32_t i,
                                          double a, double b, Need need) {
     SpanStack& st = scratch->stack;
     Span piece = *st.at(base + i);
@@ -45,7 +45,7 @@ FastPath EvalState::first_piece_if_clear(const csg::Node& n, std::uint32_t base,
         // Span i minus the near subtrahends, on the span's part in the window.
         const double wb = std::min(b, piece.t1);
         st.resize(sbase);
-        for (std::uint32_t j = 0; j < nnear; ++j) eval(subs[near[j]], probe, wb, Need::All);
+        for (std::uint32_t j = 0; j < nnear; ++j) spans(subs[near[j]], probe, wb, Need::All);
         int r = 0;
         const std::uint32_t rbase = subtract_gathered(base + i, 1, sbase, r);
         int k = 0;

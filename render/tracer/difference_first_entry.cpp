@@ -18,7 +18,7 @@ namespace kerf::render {
 // inside the current window [c, end] are trusted. The window starts as the
 // point c (most rays: "is the minuend's entry covered?"), then grows to the
 // covering spans' claimed exit, then doubles, until it decides.
-std::uint32_t EvalState::first_entry_by_points(const Accel& subtrahends, std::uint32_t base, std::uint32_t i,
+std::uint32_t RayState::first_entry_by_points(const Accel& subtrahends, std::uint32_t base, std::uint32_t i,
                                                double b) {
     SpanStack& st = scratch->stack;
     const std::uint32_t sbase = st.size();

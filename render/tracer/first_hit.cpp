@@ -15,7 +15,7 @@ namespace {
 bool try_unit_entry(TopContext& ctx, std::uint32_t unit_index, std::uint32_t node) {
     TraceScratch& s = *ctx.state->scratch;
     const std::uint32_t base = s.stack.size();
-    const std::uint32_t n = ctx.state->eval(node, ctx.tnear, ctx.best, Need::First);
+    const std::uint32_t n = ctx.state->spans(node, ctx.tnear, ctx.best, Need::First);
     bool better = false;
     for (std::uint32_t i = 0; i < n; ++i) {
         const Span& sp = *s.stack.at(base + i);
@@ -46,7 +46,7 @@ void top_intersect_callback(const RTCIntersectFunctionNArguments* args) {
 }
 
 bool CsgTracer::intersect(const TraceRay& ray, TraceHit& hit, TraceScratch& scratch) const {
-    EvalState st;
+    RayState st;
     if (!make_state(st, impl_.get(), ray, eps_, scale_, scratch)) return false;
     TopContext ctx(st, ray);
     // Unbounded units (numbered after the BVH's for ties) go first: the
@@ -54,12 +54,12 @@ bool CsgTracer::intersect(const TraceRay& ray, TraceHit& hit, TraceScratch& scra
     const std::uint32_t always_offset = std::uint32_t(impl_->top.items.size());
     for (std::size_t i = 0; i < impl_->top.always.size(); ++i)
         try_unit_entry(ctx, always_offset + std::uint32_t(i), impl_->top.always[i]);
-    if (!impl_->top.scene) {
+    if (!impl_->top.bvh) {
         for (std::size_t i = 0; i < impl_->top.items.size(); ++i)
             try_unit_entry(ctx, std::uint32_t(i), impl_->top.items[i]);
     } else {
         RTCRayHit rh = make_rayhit(st, ray.tnear, ctx.best);
-        rtcIntersect1(impl_->top.scene, &ctx.rtc, &rh);
+        rtcIntersect1(impl_->top.bvh, &ctx.rtc, &rh);
     }
     if (!ctx.found) return false;
     hit.t = ctx.best;

@@ -109,10 +109,10 @@ std::uint32_t solid_spans(Span* h, std::uint32_t hits, double same, double eps, 
 }  // namespace
 
 void CsgTracer::Impl::build_meshes() {
-    mesh_scenes.assign(scene.meshes.size(), nullptr);
+    mesh_bvhs.assign(scene.meshes.size(), nullptr);
     mesh_boxes.assign(scene.meshes.size(), csg::Aabb{});
     for (const csg::Leaf& leaf : scene.leaves) {
-        if (leaf.kind != csg::PrimKind::Mesh || leaf.mesh >= scene.meshes.size() || mesh_scenes[leaf.mesh]) continue;
+        if (leaf.kind != csg::PrimKind::Mesh || leaf.mesh >= scene.meshes.size() || mesh_bvhs[leaf.mesh]) continue;
         const csg::Mesh& mesh = scene.meshes[leaf.mesh];
         if (mesh.points.empty() || mesh.triangles.size() < 3) continue;  // an empty mesh is an empty solid
         RTCScene ms = rtcNewScene(device);
@@ -136,7 +136,7 @@ void CsgTracer::Impl::build_meshes() {
         rtcAttachGeometry(ms, g);
         rtcReleaseGeometry(g);
         rtcCommitScene(ms);
-        mesh_scenes[leaf.mesh] = ms;
+        mesh_bvhs[leaf.mesh] = ms;
         mesh_boxes[leaf.mesh] = box;
     }
     if (RTCError e = rtcGetDeviceError(device); e != RTC_ERROR_NONE)
@@ -146,9 +146,9 @@ void CsgTracer::Impl::build_meshes() {
 // A mesh's spans along the whole chord of its box (so a window starting
 // inside the mesh still knows it is inside): all crossings, sorted, edge
 // duplicates merged, then paired as a solid or a thin shell.
-std::uint32_t EvalState::eval_mesh(std::uint32_t leaf_id, double a, double b) {
+std::uint32_t RayState::mesh_spans(std::uint32_t leaf_id, double a, double b) {
     const csg::Leaf& leaf = impl->scene.leaves[leaf_id];
-    if (leaf.mesh >= impl->mesh_scenes.size() || !impl->mesh_scenes[leaf.mesh]) return 0;
+    if (leaf.mesh >= impl->mesh_bvhs.size() || !impl->mesh_bvhs[leaf.mesh]) return 0;
     const glm::dvec3 lo = leaf.object_from_world.point(o);
     const glm::dvec3 ld = leaf.object_from_world.vector(d);
     double t0, t1;
@@ -163,7 +163,7 @@ std::uint32_t EvalState::eval_mesh(std::uint32_t leaf_id, double a, double b) {
     const glm::dvec3 start = lo + t0 * ld;
     RTCRayHit rh = embree_ray(float(start.x), float(start.y), float(start.z), float(ld.x), float(ld.y), float(ld.z),
                               0, round_up(t1 - t0));
-    rtcIntersect1(impl->mesh_scenes[leaf.mesh], &ctx.rtc, &rh);
+    rtcIntersect1(impl->mesh_bvhs[leaf.mesh], &ctx.rtc, &rh);
     const std::uint32_t hits = st.size() - base;
     scratch->counters.interval_tests++;
     Span* h = st.at(base);

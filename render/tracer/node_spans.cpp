@@ -1,9 +1,9 @@
-// Windowed evaluation of the CSG tree (README.md, "Inside a unit"):
-// eval(node, a, b) pushes the node's spans that overlap [a, b] onto the
+// Windowed spans of the CSG tree (README.md, "Inside a unit"):
+// spans(node, a, b) pushes the node's spans that overlap [a, b] onto the
 // thread's span stack, correct on that window. Box culling, primitive leaves
 // and the union / intersection / difference combinations live in this one
 // file because they call each other recursively on the hot path and must
-// stay inlinable into each other. Mesh leaves are in mesh_leaves.cpp, the
+// stay inlinable into each other. Mesh leaves are in mesh_spans.cpp, the
 // point-query first entry of big differences in difference_first_entry.cpp,
 // the clearance fast path of small ones in difference_fast_path.cpp.
 #include <algorithm>
@@ -21,7 +21,7 @@ using csg::Op;
 // A child query over a node's own BVH.
 struct CollectContext {
     RTCIntersectContext rtc;  // first member: Embree passes our pointer through
-    EvalState* state;
+    RayState* state;
     const Accel* accel;
     double a, b;
 };
@@ -32,28 +32,28 @@ void collect_callback(const RTCIntersectFunctionNArguments* args) {
     if (!args->valid[0]) return;
     auto* ctx = reinterpret_cast<CollectContext*>(args->context);
     // Never accepts: every crossed child is gathered, tfar stays.
-    ctx->state->eval(ctx->accel->items[args->primID], ctx->a, ctx->b, Need::All);
+    ctx->state->spans(ctx->accel->items[args->primID], ctx->a, ctx->b, Need::All);
 }
 
 namespace {
 
-// The combinations below are called only from eval (and each other): they
+// The combinations below are called only from spans (and each other): they
 // have internal linkage so the compiler inlines them into it as before the
-// split; only eval and collect are reached from other files.
+// split; only spans and collect are reached from other files.
 
 // `box` is already padded by the degenerate rule's reach (Impl::padded).
-bool box_hit(const EvalState& es, const csg::Aabb& box, double a, double b) {
+bool box_hit(const RayState& es, const csg::Aabb& box, double a, double b) {
     return slab_hit(box, es.o, es.invd, a - es.eps, b + es.eps);
 }
 
-std::uint32_t eval_leaf(EvalState& es, const Node& n, double a, double b) {
+std::uint32_t leaf_spans(RayState& es, const Node& n, double a, double b) {
     const csg::Leaf& leaf = es.impl->scene.leaves[n.first];
-    if (leaf.kind == csg::PrimKind::Mesh) return es.eval_mesh(n.first, a, b);
+    if (leaf.kind == csg::PrimKind::Mesh) return es.mesh_spans(n.first, a, b);
     const glm::dvec3 lo = leaf.object_from_world.point(es.o);
     const glm::dvec3 ld = leaf.object_from_world.vector(es.d);
     csg::Span<double> spans[csg::kMaxSpans];
     // Span ends outside the window (with room for the degenerate rule) may
-    // be reported inexactly: nothing reads them (see eval's contract).
+    // be reported inexactly: nothing reads them (see spans' contract).
     const double wa = a - 4 * es.eps, wb = b + 4 * es.eps;
     int count;
     if (es.impl->use_float) {
@@ -83,16 +83,16 @@ std::uint32_t eval_leaf(EvalState& es, const Node& n, double a, double b) {
 
 // Pushes the spans of children skip.. of an operation node on [a, b]:
 // through the node's own BVH if it has one, else child by child.
-void collect_children(EvalState& es, std::uint32_t node, const Node& n, std::uint32_t skip, double a, double b) {
+void collect_children(RayState& es, std::uint32_t node, const Node& n, std::uint32_t skip, double a, double b) {
     const std::int32_t ai = es.impl->accel_of_node[node];
     if (ai >= 0) {
         es.collect(*es.impl->node_accels[std::size_t(ai)], a, b);
         return;
     }
-    for (std::uint32_t k = skip; k < n.count; ++k) es.eval(es.impl->scene.children[n.first + k], a, b, Need::All);
+    for (std::uint32_t k = skip; k < n.count; ++k) es.spans(es.impl->scene.children[n.first + k], a, b, Need::All);
 }
 
-std::uint32_t eval_union(EvalState& es, std::uint32_t node, const Node& n, double a, double b) {
+std::uint32_t union_spans(RayState& es, std::uint32_t node, const Node& n, double a, double b) {
     es.scratch->counters.union_ops++;
     SpanStack& st = es.scratch->stack;
     const std::uint32_t base = st.size();
@@ -102,7 +102,7 @@ std::uint32_t eval_union(EvalState& es, std::uint32_t node, const Node& n, doubl
     return std::uint32_t(count);
 }
 
-std::uint32_t eval_intersection(EvalState& es, const Node& n, double a, double b) {
+std::uint32_t intersection_spans(RayState& es, const Node& n, double a, double b) {
     es.scratch->counters.intersection_ops++;
     SpanStack& st = es.scratch->stack;
     const std::uint32_t base = st.size();
@@ -110,12 +110,12 @@ std::uint32_t eval_intersection(EvalState& es, const Node& n, double a, double b
     for (std::uint32_t k = 0; k < n.count; ++k) {
         const std::uint32_t child = es.impl->scene.children[n.first + k];
         if (k == 0) {
-            count = es.eval(child, a, b, Need::All);
+            count = es.spans(child, a, b, Need::All);
         } else {
             // Later operands matter only where the running result is inside.
             const double wa = std::max(a, st.at(base)->t0);
             const double wb = std::min(b, st.at(base + count - 1)->t1);
-            const std::uint32_t m = es.eval(child, wa, wb, Need::All);
+            const std::uint32_t m = es.spans(child, wa, wb, Need::All);
             const std::uint32_t rbase = base + count + m;
             st.resize(rbase + count + m);
             const int r =
@@ -129,11 +129,11 @@ std::uint32_t eval_intersection(EvalState& es, const Node& n, double a, double b
     return count;
 }
 
-std::uint32_t eval_difference(EvalState& es, std::uint32_t node, const Node& n, double a, double b, Need need) {
+std::uint32_t difference_spans(RayState& es, std::uint32_t node, const Node& n, double a, double b, Need need) {
     es.scratch->counters.difference_ops++;
     SpanStack& st = es.scratch->stack;
     const std::uint32_t base = st.size();
-    const std::uint32_t count = es.eval(es.impl->scene.children[n.first], a, b, Need::All);
+    const std::uint32_t count = es.spans(es.impl->scene.children[n.first], a, b, Need::All);
     if (count == 0 || n.count == 1) return count;  // empty minuend: nothing to subtract from
     const std::uint32_t sbase = base + count;
     int r = 0;
@@ -148,7 +148,7 @@ std::uint32_t eval_difference(EvalState& es, std::uint32_t node, const Node& n, 
     // First/Any: one minuend span at a time, stopping at the first piece that
     // answers the question; only that piece is returned.
     const std::int32_t ai = es.impl->accel_of_node[node];
-    const bool few = ai < 0 || !es.impl->node_accels[std::size_t(ai)]->scene;
+    const bool few = ai < 0 || !es.impl->node_accels[std::size_t(ai)]->bvh;
     for (std::uint32_t i = 0; i < count; ++i) {
         if (few) {
             const FastPath found = es.first_piece_if_clear(n, base, sbase, i, a, b, need);
@@ -188,25 +188,25 @@ std::uint32_t eval_difference(EvalState& es, std::uint32_t node, const Node& n, 
 
 }  // namespace
 
-std::uint32_t EvalState::eval(std::uint32_t node, double a, double b, Need need) {
+std::uint32_t RayState::spans(std::uint32_t node, double a, double b, Need need) {
     const Node& n = impl->scene.nodes[node];
     // Also under Embree's callbacks: a BVH leaf may hold several items and a
     // root that is a leaf is entered without any box test, so a one-unit
     // scene would otherwise test its primitives for every ray of the image.
     if (!box_hit(*this, impl->padded[node], a, b)) return 0;
     switch (n.op) {
-        case Op::Leaf: return eval_leaf(*this, n, a, b);
-        case Op::Union: return eval_union(*this, node, n, a, b);
-        case Op::Intersection: return eval_intersection(*this, n, a, b);
-        case Op::Difference: return eval_difference(*this, node, n, a, b, need);
+        case Op::Leaf: return leaf_spans(*this, n, a, b);
+        case Op::Union: return union_spans(*this, node, n, a, b);
+        case Op::Intersection: return intersection_spans(*this, n, a, b);
+        case Op::Difference: return difference_spans(*this, node, n, a, b, need);
     }
     return 0;
 }
 
-void EvalState::collect(const Accel& accel, double a, double b) {
-    for (std::uint32_t node : accel.always) eval(node, a, b, Need::All);
-    if (!accel.scene) {
-        for (std::uint32_t node : accel.items) eval(node, a, b, Need::All);
+void RayState::collect(const Accel& accel, double a, double b) {
+    for (std::uint32_t node : accel.always) spans(node, a, b, Need::All);
+    if (!accel.bvh) {
+        for (std::uint32_t node : accel.items) spans(node, a, b, Need::All);
         return;
     }
     CollectContext ctx;
@@ -216,7 +216,7 @@ void EvalState::collect(const Accel& accel, double a, double b) {
     ctx.a = a;
     ctx.b = b;
     RTCRayHit rh = make_rayhit(*this, a, b);
-    rtcIntersect1(accel.scene, &ctx.rtc, &rh);
+    rtcIntersect1(accel.bvh, &ctx.rtc, &rh);
 }
 
 }  // namespace kerf::render

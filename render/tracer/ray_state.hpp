@@ -1,8 +1,7 @@
-// Per-ray state of the tracer. One EvalState lives on the stack of each
+// Per-ray state of the tracer. One RayState lives on the stack of each
 // intersect/occluded call; the Embree contexts that carry it through nested
 // BVH queries start with an RTCIntersectContext (Embree hands that pointer
-// back to our callbacks). The evaluation is spread over several files (node
-// evaluation, difference first entry, mesh leaves, first hit, shadow rays);
+// back to our callbacks). X// evaluation, difference first entry, mesh leaves, first hit, shadow rays);
 // what they share on the hot path is here, inline: no virtual calls, no heap
 // allocation, no locks per ray.
 #pragma once
@@ -28,7 +27,7 @@ enum class Need : std::uint8_t {
     Any,    // at least one span overlapping the window, if there is one
 };
 
-// Outcome of EvalState::first_piece_if_clear.
+// Outcome of RayState::first_piece_if_clear.
 enum class FastPath : std::uint8_t {
     Unknown,  // not proven: gather every subtrahend
     Found,    // the answering piece is written at `base`
@@ -36,7 +35,7 @@ enum class FastPath : std::uint8_t {
     None,     // this minuend span has no answer
 };
 
-struct EvalState {
+struct RayState {
     const CsgTracer::Impl* impl;
     glm::dvec3 o, d, invd;
     float org[3], dir[3];
@@ -45,10 +44,10 @@ struct EvalState {
     double t_pad;     // t slack of float Embree windows
     TraceScratch* scratch;
 
-    // node_eval.cpp: pushes the node's spans overlapping [a, b] and returns
+    // node_spans.cpp: pushes the node's spans overlapping [a, b] and returns
     // their count. Starts with the node's own box test.
-    std::uint32_t eval(std::uint32_t node, double a, double b, Need need);
-    // node_eval.cpp: pushes the spans of every node of `accel` the ray
+    std::uint32_t spans(std::uint32_t node, double a, double b, Need need);
+    // node_spans.cpp: pushes the spans of every node of `accel` the ray
     // crosses on [a, b] (unsorted, possibly overlapping).
     void collect(const Accel& accel, double a, double b);
     // clearance.cpp: true if x is provably outside the node and farther than
@@ -57,8 +56,8 @@ struct EvalState {
     // difference_fast_path.cpp
     FastPath first_piece_if_clear(const csg::Node& n, std::uint32_t base, std::uint32_t sbase, std::uint32_t i,
                                   double a, double b, Need need);
-    // mesh_leaves.cpp
-    std::uint32_t eval_mesh(std::uint32_t leaf_id, double a, double b);
+    // mesh_spans.cpp
+    std::uint32_t mesh_spans(std::uint32_t leaf_id, double a, double b);
     // difference_first_entry.cpp
     std::uint32_t first_entry_by_points(const Accel& subtrahends, std::uint32_t base, std::uint32_t i, double b);
 
@@ -95,7 +94,7 @@ inline bool slab_hit(const csg::Aabb& box, const glm::dvec3& o, const glm::dvec3
 // set-up skipped, when the ray's line misses `reach` (the box around every
 // bounded unit): a slab test on the whole line (no t-window, so no tolerance
 // to get wrong), so background pixels cost three divisions and no more.
-inline bool make_state(EvalState& st, const CsgTracer::Impl* impl, const TraceRay& ray, double eps_world,
+inline bool make_state(RayState& st, const CsgTracer::Impl* impl, const TraceRay& ray, double eps_world,
                        double scale, TraceScratch& scratch) {
     st.invd = 1.0 / ray.d;  // ±inf on axes the ray is parallel to
     if (!slab_hit(impl->reach, ray.o, st.invd, -kInf, kInf)) return false;
@@ -137,7 +136,7 @@ inline RTCRayHit embree_ray(float ox, float oy, float oz, float dx, float dy, fl
 }
 
 // The state's ray on the t-window [a, b], widened by t_pad for float round-off.
-inline RTCRayHit make_rayhit(const EvalState& st, double a, double b) {
+inline RTCRayHit make_rayhit(const RayState& st, double a, double b) {
     return embree_ray(st.org[0], st.org[1], st.org[2], st.dir[0], st.dir[1], st.dir[2],
                       std::max(0.0f, round_down(a) - float(st.t_pad)),
                       b == kInf ? std::numeric_limits<float>::infinity() : round_up(b) + float(st.t_pad));
@@ -146,7 +145,7 @@ inline RTCRayHit make_rayhit(const EvalState& st, double a, double b) {
 // A query over the root's units (first_hit.cpp, shadow_rays.cpp).
 struct TopContext {
     RTCIntersectContext rtc;  // first member: Embree passes our pointer through
-    EvalState* state;
+    RayState* state;
     const Accel* accel;
     double tnear;
     double best;              // intersect: current first entry; occluded: tfar
@@ -154,7 +153,7 @@ struct TopContext {
     SpanEnd best_end;
     bool found;
 
-    TopContext(EvalState& st, const TraceRay& ray)
+    TopContext(RayState& st, const TraceRay& ray)
         : state(&st), accel(&st.impl->top), tnear(ray.tnear), best(ray.tfar), best_unit(0), found(false) {
         rtcInitIntersectContext(&rtc);
     }

@@ -14,7 +14,7 @@ namespace {
 bool unit_blocks(TopContext& ctx, std::uint32_t node) {
     TraceScratch& s = *ctx.state->scratch;
     const std::uint32_t base = s.stack.size();
-    const std::uint32_t n = ctx.state->eval(node, ctx.tnear, ctx.best, Need::Any);
+    const std::uint32_t n = ctx.state->spans(node, ctx.tnear, ctx.best, Need::Any);
     bool blocks = false;
     for (std::uint32_t i = 0; i < n && !blocks; ++i) {
         const Span& sp = *s.stack.at(base + i);
@@ -36,18 +36,18 @@ void top_occluded_callback(const RTCOccludedFunctionNArguments* args) {
 }
 
 bool CsgTracer::occluded(const TraceRay& ray, TraceScratch& scratch) const {
-    EvalState st;
+    RayState st;
     if (!make_state(st, impl_.get(), ray, eps_, scale_, scratch)) return false;
     TopContext ctx(st, ray);
     for (std::uint32_t node : impl_->top.always)
         if (unit_blocks(ctx, node)) return true;
-    if (!impl_->top.scene) {
+    if (!impl_->top.bvh) {
         for (std::uint32_t node : impl_->top.items)
             if (unit_blocks(ctx, node)) return true;
         return false;
     }
     RTCRay r = make_rayhit(st, ray.tnear, ray.tfar).ray;
-    rtcOccluded1(impl_->top.scene, &ctx.rtc, &r);
+    rtcOccluded1(impl_->top.bvh, &ctx.rtc, &r);
     return ctx.found;
 }
 

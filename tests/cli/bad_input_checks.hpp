@@ -1,4 +1,4 @@
-// What every hostile input must produce (spec §8), checked through both
+// What every hostile input must produce (docs/spec.md §8), checked through both
 // `kerf check` and `kerf render`: exit 1 (not a signal, not the timeout's
 // 124, not bad_alloc's 3), exactly one `PATH:LINE:COL: error: MESSAGE`
 // diagnostic as the first line, a short standard error whatever the input's

@@ -1,4 +1,4 @@
-// `kerf render -o OUT` (spec §7–§8): an output that cannot be written is
+// `kerf render -o OUT` (docs/spec.md §7–§8): an output that cannot be written is
 // exit 3 with one line, decided before the scene is evaluated; an existing
 // image is never destroyed by a render that fails or is killed.
 #include <catch2/catch.hpp>

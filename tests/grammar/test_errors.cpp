@@ -1,5 +1,5 @@
 // Syntax errors: exactly one line "PATH:LINE:COL: error: MESSAGE" naming
-// what was expected, located at the offending byte (spec §8). The expected
+// what was expected, located at the offending byte (docs/spec.md §8). The expected
 // strings are written by hand from the input.
 #include <catch2/catch.hpp>
 

@@ -1,4 +1,4 @@
-// Expression shapes and precedence (spec §2), checked through the
+// Expression shapes and precedence (docs/spec.md §2), checked through the
 // s-expression printer: each expected string is written by hand from the
 // spec's precedence table, not taken from parser output.
 #include <catch2/catch.hpp>

@@ -1,4 +1,4 @@
-// Lexical details (spec §1): number and string literal values, names versus
+// Lexical details (docs/spec.md §1): number and string literal values, names versus
 // keywords, comments.
 #include <catch2/catch.hpp>
 

@@ -1,4 +1,4 @@
-// Robustness (spec §8): deep nesting of every recursive construct ends in a
+// Robustness (docs/spec.md §8): deep nesting of every recursive construct ends in a
 // located "nesting deeper than N" error (never a stack overflow), huge
 // tokens and truncated or random input never crash, the grammar has no
 // PEGTL-detectable problems.

@@ -1,4 +1,4 @@
-// Statement shapes (spec §3): assignments, definitions, instantiations with
+// Statement shapes (docs/spec.md §3): assignments, definitions, instantiations with
 // children, modifiers, if/else, for, let, include/use, blocks.
 #include <catch2/catch.hpp>
 

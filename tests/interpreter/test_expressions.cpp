@@ -1,4 +1,4 @@
-// Expressions of spec §2: operators, vectors and matrices, indexing,
+// Expressions of docs/spec.md §2: operators, vectors and matrices, indexing,
 // ranges, comprehensions, let/echo/assert prefixes.
 #include <catch2/catch.hpp>
 

@@ -1,4 +1,4 @@
-// Hostile inputs (spec §8: "bad input of any kind ... ends in a located
+// Hostile inputs (docs/spec.md §8: "bad input of any kind ... ends in a located
 // error within the limits, never a crash, hang, or unbounded memory use"),
 // from adversarial cases written while fuzzing parse+evaluate
 // (tests/fuzz/fuzz_eval.cpp). Each must end in a SourceError with a

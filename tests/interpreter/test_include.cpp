@@ -1,4 +1,4 @@
-// include/use (spec §3): search order, what each imports, cycles; -D.
+// include/use (docs/spec.md §3): search order, what each imports, cycles; -D.
 #include <catch2/catch.hpp>
 
 #include <filesystem>

@@ -1,4 +1,4 @@
-// Functions and modules (spec §3): arguments, defaults, recursion,
+// Functions and modules (docs/spec.md §3): arguments, defaults, recursion,
 // children(), $children; statements if/for/let/echo/assert; modifiers.
 #include <catch2/catch.hpp>
 

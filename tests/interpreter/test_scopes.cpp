@@ -1,4 +1,4 @@
-// Names and scopes (spec §3): immutable bindings, shadowing, strict
+// Names and scopes (docs/spec.md §3): immutable bindings, shadowing, strict
 // undefined names, use before definition, dynamic `$` variables.
 #include <catch2/catch.hpp>
 

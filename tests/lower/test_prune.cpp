@@ -1,4 +1,4 @@
-// Pruning and empty-solid rules (spec §4, architecture "model only what the
+// Pruning and empty-solid rules (docs/spec.md §4, architecture "model only what the
 // scene requires").
 #include <catch2/catch.hpp>
 
@@ -62,7 +62,7 @@ TEST_CASE("A - A is kept: showing it empty is the renderer's job") {
     CHECK(s.nodes[0].count == 2);
 }
 
-TEST_CASE("empty operations follow spec §4") {
+TEST_CASE("empty operations follow docs/spec.md §4") {
     SECTION("union(), intersection(), difference() with no children are empty") {
         for (auto k : {scene::NodeKind::Union, scene::NodeKind::Intersection, scene::NodeKind::Difference}) {
             GraphBuilder b;

@@ -1,4 +1,4 @@
-// The spec §9 reference models built by hand as scene graphs (what the
+// The docs/spec.md §9 reference models built by hand as scene graphs (what the
 // evaluator should produce for examples/*.sdl), lowered to the expected
 // flattened shapes. reference_scripts_test.cpp checks the same shapes
 // through the parser and evaluator.

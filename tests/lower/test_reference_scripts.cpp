@@ -1,4 +1,4 @@
-// The spec §9 reference models as shipped in examples/*.sdl, through the
+// The docs/spec.md §9 reference models as shipped in examples/*.sdl, through the
 // parser and evaluator, lower to the expected flattened shapes.
 #include <catch2/catch.hpp>
 

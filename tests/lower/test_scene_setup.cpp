@@ -1,4 +1,4 @@
-// Materials per leaf and the spec §6 scene defaults.
+// Materials per leaf and the docs/spec.md §6 scene defaults.
 #include <catch2/catch.hpp>
 
 #include <cmath>

@@ -16,7 +16,7 @@ void check_close(const glm::dvec3& a, const glm::dvec3& b) {
 
 }  // namespace
 
-TEST_CASE("translate(t) rotate(r) s rotates first, then translates (spec §4)") {
+TEST_CASE("translate(t) rotate(r) s rotates first, then translates (docs/spec.md §4)") {
     GraphBuilder b;
     const auto top = b.translate({10, 0, 0}, b.rotate(90, {0, 0, 1}, b.cube(1)));
     const csg::Scene s = lower_to_csg(b.finish({top}));

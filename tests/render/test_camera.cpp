@@ -1,4 +1,4 @@
-// Cameras per spec §6, checked against the written rules, and image
+// Cameras per docs/spec.md §6, checked against the written rules, and image
 // orientation (row 0 on top, column 0 on the left) through whole renders.
 #include <catch2/catch.hpp>
 

@@ -1,4 +1,4 @@
-// import() of STL, OBJ and PLY files (spec §4): every encoding yields the
+// import() of STL, OBJ and PLY files (docs/spec.md §4): every encoding yields the
 // same closed unit cube, checked against closed-form volume, area and bounds;
 // broken files are located errors naming the place inside the file.
 #include <catch2/catch.hpp>

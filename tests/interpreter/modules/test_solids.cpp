@@ -1,4 +1,4 @@
-// Solids, transforms and appearance (spec §4–§5): canonical parameters,
+// Solids, transforms and appearance (docs/spec.md §4–§5): canonical parameters,
 // matrices checked against closed-form values, located errors.
 #include <catch2/catch.hpp>
 

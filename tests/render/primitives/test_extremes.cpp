@@ -1,4 +1,4 @@
-// The extremes of issue 4 for every primitive at once: rays starting exactly
+// The extremes (docs/accuracy.md) for every primitive at once: rays starting exactly
 // on the surface, rays through poles/edges/corners/rims/apexes, normals
 // against the oracle's gradient, identical leaves, and far translations where
 // float fails and double holds.

@@ -29,7 +29,7 @@ TEST_CASE("sphere depth matches the closed form at every pixel", "[render]") {
     const render::Image im = render::render(s, small(W, H, render::Aov::Depth));
     REQUIRE(im.width == W);
     REQUIRE(im.channels == 1);
-    // The same rays, by hand: camera basis per spec §6.
+    // The same rays, by hand: camera basis per docs/spec.md §6.
     const glm::dvec3 pos = s.camera.position, c(0.2, 0, 0.1);
     const glm::dvec3 f = glm::normalize(s.camera.look_at - pos);
     const glm::dvec3 r = glm::normalize(glm::cross(f, s.camera.up));

@@ -22,7 +22,7 @@ csg::Scene row_of_spheres(int n) {
     return s;
 }
 
-// A slab minus an n × n grid of cylinders (spec §9 "holes", radius 4/n).
+// A slab minus an n × n grid of cylinders (docs/spec.md §9 "holes", radius 4/n).
 csg::Scene holes(int n) {
     std::vector<Tree> kids{leaf(box({0, 0, 0}, {10, 10, 1}))};
     for (int i = 0; i < n; ++i)

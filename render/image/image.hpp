@@ -1,0 +1,50 @@
+// A rendered image and how it is written to a file: the image/ room's public
+// header (render.hpp produces Images, the CLI writes them).
+#pragma once
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+#include "render/image/big_buffer.hpp"
+
+namespace kerf::render {
+
+// What the pixels mean; write_image() uses it to encode 8-bit files.
+enum class ImageContent : std::uint8_t { Color, Depth, Normal, Hits };
+
+// Row-major, row 0 at the top, `channels` interleaved floats per pixel.
+// Colour is linear RGB; Depth: distance (+inf on miss); Normal: world unit
+// vector (0 on miss); Hits: count of primitive intervals found.
+// Rendered with RenderOptions::srgb8, `pixels` stays empty and `srgb8`
+// holds the same layout as bytes: srgb_byte() of what pixels would hold.
+struct Image {
+    int width = 0, height = 0, channels = 0;
+    BigVector<float> pixels;  // every element written by render()
+    BigVector<std::uint8_t> srgb8;
+    ImageContent content = ImageContent::Color;
+    float& at(int x, int y, int c) { return pixels[(std::size_t(y) * width + x) * channels + c]; }
+    float at(int x, int y, int c) const { return pixels[(std::size_t(y) * width + x) * channels + c]; }
+};
+
+class ImageWriteError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// Throws ImageWriteError (one line) if write_image() could not write `path`:
+// OpenImageIO has no writer for its extension, or its folder is missing or
+// refuses a new file. The CLI calls it before evaluating and rendering, so a
+// typo in -o costs nothing.
+void check_output_path(const std::string& path);
+
+// Format by extension (OpenImageIO). EXR/TIFF/HDR/PFM: linear float; others
+// (PNG, JPEG, ...): 8-bit, colour sRGB-encoded, AOVs normalised (docs/spec.md §7).
+// Written to a temporary file in the same folder, then renamed over `path`,
+// so a failed write leaves an existing file intact.
+void write_image(const Image& image, const std::string& path);
+
+// Whether write_image() stores `path` in 8 bits (then a colour render can
+// use RenderOptions::srgb8 and lose nothing).
+bool is_8bit_output(const std::string& path);
+
+}  // namespace kerf::render
