@@ -25,16 +25,6 @@ void print_warnings(const std::vector<Diagnostic>& warnings) {
     for (const auto& w : warnings) std::cerr << format_diagnostic(w) << '\n';
 }
 
-render::Aov to_aov(cli::AovKind k) {
-    switch (k) {
-        case cli::AovKind::Depth: return render::Aov::Depth;
-        case cli::AovKind::Normal: return render::Aov::Normal;
-        case cli::AovKind::Hits: return render::Aov::Hits;
-        case cli::AovKind::None: break;
-    }
-    return render::Aov::None;
-}
-
 void print_stats(const render::RenderStats& s, const render::Image& img) {
     double rays = static_cast<double>(s.primary_rays + s.shadow_rays + s.reflect_rays);
     double per = s.primary_rays + s.shadow_rays + s.reflect_rays > 0 ? 1.0 / rays : 0.0;
@@ -68,16 +58,7 @@ int run(const cli::Options& o) {
         return kOk;
     }
 
-    render::RenderOptions ro;
-    ro.width = o.width;
-    ro.height = o.height;
-    ro.spp = o.spp;
-    ro.threads = o.threads;
-    ro.preview = o.preview;
-    ro.aov = to_aov(o.aov);
-    ro.crop = o.crop;
-    ro.seed = o.seed;
-    ro.double_precision = o.double_precision;
+    render::RenderOptions ro = o.render;
     ro.srgb8 = render::is_8bit_output(o.output);  // colour for an 8-bit file: store its bytes directly
 
     render::RenderStats stats;
@@ -117,11 +98,12 @@ int main(int argc, char** argv) {
     cli::cap_memory_to_physical();
     try {
         return run(options);
+    } catch (const DefineError& e) {  // a broken -D value is a bad command line
+        std::cerr << format_diagnostic(e.diagnostic()) << '\n';
+        return kUsage;
     } catch (const SourceError& e) {
         std::cerr << format_diagnostic(e.diagnostic()) << '\n';
-        // Only -D values are errors without a file: a broken -D is a bad
-        // command line (exit 2), like a malformed -D without '='.
-        return e.diagnostic().loc.file ? kSceneError : kUsage;
+        return kSceneError;
     } catch (const IoError& e) {
         std::cerr << "kerf: error: " << e.what() << '\n';
         return kUsage;

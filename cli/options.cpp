@@ -74,24 +74,24 @@ Options parse_options(const std::vector<std::string>& args) {
             return args[++i];
         };
         if (a == "-o") o.output = value();
-        else if (a == "-W") o.width = parse_int<int>(a, value(), 1, 32768);
-        else if (a == "-H") o.height = parse_int<int>(a, value(), 1, 32768);
-        else if (a == "--spp") o.spp = parse_int<int>(a, value(), 1, 65536);
-        else if (a == "--threads") o.threads = parse_int<int>(a, value(), 0, 1024);
-        else if (a == "--seed") o.seed = parse_int<std::uint64_t>(a, value(), 0, UINT64_MAX);
-        else if (a == "--preview") o.preview = true;
+        else if (a == "-W") o.render.width = parse_int<int>(a, value(), 1, 32768);
+        else if (a == "-H") o.render.height = parse_int<int>(a, value(), 1, 32768);
+        else if (a == "--spp") o.render.spp = parse_int<int>(a, value(), 1, 65536);
+        else if (a == "--threads") o.render.threads = parse_int<int>(a, value(), 0, 1024);
+        else if (a == "--seed") o.render.seed = parse_int<std::uint64_t>(a, value(), 0, UINT64_MAX);
+        else if (a == "--preview") o.render.preview = true;
         else if (a == "--stats") o.stats = true;
-        else if (a == "--crop") o.crop = parse_crop(value());
+        else if (a == "--crop") o.render.crop = parse_crop(value());
         else if (a == "--aov") {
             const std::string& v = value();
-            if (v == "depth") o.aov = AovKind::Depth;
-            else if (v == "normal") o.aov = AovKind::Normal;
-            else if (v == "hits") o.aov = AovKind::Hits;
+            if (v == "depth") o.render.aov = render::Aov::Depth;
+            else if (v == "normal") o.render.aov = render::Aov::Normal;
+            else if (v == "hits") o.render.aov = render::Aov::Hits;
             else throw UsageError("--aov expects depth, normal or hits, got '" + v + "'");
         } else if (a == "--precision") {
             const std::string& v = value();
-            if (v == "double") o.double_precision = true;
-            else if (v == "float") o.double_precision = false;
+            if (v == "double") o.render.double_precision = true;
+            else if (v == "float") o.render.double_precision = false;
             else throw UsageError("--precision expects double or float, got '" + v + "'");
         } else if (a == "-D") parse_define(value(), o);
         else if (a.size() > 2 && a.rfind("-D", 0) == 0) parse_define(a.substr(2), o);
@@ -109,9 +109,9 @@ Options parse_options(const std::vector<std::string>& args) {
         else throw UsageError("more than one scene given ('" + o.scene + "' and '" + a + "')");
     }
     if (o.scene.empty()) throw UsageError(cmd + " needs a scene file");
-    if (o.crop && ((*o.crop)[2] > o.width || (*o.crop)[3] > o.height))
-        throw UsageError("--crop rectangle lies outside the " + std::to_string(o.width) + "x" +
-                         std::to_string(o.height) + " image");
+    if (o.render.crop && ((*o.render.crop)[2] > o.render.width || (*o.render.crop)[3] > o.render.height))
+        throw UsageError("--crop rectangle lies outside the " + std::to_string(o.render.width) + "x" +
+                         std::to_string(o.render.height) + " image");
     if (o.output.empty()) {
         std::string base = o.scene;
         std::size_t slash = base.find_last_of('/');

@@ -1,33 +1,26 @@
 // The kerf command line (docs/spec.md §7): parsed into plain data, no side effects.
 #pragma once
-#include <array>
-#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "interpreter/interpreter.hpp"
+#include "render/render.hpp"
 
 namespace kerf::cli {
 
 enum class Command { Render, Check, Dump, Help, Version };
-enum class AovKind { None, Depth, Normal, Hits };
 
+// The libraries' own option structs, filled from the arguments: the command
+// line never mirrors what the libraries already define.
 struct Options {
     Command command = Command::Help;
     std::string scene;
-    std::string output;  // empty: SCENE.png beside the scene
-    int width = 800, height = 600;
-    int spp = 1;
-    int threads = 0;  // 0: all cores
-    bool preview = false;
+    std::string output;  // after parsing: SCENE.png beside the scene unless -o
     bool stats = false;
-    bool double_precision = true;
-    std::uint64_t seed = 0;
-    AovKind aov = AovKind::None;
-    std::optional<std::array<int, 4>> crop;
     EvalOptions eval;
+    render::RenderOptions render;
 };
 
 // A bad command line: printed as "kerf: error: MESSAGE", exit status 2.

@@ -37,7 +37,7 @@ void Evaluator::parse_defines() {
         file->path = "-D " + name;
         file->text = name + " = " + text + ";";
         auto fail = [&](const std::string& msg) {
-            throw SourceError(SourceLoc{}, "-D " + name + "=" + text + ": " + msg);
+            throw DefineError("-D " + name + "=" + text + ": " + msg);
         };
         const ast::Expr* expr = nullptr;
         try {
@@ -75,7 +75,7 @@ scene::SceneGraph Evaluator::run(ast::Program program) {
             dyn_.push_back(DynVar{d.name, d.value});
             continue;
         }
-        if (!found) throw SourceError(SourceLoc{}, "-D " + d.name + ": the script has no top-level binding '" + d.name + "'");
+        if (!found) throw DefineError("-D " + d.name + ": the script has no top-level binding '" + d.name + "'");
     }
     eval_block(prog.stmts, root_, true);
     SourceLoc top{prog.file, 1, 1};

@@ -30,13 +30,21 @@ struct EvalOptions {
     std::function<void(const std::string&)> echo;  // receives "ECHO: ..." lines; default: stderr
 };
 
+// A -D value that does not parse, evaluate or name a top-level binding: a
+// command-line error (the CLI exits 2), reported as "<command line>: error:".
+class DefineError : public SourceError {
+public:
+    explicit DefineError(std::string message) : SourceError(SourceLoc{}, std::move(message)) {}
+};
+
 struct EvalResult {
     scene::SceneGraph graph;
     std::vector<Diagnostic> warnings;
 };
 
 // Parse and evaluate a script file. Throws IoError (unreadable file) or
-// SourceError (first syntax or evaluation error, located).
+// SourceError (first syntax or evaluation error, located; DefineError for a
+// bad -D value).
 EvalResult evaluate_file(const std::string& path, const EvalOptions& options = {});
 EvalResult evaluate_source(std::shared_ptr<const SourceFile> file, const EvalOptions& options = {});
 
