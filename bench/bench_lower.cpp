@@ -21,17 +21,17 @@
 #include "lower/lower.hpp"
 
 using namespace kerf;
-using scene::NodeKind;
-using scene::PrimKind;
+using graph::NodeKind;
+using csg::PrimKind;
 
 namespace {
 
 struct Builder {
-    scene::SceneGraph g;
+    graph::SceneGraph g;
     SourceLoc loc{std::make_shared<SourceFile>(SourceFile{"bench.sdl", ""}), 1, 1};
 
     std::uint32_t add(NodeKind k, std::initializer_list<std::uint32_t> kids, std::uint32_t index = 0) {
-        scene::Node n;
+        graph::Node n;
         n.kind = k;
         n.index = index;
         n.first_child = static_cast<std::uint32_t>(g.child_refs.size());
@@ -42,7 +42,7 @@ struct Builder {
         return static_cast<std::uint32_t>(g.nodes.size() - 1);
     }
     std::uint32_t prim(PrimKind k, std::initializer_list<double> p, std::uint32_t line) {
-        scene::Node n;
+        graph::Node n;
         n.kind = NodeKind::Primitive;
         n.prim = k;
         std::copy(p.begin(), p.end(), n.p);
@@ -57,7 +57,7 @@ struct Builder {
     }
 };
 
-scene::SceneGraph build(std::size_t leaves) {
+graph::SceneGraph build(std::size_t leaves) {
     Builder b;
     const std::size_t parts = leaves / 5;
     std::vector<std::uint32_t> top;
@@ -74,7 +74,7 @@ scene::SceneGraph build(std::size_t leaves) {
         const glm::dvec3 at(3.0 * double(i % side), 3.0 * double(i / side), 0);
         top.push_back(b.xform(glm::rotate(glm::translate(glm::dmat4(1), at), 0.01 * double(i), glm::dvec3(0, 0, 1)), part));
     }
-    scene::Node root;
+    graph::Node root;
     root.kind = NodeKind::Union;
     root.first_child = static_cast<std::uint32_t>(b.g.child_refs.size());
     root.child_count = static_cast<std::uint32_t>(top.size());
@@ -120,7 +120,7 @@ void fresh_memory_baseline(std::size_t bytes) {
 int main(int argc, char** argv) {
     const std::size_t leaves = argc > 1 ? std::strtoull(argv[1], nullptr, 10) : 1'000'000;
     const int runs = argc > 2 ? std::atoi(argv[2]) : 5;
-    const scene::SceneGraph graph = build(leaves);
+    const graph::SceneGraph graph = build(leaves);
     std::printf("graph: %zu nodes, peak RSS after building it %.0f MB\n", graph.nodes.size(), peak_rss_mb());
     fresh_memory_baseline(leaves * (sizeof(csg::Leaf) + 72 + sizeof(csg::Node)) * 6 / 5);
     std::vector<double> times, cpu;

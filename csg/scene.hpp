@@ -35,9 +35,19 @@ struct Affine {
     glm::dvec3 vector(const glm::dvec3& v) const { return linear * v; }
 };
 
-// Same canonical parameters as the interpreter's scene::PrimKind (see
-// interpreter/scene_graph.hpp); the renderer must not depend on the language.
-enum class PrimKind : std::uint8_t { Sphere, Box, Cylinder, Torus, Plane, Paraboloid, Hyperboloid, Mesh };
+// A primitive's kind and the meaning of its canonical parameters p[], the
+// same in the interpreter's scene graph and in Leaf (object space).
+enum class PrimKind : std::uint8_t {
+    Sphere,       // p[0] = radius; centred at the origin
+    Box,          // p[0..2] = min corner, p[3..5] = max corner
+    Cylinder,     // p[0] = z0, p[1] = z1 (> z0), p[2] = radius at z0, p[3] = radius at z1
+                  //   (frusta and cones too; at most one radius is 0)
+    Torus,        // p[0] = major R, p[1] = minor r (0 < r < R); XY plane, origin
+    Plane,        // p[0..2] = unit normal, p[3] = offset: {x : dot(n,x) <= offset}
+    Paraboloid,   // p[0] = h, p[1] = r: z >= h(x²+y²)/r², z <= h
+    Hyperboloid,  // p[0] = h, p[1] = r (radius at z = ±h/2), p[2] = waist (radius at z = 0)
+    Mesh,         // graph: index into SceneGraph::meshes; Leaf: Leaf::mesh
+};
 
 struct Leaf {
     PrimKind kind = PrimKind::Sphere;

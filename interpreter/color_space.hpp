@@ -3,7 +3,7 @@
 // `light(color=...)`, `background(...)` — is an sRGB-encoded display colour
 // in [0,1], as in OpenSCAD, CSS and every paint program, so `[0.5,0.5,0.5]`
 // looks like the mid grey a user picked. Shading needs linear light, so the
-// interpreter converts with srgb_to_linear() when it builds a scene::Material
+// interpreter converts with srgb_to_linear() when it builds a csg::Material
 // (whose colours are linear RGB) and the renderer encodes back to sRGB only
 // when it writes 8-bit images. Alpha is coverage, not light: never converted.
 #pragma once

@@ -474,7 +474,7 @@ void Evaluator::eval_stmt(const ast::Stmt& st, Scope& s, bool top_level) {
                     instantiate(st, s, top_level);
                     out_.group(mark, st.loc);
                     if (root_override_ < 0) {
-                        if (out_.mark() == mark) out_.make_node(mark, scene::NodeKind::Union, st.loc);
+                        if (out_.mark() == mark) out_.make_node(mark, graph::NodeKind::Union, st.loc);
                         root_override_ = out_.pending.back();
                     }
                     return;

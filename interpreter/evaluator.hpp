@@ -24,7 +24,7 @@
 
 #include "grammar/ast.hpp"
 #include "interpreter/interpreter.hpp"
-#include "interpreter/scene_builder.hpp"
+#include "interpreter/graph_builder.hpp"
 #include "interpreter/scope.hpp"
 #include "interpreter/value.hpp"
 
@@ -63,7 +63,7 @@ public:
     ~Evaluator();
 
     // Evaluates a whole parsed program (the main file).
-    scene::SceneGraph run(ast::Program program);
+    graph::SceneGraph run(ast::Program program);
 
     // Expressions (eval_expr.cpp).
     Value eval(const ast::Expr& e, Scope& s);
@@ -106,7 +106,7 @@ private:
     // builtin_modules.cpp: solids, booleans, transforms, appearance, scene.
     bool builtin_module(const ast::Stmt& st, Scope& s, bool top_level);
     Args match_args(const char* callee, std::initializer_list<const char*> names, const ast::Stmt& st, Scope& s);
-    void add_primitive(scene::PrimKind kind, std::initializer_list<double> p, const SourceLoc& loc,
+    void add_primitive(csg::PrimKind kind, std::initializer_list<double> p, const SourceLoc& loc,
                        std::uint32_t index = 0);
     void solid(std::string_view name, const ast::Stmt& st, Scope& s);
     void transform(std::string_view name, const ast::Stmt& st, Scope& s);
@@ -127,7 +127,7 @@ public:
 
 private:
     const EvalOptions& opt_;
-    SceneBuilder out_;
+    GraphBuilder out_;
     Scope root_;  // PI and other constants; parent of every file's scope
     std::vector<DynVar> dyn_;
     std::uint64_t depth_ = 0, steps_ = 0, iterations_ = 0, primitives_ = 0;
@@ -153,7 +153,7 @@ private:
     // Appearance: the innermost material, so color() inside material() keeps
     // the material's other parameters.
     struct CurrentMaterial {
-        scene::Material m;
+        csg::Material m;
         bool interior_set = false;
     };
     std::vector<CurrentMaterial> materials_;

@@ -61,7 +61,7 @@ void Evaluator::parse_defines() {
     }
 }
 
-scene::SceneGraph Evaluator::run(ast::Program program) {
+graph::SceneGraph Evaluator::run(ast::Program program) {
     programs_.push_back(std::move(program));
     const ast::Program& prog = programs_.back();
     parse_defines();
@@ -82,7 +82,7 @@ scene::SceneGraph Evaluator::run(ast::Program program) {
     if (root_override_ >= 0) {
         out_.pending.assign(1, static_cast<std::uint32_t>(root_override_));
     }
-    out_.graph.root = out_.make_node(0, scene::NodeKind::Union, top);
+    out_.graph.root = out_.make_node(0, graph::NodeKind::Union, top);
     out_.pending.clear();
     return std::move(out_.graph);
 }

@@ -38,7 +38,7 @@ public:
 };
 
 struct EvalResult {
-    scene::SceneGraph graph;
+    graph::SceneGraph graph;
     std::vector<Diagnostic> warnings;
 };
 

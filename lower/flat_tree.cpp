@@ -15,7 +15,7 @@ namespace {
 
 using csg::Aabb;
 using csg::kNone;
-using scene::NodeKind;
+using graph::NodeKind;
 
 // One scene-graph node being lowered: its context (transform and material
 // scope for its children) and the operands gathered so far.
@@ -42,9 +42,9 @@ public:
     // Leaves are written straight into the scene's vector (in creation order;
     // the emitter compacts away the pruned ones in place) so the largest
     // array of the scene is touched once.
-    TreeBuilder(const scene::SceneGraph& g, std::vector<csg::Leaf>& out) : leaves(out), g_(g) {
+    TreeBuilder(const graph::SceneGraph& g, std::vector<csg::Leaf>& out) : leaves(out), g_(g) {
         std::size_t prims = 0;
-        for (const scene::Node& n : g.nodes) prims += n.kind == NodeKind::Primitive;
+        for (const graph::Node& n : g.nodes) prims += n.kind == NodeKind::Primitive;
         reserve_huge(out, prims);
         reserve_huge(nodes, g.nodes.size());
     }
@@ -60,7 +60,7 @@ public:
         stack.push_back(open(g_.root, {}, kNone));
         for (;;) {
             Frame& f = stack.back();
-            const scene::Node& gn = g_.nodes[f.gnode];
+            const graph::Node& gn = g_.nodes[f.gnode];
             if (f.next_child < gn.child_count) {
                 const std::uint32_t c = child(gn, f.gnode, f.next_child++);
                 if (g_.nodes[c].kind == NodeKind::Primitive) {
@@ -79,9 +79,9 @@ public:
     }
 
 private:
-    const scene::SceneGraph& g_;
+    const graph::SceneGraph& g_;
 
-    std::uint32_t child(const scene::Node& gn, std::uint32_t parent, std::uint32_t i) const {
+    std::uint32_t child(const graph::Node& gn, std::uint32_t parent, std::uint32_t i) const {
         const std::size_t ref = std::size_t(gn.first_child) + i;
         // Children precede parents in the arena: checking it rules out cycles.
         if (ref >= g_.child_refs.size() || g_.child_refs[ref] >= parent)
@@ -90,7 +90,7 @@ private:
     }
 
     Frame open(std::uint32_t gnode, const csg::Affine& xf, std::uint32_t material) const {
-        const scene::Node& gn = g_.nodes[gnode];
+        const graph::Node& gn = g_.nodes[gnode];
         Frame f;
         f.gnode = gnode;
         f.kind = gn.kind;
@@ -109,14 +109,14 @@ private:
     }
 
     std::uint32_t make_leaf(std::uint32_t gnode, const csg::Affine& xf, std::uint32_t material) {
-        const scene::Node& gn = g_.nodes[gnode];
+        const graph::Node& gn = g_.nodes[gnode];
         csg::Leaf& leaf = leaves.emplace_back();
-        leaf.kind = static_cast<csg::PrimKind>(gn.prim);
+        leaf.kind = gn.prim;
         for (int i = 0; i < 6; ++i) leaf.p[i] = gn.p[i];
         leaf.material = material;
         leaf.source = gnode;
         const std::vector<glm::dvec3>* points = nullptr;
-        if (gn.prim == scene::PrimKind::Mesh) {
+        if (gn.prim == csg::PrimKind::Mesh) {
             if (gn.index >= g_.meshes.size())
                 throw std::invalid_argument("lower_to_csg: malformed scene graph (bad mesh index)");
             leaf.mesh = gn.index;
@@ -341,7 +341,7 @@ private:
 
 }  // namespace
 
-FlatTree build_flat_tree(const scene::SceneGraph& graph, std::vector<csg::Leaf>& leaves) {
+FlatTree build_flat_tree(const graph::SceneGraph& graph, std::vector<csg::Leaf>& leaves) {
     TreeBuilder builder(graph, leaves);
     FlatTree tree;
     tree.root = builder.build();

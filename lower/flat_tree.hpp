@@ -32,11 +32,11 @@ struct FlatTree {
 // order with their world matrices and boxes set, while material, mesh and
 // source still hold graph indices (material kNone = default, source = the
 // graph node). Throws SourceError for singular transforms.
-FlatTree build_flat_tree(const scene::SceneGraph& graph, std::vector<csg::Leaf>& leaves);
+FlatTree build_flat_tree(const graph::SceneGraph& graph, std::vector<csg::Leaf>& leaves);
 
 // Writes nodes/children in pre-order into `scene` (whose `leaves` are the
 // ones build_flat_tree filled), keeps only the leaves the tree uses, and
 // resolves materials, meshes and sources into the scene's tables.
-void emit_flat_tree(const scene::SceneGraph& graph, const FlatTree& tree, csg::Scene& scene);
+void emit_flat_tree(const graph::SceneGraph& graph, const FlatTree& tree, csg::Scene& scene);
 
 }  // namespace kerf::lowering

@@ -18,7 +18,7 @@ using csg::kNone;
 // materials, meshes and sources to only those the surviving leaves use.
 class Emitter {
 public:
-    Emitter(const scene::SceneGraph& g, const FlatTree& t, csg::Scene& s) : g_(g), t_(t), s_(s) {}
+    Emitter(const graph::SceneGraph& g, const FlatTree& t, csg::Scene& s) : g_(g), t_(t), s_(s) {}
 
     void emit(std::uint32_t root) {
         s_.materials.push_back(csg::Material{});  // 0: the default light grey
@@ -89,7 +89,7 @@ private:
         }
     }
 
-    const scene::SceneGraph& g_;
+    const graph::SceneGraph& g_;
     const FlatTree& t_;
     csg::Scene& s_;
     std::vector<std::uint32_t> material_map_, mesh_map_;
@@ -117,17 +117,8 @@ private:
     std::uint32_t material(std::uint32_t gm) {
         if (gm == kNone) return 0;
         if (material_map_[gm] == kNone) {
-            const scene::Material& m = g_.materials[gm];
-            csg::Material c;
-            c.color = m.color;
-            c.alpha = m.alpha;
-            c.interior = m.interior;
-            c.diffuse = m.diffuse;
-            c.specular = m.specular;
-            c.shininess = m.shininess;
-            c.reflect = m.reflect;
             material_map_[gm] = static_cast<std::uint32_t>(s_.materials.size());
-            s_.materials.push_back(c);
+            s_.materials.push_back(g_.materials[gm]);
         }
         return material_map_[gm];
     }
@@ -170,7 +161,7 @@ private:
 
 }  // namespace
 
-void emit_flat_tree(const scene::SceneGraph& graph, const FlatTree& tree, csg::Scene& scene) {
+void emit_flat_tree(const graph::SceneGraph& graph, const FlatTree& tree, csg::Scene& scene) {
     Emitter(graph, tree, scene).emit(tree.root);
 }
 

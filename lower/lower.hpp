@@ -9,6 +9,6 @@ namespace kerf {
 
 // Throws SourceError for scene-level problems it can locate (e.g. a
 // singular transform reaching a leaf).
-csg::Scene lower_to_csg(const scene::SceneGraph& graph);
+csg::Scene lower_to_csg(const graph::SceneGraph& graph);
 
 }  // namespace kerf

@@ -2,7 +2,7 @@
 
 namespace kerf {
 
-csg::Mesh lower_mesh(const scene::Mesh& mesh) {
+csg::Mesh lower_mesh(const graph::PolygonMesh& mesh) {
     csg::Mesh out;
     out.points = mesh.points;
     out.solid = mesh.solid;

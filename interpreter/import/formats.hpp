@@ -9,9 +9,9 @@
 
 namespace kerf::eval::mesh_format {
 
-scene::Mesh read_stl(std::string_view bytes, std::uint64_t max_faces);
-scene::Mesh read_obj(std::string_view bytes, std::uint64_t max_faces);
-scene::Mesh read_ply(std::string_view bytes, std::uint64_t max_faces);
+graph::PolygonMesh read_stl(std::string_view bytes, std::uint64_t max_faces);
+graph::PolygonMesh read_obj(std::string_view bytes, std::uint64_t max_faces);
+graph::PolygonMesh read_ply(std::string_view bytes, std::uint64_t max_faces);
 
 // Line number (1-based) of byte offset `at`, for text-format errors.
 std::size_t line_of(std::string_view bytes, std::size_t at);

@@ -86,7 +86,7 @@ std::string read_bytes(const std::string& path) {
     return bytes;
 }
 
-void validate(const scene::Mesh& m) {
+void validate(const graph::PolygonMesh& m) {
     if (m.faces.empty()) throw MeshFormatError("the file holds no faces");
     for (const glm::dvec3& p : m.points)
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
@@ -104,10 +104,10 @@ void validate(const scene::Mesh& m) {
 
 }  // namespace
 
-scene::Mesh import_mesh(const std::string& path, std::uint64_t max_faces) {
+graph::PolygonMesh import_mesh(const std::string& path, std::uint64_t max_faces) {
     std::string ext = std::filesystem::path(path).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    scene::Mesh m;
+    graph::PolygonMesh m;
     if (ext == ".stl") {
         m = mesh_format::read_stl(read_bytes(path), max_faces);
     } else if (ext == ".obj") {

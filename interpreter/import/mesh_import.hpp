@@ -1,6 +1,6 @@
 // import("file.stl" | "file.obj" | "file.ply"): reading triangle meshes from
 // files. The formats store faces counter-clockwise seen from outside; the
-// result is in scene::Mesh's OpenSCAD order (clockwise), like polyhedron().
+// result is in graph::PolygonMesh's OpenSCAD order (clockwise), like polyhedron().
 #pragma once
 #include <cstdint>
 #include <stdexcept>
@@ -19,6 +19,6 @@ struct MeshFormatError : std::runtime_error {
 // Reads the file by its extension (case-insensitive). Faces above max_faces
 // are an error, so a huge file cannot exhaust memory; every face has at least
 // 3 corners, every index is in range, every point is finite.
-scene::Mesh import_mesh(const std::string& path, std::uint64_t max_faces);
+graph::PolygonMesh import_mesh(const std::string& path, std::uint64_t max_faces);
 
 }  // namespace kerf::eval

@@ -7,8 +7,8 @@
 
 namespace kerf::eval::mesh_format {
 
-scene::Mesh read_obj(std::string_view bytes, std::uint64_t max_faces) {
-    scene::Mesh m;
+graph::PolygonMesh read_obj(std::string_view bytes, std::uint64_t max_faces) {
+    graph::PolygonMesh m;
     std::size_t line_start = 0;
     while (line_start < bytes.size()) {
         std::size_t eol = bytes.find('\n', line_start);

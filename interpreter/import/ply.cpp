@@ -143,11 +143,11 @@ Header read_header(std::string_view bytes) {
 
 }  // namespace
 
-scene::Mesh read_ply(std::string_view bytes, std::uint64_t max_faces) {
+graph::PolygonMesh read_ply(std::string_view bytes, std::uint64_t max_faces) {
     const Header h = read_header(bytes);
     const Format fmt = h.fmt;
     Body body(bytes, h.body_start, fmt);
-    scene::Mesh m;
+    graph::PolygonMesh m;
     for (const Element& e : h.elements) {
         const bool is_vertex = e.name == "vertex", is_face = e.name == "face";
         check_count(e.count, body.left(), fmt == Format::Ascii ? 2 : 1, e.name + " elements",

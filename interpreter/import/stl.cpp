@@ -23,9 +23,9 @@ float le_f32(const char* p) {
     return f;
 }
 
-scene::Mesh read_binary(std::string_view bytes, std::uint64_t count, std::uint64_t max_faces) {
+graph::PolygonMesh read_binary(std::string_view bytes, std::uint64_t count, std::uint64_t max_faces) {
     check_count(count, bytes.size() - 84, 50, "triangles", max_faces);
-    scene::Mesh m;
+    graph::PolygonMesh m;
     m.points.reserve(3 * count);
     m.faces.reserve(count);
     for (std::uint64_t t = 0; t < count; ++t) {
@@ -41,9 +41,9 @@ scene::Mesh read_binary(std::string_view bytes, std::uint64_t count, std::uint64
     return m;
 }
 
-scene::Mesh read_ascii(std::string_view bytes, std::uint64_t max_faces) {
+graph::PolygonMesh read_ascii(std::string_view bytes, std::uint64_t max_faces) {
     Tokens in(bytes);
-    scene::Mesh m;
+    graph::PolygonMesh m;
     in.expect("solid");
     in.skip_line();  // the solid's name
     for (;;) {
@@ -80,7 +80,7 @@ scene::Mesh read_ascii(std::string_view bytes, std::uint64_t max_faces) {
 
 }  // namespace
 
-scene::Mesh read_stl(std::string_view bytes, std::uint64_t max_faces) {
+graph::PolygonMesh read_stl(std::string_view bytes, std::uint64_t max_faces) {
     // A binary file's header may begin with "solid" too: the size decides,
     // and control bytes tell a broken binary file from a broken ASCII one.
     const bool text = std::none_of(bytes.begin(), bytes.end(), [](char c) {

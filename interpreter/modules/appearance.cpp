@@ -56,7 +56,7 @@ void Evaluator::appearance(std::string_view name, const ast::Stmt& st, Scope& s)
     materials_.pop_back();
     if (out_.mark() == mark) return;
     out_.graph.materials.push_back(cur.m);
-    out_.wrap(mark, scene::NodeKind::Appearance, static_cast<std::uint32_t>(out_.graph.materials.size() - 1), st.loc);
+    out_.wrap(mark, graph::NodeKind::Appearance, static_cast<std::uint32_t>(out_.graph.materials.size() - 1), st.loc);
 }
 
 void Evaluator::scene_statement(std::string_view name, const ast::Stmt& st, Scope& s, bool top_level) {
@@ -67,7 +67,7 @@ void Evaluator::scene_statement(std::string_view name, const ast::Stmt& st, Scop
         if (!st.body.empty()) arg_error(a, "takes no children");
         if (camera_loc_) throw SourceError(st.loc, "camera is already defined at line " + std::to_string(camera_loc_->line));
         if (!a.has(0)) arg_error(a, "position is required");
-        scene::Camera c;
+        csg::Camera c;
         c.position = arg_vec3(a, 0, "position", {0, 0, 0});
         c.look_at = arg_vec3(a, 1, "look_at", {0, 0, 0});
         c.up = arg_vec3(a, 2, "up", {0, 0, 1});
@@ -87,14 +87,13 @@ void Evaluator::scene_statement(std::string_view name, const ast::Stmt& st, Scop
             if (a.has(5)) arg_error(a, "height is only for projection = \"orthographic\"");
             if (!(c.fov > 0 && c.fov < 180)) arg_error(a, "fov must be between 0 and 180, got " + format_number(c.fov));
         }
-        c.loc = st.loc;
         g.camera = c;
         camera_loc_ = &st.loc;
     } else if (name == "light") {
         Args a = match_args("light", {"position", "direction", "color", "intensity"}, st, s);
         if (!st.body.empty()) arg_error(a, "takes no children");
         if (a.has(0) == a.has(1)) arg_error(a, "give position or direction (exactly one)");
-        scene::Light l;
+        csg::Light l;
         if (a.has(0)) {
             l.position = arg_vec3(a, 0, "position", {0, 0, 0});
         } else {
@@ -106,7 +105,6 @@ void Evaluator::scene_statement(std::string_view name, const ast::Stmt& st, Scop
         if (a.has(2)) l.color = glm::dvec3(arg_color(a, 2, "color"));
         l.intensity = arg_number(a, 3, "intensity", 1);
         if (l.intensity < 0) arg_error(a, "intensity must not be negative, got " + format_number(l.intensity));
-        l.loc = st.loc;
         g.lights.push_back(l);
     } else {
         Args a = match_args("background", {"color"}, st, s);

@@ -8,12 +8,12 @@
 
 namespace kerf::eval {
 
-void Evaluator::add_primitive(scene::PrimKind kind, std::initializer_list<double> p, const SourceLoc& loc,
+void Evaluator::add_primitive(csg::PrimKind kind, std::initializer_list<double> p, const SourceLoc& loc,
                               std::uint32_t index) {
     if (++primitives_ > opt_.limits.primitives)
         throw SourceError(loc, "primitive limit " + std::to_string(opt_.limits.primitives) + " exceeded");
-    scene::Node n;
-    n.kind = scene::NodeKind::Primitive;
+    graph::Node n;
+    n.kind = graph::NodeKind::Primitive;
     n.prim = kind;
     n.index = index;
     std::size_t i = 0;
@@ -40,7 +40,7 @@ std::optional<double> radius(const Args& a, std::size_t ri, std::size_t di, cons
 
 void Evaluator::solid(std::string_view name, const ast::Stmt& st, Scope& s) {
     const SourceLoc& loc = st.loc;
-    using P = scene::PrimKind;
+    using P = csg::PrimKind;
     if (name == "sphere") {
         Args a = match_args("sphere", {"r", "d"}, st, s);
         no_children(a);
@@ -124,7 +124,7 @@ void Evaluator::solid(std::string_view name, const ast::Stmt& st, Scope& s) {
         no_children(a);
         if (!a.has(0) || !a[0].is_list()) arg_error(a, "points must be a list of [x, y, z] points");
         if (!a.has(1) || !a[1].is_list()) arg_error(a, "faces must be a list of point index lists");
-        scene::Mesh mesh;
+        graph::PolygonMesh mesh;
         for (const Value& p : a[0].as_list()) {
             if (!p.is_vector(3)) arg_error(a, "points must be a list of [x, y, z] points, got an element " + to_repr(p));
             glm::dvec3 q(p.as_list()[0].as_number(), p.as_list()[1].as_number(), p.as_list()[2].as_number());
@@ -165,7 +165,7 @@ void Evaluator::import_solid(const ast::Stmt& st, Scope& s) {
     const std::string key = (solid ? "1|" : "0|") + path;
     auto it = imported_.find(key);
     if (it == imported_.end()) {
-        scene::Mesh mesh;
+        graph::PolygonMesh mesh;
         try {
             mesh = import_mesh(path, opt_.limits.list_elements);
         } catch (const MeshFormatError& e) {
@@ -175,7 +175,7 @@ void Evaluator::import_solid(const ast::Stmt& st, Scope& s) {
         out_.graph.meshes.push_back(std::move(mesh));
         it = imported_.emplace(key, static_cast<std::uint32_t>(out_.graph.meshes.size() - 1)).first;
     }
-    add_primitive(scene::PrimKind::Mesh, {}, st.loc, it->second);
+    add_primitive(csg::PrimKind::Mesh, {}, st.loc, it->second);
 }
 
 }  // namespace kerf::eval

@@ -81,7 +81,7 @@ glm::dmat4 rotate_matrix(const Args& a) {
 }  // namespace
 
 void Evaluator::transform(std::string_view name, const ast::Stmt& st, Scope& s) {
-    using NK = scene::NodeKind;
+    using NK = graph::NodeKind;
     std::size_t mark = out_.mark();
     if (name == "union" || name == "intersection" || name == "difference") {
         const char* callee = name == "union" ? "union" : name == "intersection" ? "intersection" : "difference";

@@ -50,30 +50,30 @@ inline std::string error_of(const std::string& text, EvalOptions opt = {}) {
 }
 
 struct Leaf {
-    scene::PrimKind prim;
+    csg::PrimKind prim;
     std::vector<double> p;
     glm::dmat4 world{1.0};
-    scene::Material material;
+    csg::Material material;
     bool has_material = false;
     std::uint32_t index = 0;
 };
 
 // Every primitive reachable from the root, with the product of the
 // transforms above it and the innermost appearance.
-inline void collect(const scene::SceneGraph& g, std::uint32_t id, const glm::dmat4& m, const scene::Material* mat,
+inline void collect(const graph::SceneGraph& g, std::uint32_t id, const glm::dmat4& m, const csg::Material* mat,
                     std::vector<Leaf>& out) {
-    const scene::Node& n = g.nodes.at(id);
+    const graph::Node& n = g.nodes.at(id);
     switch (n.kind) {
-        case scene::NodeKind::Primitive: {
-            Leaf l{n.prim, std::vector<double>(n.p, n.p + 6), m, mat ? *mat : scene::Material{}, mat != nullptr,
+        case graph::NodeKind::Primitive: {
+            Leaf l{n.prim, std::vector<double>(n.p, n.p + 6), m, mat ? *mat : csg::Material{}, mat != nullptr,
                    n.index};
             out.push_back(l);
             return;
         }
-        case scene::NodeKind::Transform:
+        case graph::NodeKind::Transform:
             collect(g, g.child_refs.at(n.first_child), m * g.matrices.at(n.index), mat, out);
             return;
-        case scene::NodeKind::Appearance:
+        case graph::NodeKind::Appearance:
             collect(g, g.child_refs.at(n.first_child), m, &g.materials.at(n.index), out);  // innermost wins
             return;
         default:
@@ -81,7 +81,7 @@ inline void collect(const scene::SceneGraph& g, std::uint32_t id, const glm::dma
     }
 }
 
-inline std::vector<Leaf> leaves(const scene::SceneGraph& g) {
+inline std::vector<Leaf> leaves(const graph::SceneGraph& g) {
     std::vector<Leaf> out;
     collect(g, g.root, glm::dmat4(1.0), nullptr, out);
     return out;
@@ -91,10 +91,10 @@ inline std::vector<Leaf> leaves_of(const std::string& text) { return leaves(run(
 
 // The shape of the tree as text: "U(D(sphere,T(cube)))" (U union, I
 // intersection, D difference, T transform, A appearance).
-inline std::string shape(const scene::SceneGraph& g, std::uint32_t id) {
-    const scene::Node& n = g.nodes.at(id);
+inline std::string shape(const graph::SceneGraph& g, std::uint32_t id) {
+    const graph::Node& n = g.nodes.at(id);
     static const char* prims[] = {"sphere", "box", "cylinder", "torus", "plane", "paraboloid", "hyperboloid", "mesh"};
-    if (n.kind == scene::NodeKind::Primitive) return prims[static_cast<int>(n.prim)];
+    if (n.kind == graph::NodeKind::Primitive) return prims[static_cast<int>(n.prim)];
     static const char* kinds[] = {"", "U", "I", "D", "T", "A"};
     std::string s = kinds[static_cast<int>(n.kind)];
     s += '(';

@@ -11,7 +11,7 @@
 
 using namespace kerf;
 using namespace kerf::test;
-using scene::PrimKind;
+using csg::PrimKind;
 
 namespace {
 

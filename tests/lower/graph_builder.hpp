@@ -14,15 +14,15 @@
 
 namespace kerf::test {
 
-using scene::NodeKind;
-using scene::PrimKind;
+using graph::NodeKind;
+using csg::PrimKind;
 
 struct GraphBuilder {
-    scene::SceneGraph g;
+    graph::SceneGraph g;
     std::shared_ptr<const SourceFile> file = std::make_shared<SourceFile>(SourceFile{"test.sdl", ""});
     std::uint32_t next_line = 1;
 
-    std::uint32_t add(scene::Node n, std::vector<std::uint32_t> kids = {}) {
+    std::uint32_t add(graph::Node n, std::vector<std::uint32_t> kids = {}) {
         n.first_child = static_cast<std::uint32_t>(g.child_refs.size());
         n.child_count = static_cast<std::uint32_t>(kids.size());
         for (auto k : kids) g.child_refs.push_back(k);
@@ -32,7 +32,7 @@ struct GraphBuilder {
     }
 
     std::uint32_t prim(PrimKind k, std::initializer_list<double> p) {
-        scene::Node n;
+        graph::Node n;
         n.kind = NodeKind::Primitive;
         n.prim = k;
         int i = 0;
@@ -48,7 +48,7 @@ struct GraphBuilder {
     std::uint32_t paraboloid(double h, double r) { return prim(PrimKind::Paraboloid, {h, r}); }
     std::uint32_t hyperboloid(double h, double r, double w) { return prim(PrimKind::Hyperboloid, {h, r, w}); }
     std::uint32_t mesh(std::uint32_t index) {
-        scene::Node n;
+        graph::Node n;
         n.kind = NodeKind::Primitive;
         n.prim = PrimKind::Mesh;
         n.index = index;
@@ -56,7 +56,7 @@ struct GraphBuilder {
     }
 
     std::uint32_t op(NodeKind k, std::vector<std::uint32_t> kids) {
-        scene::Node n;
+        graph::Node n;
         n.kind = k;
         return add(n, std::move(kids));
     }
@@ -65,7 +65,7 @@ struct GraphBuilder {
     std::uint32_t diff(std::vector<std::uint32_t> kids) { return op(NodeKind::Difference, std::move(kids)); }
 
     std::uint32_t xform(const glm::dmat4& m, std::uint32_t child) {
-        scene::Node n;
+        graph::Node n;
         n.kind = NodeKind::Transform;
         n.index = static_cast<std::uint32_t>(g.matrices.size());
         g.matrices.push_back(m);
@@ -77,24 +77,24 @@ struct GraphBuilder {
         return xform(glm::rotate(glm::dmat4(1), glm::radians(deg), axis), c);
     }
 
-    std::uint32_t material(const scene::Material& m) {
+    std::uint32_t material(const csg::Material& m) {
         g.materials.push_back(m);
         return static_cast<std::uint32_t>(g.materials.size() - 1);
     }
     std::uint32_t color(glm::dvec3 c, std::uint32_t child) {
-        scene::Material m;
+        csg::Material m;
         m.color = m.interior = c;
         return appearance(material(m), child);
     }
     std::uint32_t appearance(std::uint32_t material_index, std::uint32_t child) {
-        scene::Node n;
+        graph::Node n;
         n.kind = NodeKind::Appearance;
         n.index = material_index;
         return add(n, {child});
     }
 
     // The implicit top-level union.
-    scene::SceneGraph& finish(std::vector<std::uint32_t> top) {
+    graph::SceneGraph& finish(std::vector<std::uint32_t> top) {
         g.root = uni(std::move(top));
         return g;
     }

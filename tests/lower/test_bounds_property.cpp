@@ -35,14 +35,14 @@ void revolution(std::vector<glm::dvec3>& out, F profile, int nt, int na) {
     }
 }
 
-std::vector<glm::dvec3> surface_samples(scene::PrimKind k, const double* p) {
+std::vector<glm::dvec3> surface_samples(csg::PrimKind k, const double* p) {
     std::vector<glm::dvec3> s;
     const int n = 360;
     switch (k) {
-        case scene::PrimKind::Sphere:
+        case csg::PrimKind::Sphere:
             revolution(s, [&](double t) { const double th = kPi * t; return std::pair{p[0] * std::cos(th), p[0] * std::sin(th)}; }, n / 2, n);
             break;
-        case scene::PrimKind::Box:
+        case csg::PrimKind::Box:
             for (int i = 0; i <= 20; ++i)
                 for (int j = 0; j <= 20; ++j)
                     for (int f = 0; f < 3; ++f)
@@ -55,23 +55,23 @@ std::vector<glm::dvec3> surface_samples(scene::PrimKind k, const double* p) {
                             s.push_back(q);
                         }
             break;
-        case scene::PrimKind::Cylinder:
+        case csg::PrimKind::Cylinder:
             revolution(s, [&](double t) { return std::pair{p[0] + (p[1] - p[0]) * t, p[2] + (p[3] - p[2]) * t}; }, 40, n);
             revolution(s, [&](double t) { return std::pair{p[0], p[2] * t}; }, 10, n);
             revolution(s, [&](double t) { return std::pair{p[1], p[3] * t}; }, 10, n);
             break;
-        case scene::PrimKind::Torus:
+        case csg::PrimKind::Torus:
             for (int i = 0; i < n; ++i) {
                 const double v = 2 * kPi * i / n;
                 ring(s, p[1] * std::sin(v), p[0] + p[1] * std::cos(v), n);
             }
             break;
-        case scene::PrimKind::Paraboloid:
+        case csg::PrimKind::Paraboloid:
             // z = h s², rho = r s: the side; the cap disk at z = h.
             revolution(s, [&](double t) { return std::pair{p[0] * t * t, p[1] * t}; }, 200, n);
             revolution(s, [&](double t) { return std::pair{p[0], p[1] * t}; }, 10, n);
             break;
-        case scene::PrimKind::Hyperboloid: {
+        case csg::PrimKind::Hyperboloid: {
             const double h = p[0], r = p[1], w = p[2];
             revolution(s, [&](double t) {
                 const double z = h * (t - 0.5);
@@ -155,7 +155,7 @@ TEST_CASE("leaf boxes contain the transformed surface and touch it on every side
             chain.push_back(random_transform(rng));
             top = b.xform(chain.back(), top);
         }
-        const scene::Node prim = b.g.nodes[leaf_node];
+        const graph::Node prim = b.g.nodes[leaf_node];
         const csg::Scene s = lower_to_csg(b.finish({top}));
         REQUIRE(s.leaves.size() == 1);
         const csg::Aabb box = s.leaves[0].bounds;

@@ -18,23 +18,23 @@ using kerf::test::GraphBuilder;
 
 namespace {
 
-bool inside_primitive(scene::PrimKind k, const double* p, const glm::dvec3& u) {
+bool inside_primitive(csg::PrimKind k, const double* p, const glm::dvec3& u) {
     switch (k) {
-        case scene::PrimKind::Sphere: return glm::dot(u, u) <= p[0] * p[0];
-        case scene::PrimKind::Box:
+        case csg::PrimKind::Sphere: return glm::dot(u, u) <= p[0] * p[0];
+        case csg::PrimKind::Box:
             return u.x >= p[0] && u.x <= p[3] && u.y >= p[1] && u.y <= p[4] && u.z >= p[2] && u.z <= p[5];
-        case scene::PrimKind::Cylinder: {
+        case csg::PrimKind::Cylinder: {
             if (u.z < p[0] || u.z > p[1]) return false;
             const double r = p[2] + (p[3] - p[2]) * (u.z - p[0]) / (p[1] - p[0]);
             return std::hypot(u.x, u.y) <= r;
         }
-        case scene::PrimKind::Torus: {
+        case csg::PrimKind::Torus: {
             const double d = std::hypot(u.x, u.y) - p[0];
             return d * d + u.z * u.z <= p[1] * p[1];
         }
-        case scene::PrimKind::Plane: return p[0] * u.x + p[1] * u.y + p[2] * u.z <= p[3];
-        case scene::PrimKind::Paraboloid: return u.z <= p[0] && u.z >= p[0] * (u.x * u.x + u.y * u.y) / (p[1] * p[1]);
-        case scene::PrimKind::Hyperboloid: {
+        case csg::PrimKind::Plane: return p[0] * u.x + p[1] * u.y + p[2] * u.z <= p[3];
+        case csg::PrimKind::Paraboloid: return u.z <= p[0] && u.z >= p[0] * (u.x * u.x + u.y * u.y) / (p[1] * p[1]);
+        case csg::PrimKind::Hyperboloid: {
             if (std::abs(u.z) > p[0] / 2) return false;
             const double t = 2 * u.z / p[0];
             return u.x * u.x + u.y * u.y <= p[2] * p[2] + (p[1] * p[1] - p[2] * p[2]) * t * t;
@@ -43,26 +43,26 @@ bool inside_primitive(scene::PrimKind k, const double* p, const glm::dvec3& u) {
     }
 }
 
-bool graph_inside(const scene::SceneGraph& g, std::uint32_t n, const glm::dmat4& world_from_node, const glm::dvec3& x) {
-    const scene::Node& node = g.nodes[n];
+bool graph_inside(const graph::SceneGraph& g, std::uint32_t n, const glm::dmat4& world_from_node, const glm::dvec3& x) {
+    const graph::Node& node = g.nodes[n];
     auto kid = [&](std::uint32_t i) { return g.child_refs[node.first_child + i]; };
     switch (node.kind) {
-        case scene::NodeKind::Primitive:
+        case graph::NodeKind::Primitive:
             return inside_primitive(node.prim, node.p, glm::dvec3(glm::inverse(world_from_node) * glm::dvec4(x, 1)));
-        case scene::NodeKind::Intersection: {
+        case graph::NodeKind::Intersection: {
             if (node.child_count == 0) return false;
             for (std::uint32_t i = 0; i < node.child_count; ++i)
                 if (!graph_inside(g, kid(i), world_from_node, x)) return false;
             return true;
         }
-        case scene::NodeKind::Difference: {
+        case graph::NodeKind::Difference: {
             if (node.child_count == 0 || !graph_inside(g, kid(0), world_from_node, x)) return false;
             for (std::uint32_t i = 1; i < node.child_count; ++i)
                 if (graph_inside(g, kid(i), world_from_node, x)) return false;
             return true;
         }
         default: {
-            const glm::dmat4 m = node.kind == scene::NodeKind::Transform ? world_from_node * g.matrices[node.index] : world_from_node;
+            const glm::dmat4 m = node.kind == graph::NodeKind::Transform ? world_from_node * g.matrices[node.index] : world_from_node;
             for (std::uint32_t i = 0; i < node.child_count; ++i)
                 if (graph_inside(g, kid(i), m, x)) return true;
             return false;
@@ -76,7 +76,7 @@ bool csg_inside(const csg::Scene& s, std::uint32_t n, const glm::dvec3& x, int& 
     bool in = false;
     if (node.op == csg::Op::Leaf) {
         const csg::Leaf& l = s.leaves[node.first];
-        in = inside_primitive(static_cast<scene::PrimKind>(l.kind), l.p, l.object_from_world.point(x));
+        in = inside_primitive(static_cast<csg::PrimKind>(l.kind), l.p, l.object_from_world.point(x));
     } else {
         auto kid = [&](std::uint32_t i) { return csg_inside(s, s.children[node.first + i], x, outside_box); };
         if (node.op == csg::Op::Union) {
@@ -149,9 +149,9 @@ TEST_CASE("lowering preserves the solid point by point, and nodes' boxes contain
         RandomScene r(7000 + trial);
         std::vector<std::uint32_t> top;
         for (int i = 0, n = 1 + r.pick(3); i < n; ++i) top.push_back(r.tree(4));
-        const scene::SceneGraph& g = r.b.finish(top);
+        const graph::SceneGraph& g = r.b.finish(top);
         std::size_t prims = 0;
-        for (const auto& n : g.nodes) prims += n.kind == scene::NodeKind::Primitive;
+        for (const auto& n : g.nodes) prims += n.kind == graph::NodeKind::Primitive;
         const csg::Scene s = lower_to_csg(g);
         test::check_structure(s);
         pruned_something += s.leaves.size() < prims;

@@ -64,7 +64,7 @@ TEST_CASE("A - A is kept: showing it empty is the renderer's job") {
 
 TEST_CASE("empty operations follow docs/spec.md §4") {
     SECTION("union(), intersection(), difference() with no children are empty") {
-        for (auto k : {scene::NodeKind::Union, scene::NodeKind::Intersection, scene::NodeKind::Difference}) {
+        for (auto k : {graph::NodeKind::Union, graph::NodeKind::Intersection, graph::NodeKind::Difference}) {
             GraphBuilder b;
             const csg::Scene s = lower_to_csg(b.finish({b.op(k, {})}));
             CHECK(s.root == csg::kNone);
@@ -146,11 +146,11 @@ TEST_CASE("a plane at the top level makes the root unbounded; the camera frames 
 
 TEST_CASE("meshes: only used ones are set up, each once however many leaves use it") {
     GraphBuilder b;
-    scene::Mesh tet;
+    graph::PolygonMesh tet;
     tet.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
     // OpenSCAD order: clockwise seen from outside.
     tet.faces = {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}};
-    scene::Mesh quad = tet;
+    graph::PolygonMesh quad = tet;
     quad.faces.push_back({0, 1, 2, 3});
     b.g.meshes = {quad, tet};
     const auto top = b.uni({b.mesh(1), b.translate({3, 0, 0}, b.mesh(1)), b.inter({b.mesh(0), b.translate({9, 0, 0}, b.mesh(0))})});

@@ -11,11 +11,11 @@ using kerf::test::GraphBuilder;
 
 TEST_CASE("the innermost colour/material scope resolves to each leaf's material") {
     GraphBuilder b;
-    scene::Material glass;
+    csg::Material glass;
     glass.color = {0.1, 0.2, 0.9};
     glass.interior = {0.9, 0.1, 0.1};
     glass.reflect = 0.5;
-    const auto unused = b.material(scene::Material{});
+    const auto unused = b.material(csg::Material{});
     (void)unused;
     const auto glass_index = b.material(glass);
     // material(glass) { sphere; color(green) cube; } plus a bare cylinder
@@ -112,13 +112,13 @@ TEST_CASE("default lights: a key light above-left of the camera and a weak headl
 
 TEST_CASE("scene statements override the defaults") {
     GraphBuilder b;
-    scene::Camera cam;
+    csg::Camera cam;
     cam.position = {0, -10, 0};
     cam.look_at = {0, 0, 0};
     cam.orthographic = true;
     cam.height = 3;
     b.g.camera = cam;
-    scene::Light sun;
+    csg::Light sun;
     sun.directional = true;
     sun.direction = {0, 0, -1};
     sun.intensity = 0.7;

@@ -147,7 +147,7 @@ struct Measures {
     glm::dvec3 lo{1e300}, hi{-1e300};
 };
 
-Measures measure(const kerf::scene::Mesh& m) {
+Measures measure(const kerf::graph::PolygonMesh& m) {
     Measures r;
     for (const auto& f : m.faces)
         for (std::size_t i = 1; i + 1 < f.size(); ++i) {
@@ -180,7 +180,7 @@ TEST_CASE("every mesh encoding imports as the same closed cube in OpenSCAD's fac
         CHECK(r.graph.meshes[0].solid);
         auto leaves = kerf::test::leaves(r.graph);
         REQUIRE(leaves.size() == 1);
-        CHECK(leaves[0].prim == kerf::scene::PrimKind::Mesh);
+        CHECK(leaves[0].prim == kerf::csg::PrimKind::Mesh);
     }
 }
 

@@ -6,7 +6,7 @@
 
 #include "tests/interpreter/eval_helpers.hpp"
 
-using kerf::scene::PrimKind;
+using kerf::csg::PrimKind;
 using kerf::test::error_of;
 using kerf::test::leaves_of;
 using kerf::test::shape_of;
@@ -242,7 +242,7 @@ TEST_CASE("the scene graph lists children before parents", "[scene]") {
     auto r = kerf::test::run("difference() { cube(); translate([1, 1, 1]) color(\"red\") sphere(); }\nfor (i = [0:3]) cube();");
     const auto& g = r.graph;
     CHECK(g.root == g.nodes.size() - 1);
-    CHECK(g.nodes[g.root].kind == kerf::scene::NodeKind::Union);
+    CHECK(g.nodes[g.root].kind == kerf::graph::NodeKind::Union);
     for (std::uint32_t id = 0; id < g.nodes.size(); ++id)
         for (std::uint32_t i = 0; i < g.nodes[id].child_count; ++i) CHECK(g.child_refs[g.nodes[id].first_child + i] < id);
     CHECK(g.nodes[0].loc.line == 1);

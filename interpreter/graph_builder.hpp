@@ -11,9 +11,9 @@
 
 namespace kerf::eval {
 
-class SceneBuilder {
+class GraphBuilder {
 public:
-    scene::SceneGraph graph;
+    graph::SceneGraph graph;
     std::vector<std::uint32_t> pending;
 
     std::size_t mark() const { return pending.size(); }
@@ -33,7 +33,7 @@ public:
         graph.matrices.push_back(m);
     }
 
-    std::uint32_t add(scene::Node&& n) {
+    std::uint32_t add(graph::Node&& n) {
         grow(graph.nodes, max_nodes);
         graph.nodes.push_back(std::move(n));
         return static_cast<std::uint32_t>(graph.nodes.size() - 1);
@@ -41,8 +41,8 @@ public:
     void push(std::uint32_t id) { pending.push_back(id); }
 
     // One node of `kind` whose children are pending[mark..]; replaces them.
-    std::uint32_t make_node(std::size_t mark, scene::NodeKind kind, const SourceLoc& loc, std::uint32_t index = 0) {
-        scene::Node n;
+    std::uint32_t make_node(std::size_t mark, graph::NodeKind kind, const SourceLoc& loc, std::uint32_t index = 0) {
+        graph::Node n;
         n.kind = kind;
         n.index = index;
         n.first_child = static_cast<std::uint32_t>(graph.child_refs.size());
@@ -61,12 +61,12 @@ public:
     // a for loop, an if): nothing for no solid, the solid itself for one,
     // their union for several.
     void group(std::size_t mark, const SourceLoc& loc) {
-        if (pending.size() - mark > 1) make_node(mark, scene::NodeKind::Union, loc);
+        if (pending.size() - mark > 1) make_node(mark, graph::NodeKind::Union, loc);
     }
 
     // A transform or appearance over pending[mark..] (grouped first); nothing
     // when the block produced no solid.
-    void wrap(std::size_t mark, scene::NodeKind kind, std::uint32_t index, const SourceLoc& loc) {
+    void wrap(std::size_t mark, graph::NodeKind kind, std::uint32_t index, const SourceLoc& loc) {
         if (pending.size() == mark) return;
         group(mark, loc);
         make_node(mark, kind, loc, index);
