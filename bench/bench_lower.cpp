@@ -106,7 +106,7 @@ void fresh_memory_baseline(std::size_t bytes) {
     {
         std::vector<char> block;
         block.reserve(bytes);
-        advise_huge_pages(block.data(), bytes);
+        csg::advise_huge_pages(block.data(), bytes);
         std::memset(block.data(), 1, bytes);
         asm volatile("" : : "r"(block.data()) : "memory");
     }

@@ -6,11 +6,11 @@
 #include <sys/mman.h>
 #endif
 
-namespace kerf {
+namespace kerf::csg {
 
 void advise_huge_pages(void* data, std::size_t bytes) {
 #if defined(MADV_HUGEPAGE)
-    constexpr std::uintptr_t kHuge = std::uintptr_t(2) << 20;
+    constexpr std::uintptr_t kHuge = kHugePage;
     if (bytes < 2 * kHuge) return;
     const auto begin = reinterpret_cast<std::uintptr_t>(data);
     const std::uintptr_t lo = (begin + kHuge - 1) & ~(kHuge - 1);
@@ -22,4 +22,4 @@ void advise_huge_pages(void* data, std::size_t bytes) {
 #endif
 }
 
-}  // namespace kerf
+}  // namespace kerf::csg

@@ -6,8 +6,12 @@
 #include <cstddef>
 #include <vector>
 
-namespace kerf {
+namespace kerf::csg {
 
+constexpr std::size_t kHugePage = std::size_t(2) << 20;  // x86-64 transparent huge page
+
+// Advises huge pages over the whole 2 MiB pages inside [data, data + bytes);
+// blocks under two huge pages are left alone.
 void advise_huge_pages(void* data, std::size_t bytes);
 
 // Reserves `count` elements and advises huge pages over the whole buffer.
@@ -17,4 +21,4 @@ void reserve_huge(std::vector<T>& v, std::size_t count) {
     advise_huge_pages(v.data(), v.capacity() * sizeof(T));
 }
 
-}  // namespace kerf
+}  // namespace kerf::csg

@@ -8,26 +8,6 @@
 
 namespace kerf::eval {
 
-namespace {
-
-// Restores the dynamic `$` stack when a scope that may have pushed to it ends.
-struct DynRestore {
-    std::vector<Evaluator::DynVar>& dyn;
-    std::size_t size;
-    explicit DynRestore(std::vector<Evaluator::DynVar>& d) : dyn(d), size(d.size()) {}
-    ~DynRestore() { dyn.resize(size); }
-};
-
-bool is_dollar(std::string_view name) { return !name.empty() && name[0] == '$'; }
-
-std::string line_ref(const SourceLoc& here, const SourceLoc& there) {
-    if (there.file && here.file && there.file->path != here.file->path)
-        return there.file->path + ":" + std::to_string(there.line);
-    return "line " + std::to_string(there.line);
-}
-
-}  // namespace
-
 struct Evaluator::DepthGuard {
     Evaluator& ev;
     DepthGuard(Evaluator& e, const SourceLoc& loc) : ev(e) {

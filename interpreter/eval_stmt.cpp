@@ -14,21 +14,6 @@ namespace kerf::eval {
 
 namespace {
 
-struct DynRestore {
-    std::vector<Evaluator::DynVar>& dyn;
-    std::size_t size;
-    explicit DynRestore(std::vector<Evaluator::DynVar>& d) : dyn(d), size(d.size()) {}
-    ~DynRestore() { dyn.resize(size); }
-};
-
-bool is_dollar(std::string_view name) { return !name.empty() && name[0] == '$'; }
-
-std::string line_ref(const SourceLoc& here, const SourceLoc& there) {
-    if (there.file && here.file && there.file->path != here.file->path)
-        return there.file->path + ":" + std::to_string(there.line);
-    return "line " + std::to_string(there.line);
-}
-
 void check_unique(std::vector<const ast::Stmt*>& seen, const ast::Stmt& st, const char* what) {
     for (const ast::Stmt* prev : seen)
         if (prev->name == st.name)

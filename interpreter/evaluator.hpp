@@ -118,14 +118,6 @@ private:
     void count_iterations(std::uint64_t n, const SourceLoc& loc);
     struct DepthGuard;
 
-public:
-    // `$` variables: dynamically scoped as in OpenSCAD.
-    struct DynVar {
-        std::string_view name;
-        Value value;
-    };
-
-private:
     const EvalOptions& opt_;
     GraphBuilder out_;
     Scope root_;  // PI and other constants; parent of every file's scope

@@ -4,6 +4,7 @@
 // are not first-class values, so no definition can outlive its scope, and
 // `use`d files' scopes live as long as the evaluator.
 #pragma once
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -48,5 +49,30 @@ struct Scope {
         return nullptr;
     }
 };
+
+// `$` variables are dynamically scoped, as in OpenSCAD: one stack per
+// evaluator, pushed by bindings and calls, cut back when a scope ends.
+inline bool is_dollar(std::string_view name) { return !name.empty() && name[0] == '$'; }
+
+struct DynVar {
+    std::string_view name;
+    Value value;
+};
+
+// Restores the dynamic stack when a scope that may have pushed to it ends.
+struct DynRestore {
+    std::vector<DynVar>& dyn;
+    std::size_t size;
+    explicit DynRestore(std::vector<DynVar>& d) : dyn(d), size(d.size()) {}
+    ~DynRestore() { dyn.resize(size); }
+};
+
+// "line 4", or "lib.sdl:4" when `there` is in another file than `here`: how
+// "already defined at ..." messages name the earlier binding.
+inline std::string line_ref(const SourceLoc& here, const SourceLoc& there) {
+    if (there.file && here.file && there.file->path != here.file->path)
+        return there.file->path + ":" + std::to_string(there.line);
+    return "line " + std::to_string(there.line);
+}
 
 }  // namespace kerf::eval

@@ -45,8 +45,8 @@ public:
     TreeBuilder(const graph::SceneGraph& g, std::vector<csg::Leaf>& out) : leaves(out), g_(g) {
         std::size_t prims = 0;
         for (const graph::Node& n : g.nodes) prims += n.kind == NodeKind::Primitive;
-        reserve_huge(out, prims);
-        reserve_huge(nodes, g.nodes.size());
+        csg::reserve_huge(out, prims);
+        csg::reserve_huge(nodes, g.nodes.size());
     }
 
     std::vector<TNode> nodes;

@@ -25,8 +25,8 @@ public:
         material_map_.assign(g_.materials.size(), kNone);
         mesh_map_.assign(g_.meshes.size(), kNone);
         if (root != kNone) {
-            reserve_huge(s_.nodes, t_.nodes.size());
-            reserve_huge(s_.children, t_.nodes.size());
+            csg::reserve_huge(s_.nodes, t_.nodes.size());
+            csg::reserve_huge(s_.children, t_.nodes.size());
             emit_tree(root);
         }
         keep_emitted_leaves();

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "interpreter/builtins/support.hpp"
+#include "interpreter/degrees.hpp"
 
 namespace kerf::builtin {
 namespace {
@@ -17,34 +18,6 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kDegPerRad = 180.0 / std::numbers::pi;
 constexpr double kRadPerDeg = std::numbers::pi / 180.0;
-
-// sin of an angle in degrees, folded into [0°, 90°] first so the special
-// angles 0, 30, 45, 60, 90 (and every multiple) are exact.
-double sin_deg(double x) {
-    if (!std::isfinite(x)) return kNaN;
-    x = std::fmod(x, 360.0);
-    if (x < 0) x += 360.0;
-    bool negative = false;
-    if (x >= 180.0) {
-        x -= 180.0;
-        negative = true;
-    }
-    if (x > 90.0) x = 180.0 - x;
-    double s;
-    if (x == 0) s = 0;
-    else if (x == 30) s = 0.5;
-    else if (x == 45) s = std::numbers::sqrt2 / 2;
-    else if (x == 60) s = std::numbers::sqrt3 / 2;
-    else if (x == 90) s = 1;
-    else if (x < 45) s = std::sin(x * kRadPerDeg);
-    else s = std::cos((90.0 - x) * kRadPerDeg);  // accurate near 90°
-    return negative && s != 0 ? -s : s;          // never -0 (prints as "-0")
-}
-
-double cos_deg(double x) {
-    if (!std::isfinite(x)) return kNaN;
-    return sin_deg(std::fmod(x, 360.0) + 90.0);
-}
 
 // tan in degrees: exact at 0, 30, 45, 60 and their supplements; ±90 (mod
 // 180) is +inf, as in OpenSCAD.

@@ -1,10 +1,9 @@
 #include "interpreter/modules/args.hpp"
 
-#include "interpreter/color_space.hpp"
-
 #include <cctype>
 #include <cmath>
 
+#include "csg/srgb.hpp"
 #include "interpreter/modules/colors.hpp"
 
 namespace kerf::eval {
@@ -85,7 +84,7 @@ glm::dvec3 arg_vec3(const Args& a, std::size_t i, const char* name, glm::dvec3 f
 
 // Users write sRGB display colours (docs/language.md §10); materials, lights
 // and the background hold linear RGB, so every colour is converted here, once.
-static glm::dvec4 to_linear(glm::dvec4 c) { return glm::dvec4(srgb_to_linear(glm::dvec3(c)), c.a); }
+static glm::dvec4 to_linear(glm::dvec4 c) { return glm::dvec4(csg::srgb_to_linear(glm::dvec3(c)), c.a); }
 
 glm::dvec4 arg_color(const Args& a, std::size_t i, const char* name) {
     const Value& v = a[i];

@@ -3,7 +3,7 @@
 // the CSS specification defines, returned /255 without any transfer curve:
 // a name means exactly what the equivalent `[r, g, b]` literal means, and
 // the interpreter converts both to linear light the same way
-// (color_space.hpp).
+// (csg/srgb.hpp).
 #include "interpreter/modules/colors.hpp"
 
 #include <algorithm>

@@ -2,26 +2,13 @@
 // compose like OpenSCAD's: the statement's matrix applies to its block.
 #include <cmath>
 
+#include "interpreter/degrees.hpp"
 #include "interpreter/evaluator.hpp"
 #include "interpreter/modules/args.hpp"
 
 namespace kerf::eval {
 
 namespace {
-
-// Exact at multiples of 90° (and 30°/150°... for sin) so rotate(90) leaves
-// exact zeros, as OpenSCAD's sin_degrees does.
-double sin_deg(double deg) {
-    double r = std::fmod(deg, 360.0);
-    if (r < 0) r += 360.0;
-    if (r == 0 || r == 180) return 0;
-    if (r == 90) return 1;
-    if (r == 270) return -1;
-    if (r == 30 || r == 150) return 0.5;
-    if (r == 210 || r == 330) return -0.5;
-    return std::sin(r * (M_PI / 180.0));
-}
-double cos_deg(double deg) { return sin_deg(deg + 90.0); }
 
 glm::dmat4 rot_x(double d) {
     double c = cos_deg(d), s = sin_deg(d);

@@ -10,14 +10,14 @@
 #include <new>
 #include <vector>
 
-#include <sys/mman.h>
+#include "csg/huge_pages.hpp"
 
 namespace kerf::render {
 
 template <typename T>
 struct BigBufferAllocator {
     using value_type = T;
-    static constexpr std::size_t kHuge = std::size_t(2) << 20;
+    static constexpr std::size_t kHuge = csg::kHugePage;
 
     BigBufferAllocator() = default;
     template <typename U>
@@ -32,7 +32,7 @@ struct BigBufferAllocator {
         const std::size_t rounded = (bytes + kHuge - 1) / kHuge * kHuge;
         void* p = std::aligned_alloc(kHuge, rounded);
         if (!p) throw std::bad_alloc();
-        ::madvise(p, rounded, MADV_HUGEPAGE);  // a hint: failure only costs speed
+        csg::advise_huge_pages(p, rounded);  // a hint: failure only costs speed
         return static_cast<T*>(p);
     }
     void deallocate(T* p, std::size_t) noexcept { std::free(p); }

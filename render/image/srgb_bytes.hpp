@@ -1,12 +1,14 @@
-// Linear float -> 8-bit sRGB code, shared by the image writer (encoding a
-// float image) and the renderer (storing bytes directly for 8-bit output),
-// so both give the same byte for the same float.
+// Linear float -> 8-bit sRGB code by the one curve of csg/srgb.hpp, shared by
+// the image writer (encoding a float image) and the renderer (storing bytes
+// directly for 8-bit output), so both give the same byte for the same float.
 #pragma once
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <limits>
+
+#include "csg/srgb.hpp"
 
 namespace kerf::render {
 
@@ -22,7 +24,7 @@ struct SrgbTable {
     SrgbTable() {
         for (int k = 1; k <= 255; ++k) {
             const double e = (k - 0.5) / 255.0;
-            threshold[k - 1] = float(e <= 0.04045 ? e / 12.92 : std::pow((e + 0.055) / 1.055, 2.4));
+            threshold[k - 1] = float(csg::srgb_to_linear(e));
         }
         threshold[255] = std::numeric_limits<float>::infinity();
         int code = 0;

@@ -153,6 +153,18 @@ TEST_CASE("rotate: three forms, degrees, X then Y then Z", "[transforms]") {
     CHECK(error_of("rotate(45, [0, 0, 0]) sphere();") == "test.sdl:1:1: error: rotate: axis v must not be zero");
 }
 
+TEST_CASE("rotate() and a multmatrix written with sin()/cos() are the same solid, bit for bit", "[transforms]") {
+    // One sin_deg for rotate() and the built-ins: they used to disagree in
+    // the last bit at 45°, 30°, 75°, 120°, 225°... (two copies of it).
+    for (const std::string deg : {"45", "30", "75", "120", "225", "12", "22.5", "60", "-45", "405", "1000.5"}) {
+        const auto r = one("rotate(" + deg + ") sphere();");
+        const auto m = one("a = " + deg + "; multmatrix([[cos(a), -sin(a), 0, 0], [sin(a), cos(a), 0, 0], [0, 0, 1, 0]]) sphere();");
+        INFO("angle " << deg);
+        for (int c = 0; c < 4; ++c)
+            for (int k = 0; k < 4; ++k) CHECK(r.world[c][k] == m.world[c][k]);
+    }
+}
+
 TEST_CASE("booleans and transform grouping", "[transforms]") {
     CHECK(shape_of("difference() { cube(); sphere(); cylinder(); }") == "U(D(box,sphere,cylinder))");
     CHECK(shape_of("intersection() { cube(); sphere(); }") == "U(I(box,sphere))");

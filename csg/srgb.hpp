@@ -1,17 +1,18 @@
-// Colour encoding convention (docs/language.md, "Colours"): every colour a
+// The one sRGB curve of kerf. Colour convention (docs/language.md §10): every colour a
 // user writes — `color([r,g,b])`, `color("steelblue")`, `material(color=...)`,
 // `light(color=...)`, `background(...)` — is an sRGB-encoded display colour
 // in [0,1], as in OpenSCAD, CSS and every paint program, so `[0.5,0.5,0.5]`
 // looks like the mid grey a user picked. Shading needs linear light, so the
 // interpreter converts with srgb_to_linear() when it builds a csg::Material
-// (whose colours are linear RGB) and the renderer encodes back to sRGB only
-// when it writes 8-bit images. Alpha is coverage, not light: never converted.
+// (whose colours are linear RGB, as everything in the contract) and the
+// renderer encodes back to sRGB, with this same curve, only when it writes
+// 8-bit images (render/image/srgb_bytes.hpp). Alpha is coverage, not light: never converted.
 #pragma once
 #include <cmath>
 
 #include <glm/glm.hpp>
 
-namespace kerf {
+namespace kerf::csg {
 
 // IEC 61966-2-1 piecewise sRGB transfer function (not the 2.2 power
 // approximation): exact at 0 and 1, linear segment near black. Values outside
@@ -37,4 +38,4 @@ inline glm::dvec3 linear_to_srgb(glm::dvec3 c) {
     return {linear_to_srgb(c.x), linear_to_srgb(c.y), linear_to_srgb(c.z)};
 }
 
-}  // namespace kerf
+}  // namespace kerf::csg
