@@ -1,14 +1,9 @@
 // Statements: blocks and their bindings, modules and children(), for/let/
 // echo/assert/if, include and use.
-#include <filesystem>
 #include <optional>
 
 #include "grammar/parser.hpp"
 #include "interpreter/evaluator.hpp"
-
-#ifndef KERF_STDLIB_DIR
-#define KERF_STDLIB_DIR ""
-#endif
 
 namespace kerf::eval {
 
@@ -22,62 +17,9 @@ void check_unique(std::vector<const ast::Stmt*>& seen, const ast::Stmt& st, cons
     seen.push_back(&st);
 }
 
-std::string chain_text(const std::vector<std::string>& chain, const std::string& last) {
-    std::string out;
-    for (const std::string& p : chain) out += p + " -> ";
-    return out + last;
-}
-
 }  // namespace
 
-struct ChainEntry;
-
 // ---------------------------------------------------------------- files
-
-std::string Evaluator::resolve_path(const ast::Stmt& st) { return resolve_path(st.name, st.loc); }
-
-std::string Evaluator::resolve_path(const std::string& name_text, const SourceLoc& loc) {
-    namespace fs = std::filesystem;
-    fs::path name(name_text);
-    std::vector<fs::path> dirs;
-    if (name.is_absolute()) {
-        dirs.push_back(fs::path());
-    } else {
-        fs::path base = loc.file ? fs::path(loc.file->path).parent_path() : fs::path();
-        dirs.push_back(base.empty() ? fs::path(".") : base);
-        for (const std::string& d : opt_.include_dirs) dirs.emplace_back(d);
-        std::string stdlib = opt_.stdlib_dir.empty() ? std::string(KERF_STDLIB_DIR) : opt_.stdlib_dir;
-        if (!stdlib.empty()) dirs.emplace_back(stdlib);
-    }
-    for (const fs::path& d : dirs) {
-        fs::path p = d.empty() ? name : d / name;
-        std::error_code ec;
-        if (fs::is_regular_file(p, ec)) return p.lexically_normal().string();
-    }
-    throw SourceError(loc, "cannot find '" + name_text + "'");
-}
-
-const ast::Program& Evaluator::load_program(const std::string& path, const ast::Stmt& st) {
-    auto it = program_cache_.find(path);
-    if (it != program_cache_.end()) return *it->second;
-    std::shared_ptr<const SourceFile> file;
-    try {
-        file = read_source_file(path);
-    } catch (const IoError& e) {
-        throw SourceError(st.loc, e.what());
-    }
-    ParseLimits pl;
-    pl.max_nesting = opt_.limits.nesting;
-    programs_.push_back(parse_program(std::move(file), pl));
-    program_cache_[path] = &programs_.back();
-    return programs_.back();
-}
-
-static std::string canonical_key(const std::string& path) {
-    std::error_code ec;
-    auto c = std::filesystem::weakly_canonical(path, ec);
-    return ec ? path : c.string();
-}
 
 void Evaluator::flatten(const std::vector<ast::StmtPtr>& stmts, std::vector<const ast::Stmt*>& out) {
     for (const ast::StmtPtr& sp : stmts) {
@@ -86,46 +28,30 @@ void Evaluator::flatten(const std::vector<ast::StmtPtr>& stmts, std::vector<cons
             out.push_back(&st);
             continue;
         }
-        std::string path = resolve_path(st);
-        std::string key = canonical_key(path);
-        for (const std::string& c : include_chain_)
-            if (canonical_key(c) == key)
-                throw SourceError(st.loc, "include cycle: " + chain_text(include_chain_, path));
-        const ast::Program& prog = load_program(path, st);
-        include_chain_.push_back(path);
-        try {
-            flatten(prog.stmts, out);
-        } catch (...) {
-            include_chain_.pop_back();
-            throw;
-        }
-        include_chain_.pop_back();
+        const std::string path = files_.resolve(st.name, st.loc);
+        ChainGuard on_chain(files_.includes, path, st.loc);
+        flatten(files_.load(path, st.loc).stmts, out);
     }
 }
 
 Scope* Evaluator::load_use(const ast::Stmt& st) {
-    std::string path = resolve_path(st);
-    std::string key = canonical_key(path);
+    const std::string path = files_.resolve(st.name, st.loc);
+    const std::string key = Loader::identity(path);
     auto it = use_scopes_.find(key);
     if (it != use_scopes_.end()) return it->second.get();
-    for (const std::string& c : use_chain_)
-        if (canonical_key(c) == key) throw SourceError(st.loc, "use cycle: " + chain_text(use_chain_, path));
-    const ast::Program& prog = load_program(path, st);
-    std::vector<std::string> saved_includes;
-    saved_includes.swap(include_chain_);
-    include_chain_.push_back(path);
-    use_chain_.push_back(path);
+    ChainGuard on_chain(files_.uses, path, st.loc);
+    const ast::Program& prog = files_.load(path, st.loc);
+    // The used file's includes start a chain of their own.
+    std::vector<std::string> outer_includes;
+    files_.includes.swap(outer_includes);
+    struct Restore {
+        Loader::Chain& chain;
+        std::vector<std::string>& saved;
+        ~Restore() { chain.swap(saved); }
+    } restore{files_.includes, outer_includes};
+    ChainGuard in_file(files_.includes, path, st.loc);
     auto scope = std::make_unique<Scope>(&root_);
-    try {
-        const BlockInfo& info = prepare(prog.stmts);
-        bind_block(info, *scope, false);  // its solids are not used
-    } catch (...) {
-        use_chain_.pop_back();
-        include_chain_.swap(saved_includes);
-        throw;
-    }
-    use_chain_.pop_back();
-    include_chain_.swap(saved_includes);
+    bind_block(prepare(prog.stmts), *scope, false);  // its solids are not used
     Scope* raw = scope.get();
     use_scopes_[key] = std::move(scope);
     return raw;
@@ -136,14 +62,13 @@ Scope* Evaluator::load_use(const ast::Stmt& st) {
 const BlockInfo& Evaluator::prepare(const std::vector<ast::StmtPtr>& stmts) {
     auto it = blocks_.find(&stmts);
     if (it != blocks_.end()) return it->second;
-    bool pushed = false;
-    if (include_chain_.empty() && !stmts.empty() && stmts[0]->loc.file) {
-        include_chain_.push_back(stmts[0]->loc.file->path);
-        pushed = true;
-    }
+    // The main file is the first link of its include chain.
+    std::optional<ChainGuard> main_file;
+    if (files_.includes.empty() && !stmts.empty() && stmts[0]->loc.file)
+        main_file.emplace(files_.includes, stmts[0]->loc.file->path, stmts[0]->loc);
     std::vector<const ast::Stmt*> flat;
     BlockInfo info;
-    try {
+    {
         flatten(stmts, flat);
         std::vector<const ast::Stmt*> assigned;
         for (const ast::Stmt* st : flat) {
@@ -160,11 +85,7 @@ const BlockInfo& Evaluator::prepare(const std::vector<ast::StmtPtr>& stmts) {
                 default: info.children.push_back(st);
             }
         }
-    } catch (...) {
-        if (pushed) include_chain_.pop_back();
-        throw;
     }
-    if (pushed) include_chain_.pop_back();
     info.needs_scope = !info.assigns.empty() || !info.functions.empty() || !info.modules.empty() || !info.used.empty();
     return blocks_.emplace(&stmts, std::move(info)).first->second;
 }

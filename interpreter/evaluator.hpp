@@ -1,7 +1,7 @@
 // The tree-walking evaluator: expressions to Values, statements to scene
-// nodes. One Evaluator per run; it owns the included/used programs (so
-// every SourceLoc and AST pointer stays valid), the limit counters, the
-// dynamic `$` variables and the scene being built.
+// graph nodes. One Evaluator per run; it owns the run's files (its Loader
+// keeps every SourceLoc and AST pointer valid), the limit counters, the
+// dynamic `$` variables and the graph being built.
 //
 // Strictness decisions (docs/spec.md §3 leaves them to the implementation):
 // - A block's assignments run first, in source order, before its other
@@ -15,7 +15,6 @@
 // - Indexing out of range, or with a non-integer, is an error.
 #pragma once
 #include <cstdint>
-#include <deque>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -25,6 +24,7 @@
 #include "grammar/ast.hpp"
 #include "interpreter/interpreter.hpp"
 #include "interpreter/graph_builder.hpp"
+#include "interpreter/loader.hpp"
 #include "interpreter/scope.hpp"
 #include "interpreter/value.hpp"
 
@@ -92,10 +92,7 @@ private:
     void stmt_for(const ast::Stmt& st, std::size_t k, Scope& loop, Scope& s);
     void stmt_children(const ast::Stmt& st, Scope& s);
     Scope* load_use(const ast::Stmt& st);
-    std::string resolve_path(const ast::Stmt& st);
-    std::string resolve_path(const std::string& name, const SourceLoc& loc);
     void import_solid(const ast::Stmt& st, Scope& s);
-    const ast::Program& load_program(const std::string& path, const ast::Stmt& st);
 
     // Binding helpers (eval_stmt.cpp): `$` names go to the dynamic stack.
     void bind_params(const std::vector<ast::Binding>& params, const std::vector<ast::Binding>& args,
@@ -125,11 +122,8 @@ private:
     std::uint64_t depth_ = 0, steps_ = 0, iterations_ = 0, primitives_ = 0;
 
     std::unordered_map<const void*, BlockInfo> blocks_;
-    std::deque<ast::Program> programs_;                      // included/used files, kept alive
-    std::unordered_map<std::string, const ast::Program*> program_cache_;
-    std::vector<std::string> include_chain_;                 // for cycle errors
-    std::unordered_map<std::string, std::unique_ptr<Scope>> use_scopes_;
-    std::vector<std::string> use_chain_;
+    Loader files_;                                           // every parsed file, kept alive
+    std::unordered_map<std::string, std::unique_ptr<Scope>> use_scopes_;  // by Loader::identity
     std::unordered_map<std::string, std::uint32_t> imported_;  // "solid|path" → mesh index: a loop imports once
 
     // -D overrides of top-level bindings.
@@ -139,8 +133,6 @@ private:
         bool used = false;
     };
     std::vector<Define> defines_;
-    const void* main_block_ = nullptr;
-    std::deque<ast::Program> define_programs_;
 
     // Appearance: the innermost material, so color() inside material() keeps
     // the material's other parameters.

@@ -17,7 +17,7 @@ namespace kerf {
 
 namespace eval {
 
-Evaluator::Evaluator(const EvalOptions& options) : opt_(options) {
+Evaluator::Evaluator(const EvalOptions& options) : opt_(options), files_(options) {
     static const SourceLoc builtin_loc{};
     root_.vars.push_back(VarSlot{"PI", Value(M_PI), &builtin_loc, true});
     // Typical large scenes: a transform (and maybe an appearance) per leaf.
@@ -40,14 +40,15 @@ void Evaluator::parse_defines() {
             throw DefineError("-D " + name + "=" + text + ": " + msg);
         };
         const ast::Expr* expr = nullptr;
+        const ast::Program* parsed = nullptr;
         try {
             ParseLimits pl;
             pl.max_nesting = opt_.limits.nesting;
-            define_programs_.push_back(parse_program(file, pl));
+            parsed = &files_.keep(parse_program(file, pl));
         } catch (const SourceError& e) {
             fail(e.diagnostic().message);
         }
-        const ast::Program& p = define_programs_.back();
+        const ast::Program& p = *parsed;
         if (p.stmts.size() == 1 && p.stmts[0]->kind == ast::StmtKind::Assign && p.stmts[0]->name == name)
             expr = p.stmts[0]->value.get();
         if (!expr) fail("expected NAME=EXPRESSION");
@@ -62,8 +63,7 @@ void Evaluator::parse_defines() {
 }
 
 graph::SceneGraph Evaluator::run(ast::Program program) {
-    programs_.push_back(std::move(program));
-    const ast::Program& prog = programs_.back();
+    const ast::Program& prog = files_.keep(std::move(program));
     parse_defines();
     const BlockInfo& info = prepare(prog.stmts);
     for (const Define& d : defines_) {

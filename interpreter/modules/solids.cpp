@@ -161,7 +161,7 @@ void Evaluator::import_solid(const ast::Stmt& st, Scope& s) {
     no_children(a);
     if (!a.has(0) || !a[0].is_string()) arg_error(a, "file must be a string naming an .stl, .obj or .ply file");
     const bool solid = arg_bool(a, 1, "solid", true);
-    const std::string path = resolve_path(a[0].as_string(), st.loc);
+    const std::string path = files_.resolve(a[0].as_string(), st.loc);
     const std::string key = (solid ? "1|" : "0|") + path;
     auto it = imported_.find(key);
     if (it == imported_.end()) {

@@ -1,0 +1,71 @@
+#include "interpreter/loader.hpp"
+
+#include <filesystem>
+
+#ifndef KERF_STDLIB_DIR
+#define KERF_STDLIB_DIR ""
+#endif
+
+namespace kerf::eval {
+
+namespace fs = std::filesystem;
+
+std::string Loader::identity(const std::string& path) {
+    std::error_code ec;
+    auto c = fs::weakly_canonical(path, ec);
+    return ec ? path : c.string();
+}
+
+std::string Loader::resolve(const std::string& name_text, const SourceLoc& loc) const {
+    fs::path name(name_text);
+    std::vector<fs::path> dirs;
+    if (name.is_absolute()) {
+        dirs.push_back(fs::path());
+    } else {
+        fs::path base = loc.file ? fs::path(loc.file->path).parent_path() : fs::path();
+        dirs.push_back(base.empty() ? fs::path(".") : base);
+        for (const std::string& d : opt_.include_dirs) dirs.emplace_back(d);
+        std::string stdlib = opt_.stdlib_dir.empty() ? std::string(KERF_STDLIB_DIR) : opt_.stdlib_dir;
+        if (!stdlib.empty()) dirs.emplace_back(stdlib);
+    }
+    for (const fs::path& d : dirs) {
+        fs::path p = d.empty() ? name : d / name;
+        std::error_code ec;
+        if (fs::is_regular_file(p, ec)) return p.lexically_normal().string();
+    }
+    throw SourceError(loc, "cannot find '" + name_text + "'");
+}
+
+const ast::Program& Loader::load(const std::string& path, const SourceLoc& loc) {
+    auto it = cache_.find(path);
+    if (it != cache_.end()) return *it->second;
+    std::shared_ptr<const SourceFile> file;
+    try {
+        file = read_source_file(path);
+    } catch (const IoError& e) {
+        throw SourceError(loc, e.what());
+    }
+    ParseLimits pl;
+    pl.max_nesting = opt_.limits.nesting;
+    const ast::Program& p = keep(parse_program(std::move(file), pl));
+    cache_[path] = &p;
+    return p;
+}
+
+const ast::Program& Loader::keep(ast::Program program) {
+    programs_.push_back(std::move(program));
+    return programs_.back();
+}
+
+void Loader::Chain::enter(const std::string& path, const SourceLoc& loc) {
+    const std::string key = identity(path);
+    for (const std::string& c : paths_)
+        if (identity(c) == key) {
+            std::string text;
+            for (const std::string& p : paths_) text += p + " -> ";
+            throw SourceError(loc, std::string(what_) + " cycle: " + text + path);
+        }
+    paths_.push_back(path);
+}
+
+}  // namespace kerf::eval

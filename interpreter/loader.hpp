@@ -1,0 +1,63 @@
+// Files of a run: finding what include/use/import name (the including
+// file's folder, each -I folder, then kerf's stdlib/), parsing each file
+// once and keeping its AST alive for the whole run (every SourceLoc and AST
+// pointer the evaluator holds points into it), and the chains of files
+// being included or used, so a cycle is an error naming the chain.
+#pragma once
+#include <deque>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "grammar/parser.hpp"
+#include "interpreter/interpreter.hpp"
+
+namespace kerf::eval {
+
+class Loader {
+public:
+    explicit Loader(const EvalOptions& options) : opt_(options) {}
+
+    // The path of `name` as written at `loc`; "cannot find 'name'" otherwise.
+    std::string resolve(const std::string& name, const SourceLoc& loc) const;
+    // The parsed file at `path` (resolved), parsed on first use.
+    const ast::Program& load(const std::string& path, const SourceLoc& loc);
+    // One key per file, whatever the spelling (./a.sdl, d/../a.sdl, a symlink).
+    static std::string identity(const std::string& path);
+    // Keeps a program parsed elsewhere (the main file, -D values) alive.
+    const ast::Program& keep(ast::Program program);
+
+    // The files whose statements are being expanded (includes) or bound
+    // (uses), outermost first. enter() throws "include cycle: a -> b -> a"
+    // when `path` is already on the chain.
+    class Chain {
+    public:
+        explicit Chain(const char* what) : what_(what) {}
+        void enter(const std::string& path, const SourceLoc& loc);
+        void leave() { paths_.pop_back(); }
+        bool empty() const { return paths_.empty(); }
+        // A used file's includes start a chain of their own.
+        void swap(std::vector<std::string>& saved) { paths_.swap(saved); }
+
+    private:
+        const char* what_;
+        std::vector<std::string> paths_;
+    };
+    Chain includes{"include"}, uses{"use"};
+
+private:
+    const EvalOptions& opt_;
+    std::deque<ast::Program> programs_;
+    std::unordered_map<std::string, const ast::Program*> cache_;
+};
+
+// Leaves a chain when the scope that entered it ends, also by an exception.
+struct ChainGuard {
+    Loader::Chain& chain;
+    ChainGuard(Loader::Chain& c, const std::string& path, const SourceLoc& loc) : chain(c) { chain.enter(path, loc); }
+    ~ChainGuard() { chain.leave(); }
+    ChainGuard(const ChainGuard&) = delete;
+    ChainGuard& operator=(const ChainGuard&) = delete;
+};
+
+}  // namespace kerf::eval
