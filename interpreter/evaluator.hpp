@@ -25,6 +25,7 @@
 #include "interpreter/interpreter.hpp"
 #include "interpreter/graph_builder.hpp"
 #include "interpreter/loader.hpp"
+#include "interpreter/modules/state.hpp"
 #include "interpreter/scope.hpp"
 #include "interpreter/value.hpp"
 
@@ -46,7 +47,8 @@ struct BlockInfo {
     bool needs_scope = false;
 };
 
-// Arguments of a builtin module matched to its parameter names.
+// Arguments of a built-in module matched to its parameter names
+// (modules/module_call.hpp).
 struct Args {
     const char* callee;
     const ast::Stmt* call;
@@ -92,7 +94,6 @@ private:
     void stmt_for(const ast::Stmt& st, std::size_t k, Scope& loop, Scope& s);
     void stmt_children(const ast::Stmt& st, Scope& s);
     Scope* load_use(const ast::Stmt& st);
-    void import_solid(const ast::Stmt& st, Scope& s);
 
     // Binding helpers (eval_stmt.cpp): `$` names go to the dynamic stack.
     void bind_params(const std::vector<ast::Binding>& params, const std::vector<ast::Binding>& args,
@@ -100,15 +101,8 @@ private:
     void bind(Scope& s, std::string_view name, Value v, const SourceLoc* loc);
     void bind_sequential(const std::vector<ast::Binding>& bindings, Scope& s, const char* what);
 
-    // builtin_modules.cpp: solids, booleans, transforms, appearance, scene.
+    // modules/table.cpp: a built-in module call (false: no such module).
     bool builtin_module(const ast::Stmt& st, Scope& s, bool top_level);
-    Args match_args(const char* callee, std::initializer_list<const char*> names, const ast::Stmt& st, Scope& s);
-    void add_primitive(csg::PrimKind kind, std::initializer_list<double> p, const SourceLoc& loc,
-                       std::uint32_t index = 0);
-    void solid(std::string_view name, const ast::Stmt& st, Scope& s);
-    void transform(std::string_view name, const ast::Stmt& st, Scope& s);
-    void appearance(std::string_view name, const ast::Stmt& st, Scope& s);
-    void scene_statement(std::string_view name, const ast::Stmt& st, Scope& s, bool top_level);
 
     // Limits.
     void count_step(const SourceLoc& loc);
@@ -119,12 +113,11 @@ private:
     GraphBuilder out_;
     Scope root_;  // PI and other constants; parent of every file's scope
     std::vector<DynVar> dyn_;
-    std::uint64_t depth_ = 0, steps_ = 0, iterations_ = 0, primitives_ = 0;
+    std::uint64_t depth_ = 0, steps_ = 0, iterations_ = 0;
 
     std::unordered_map<const void*, BlockInfo> blocks_;
     Loader files_;                                           // every parsed file, kept alive
     std::unordered_map<std::string, std::unique_ptr<Scope>> use_scopes_;  // by Loader::identity
-    std::unordered_map<std::string, std::uint32_t> imported_;  // "solid|path" → mesh index: a loop imports once
 
     // -D overrides of top-level bindings.
     struct Define {
@@ -134,20 +127,12 @@ private:
     };
     std::vector<Define> defines_;
 
-    // Appearance: the innermost material, so color() inside material() keeps
-    // the material's other parameters.
-    struct CurrentMaterial {
-        csg::Material m;
-        bool interior_set = false;
-    };
-    std::vector<CurrentMaterial> materials_;
-
+    ModuleState modules_;              // what built-in modules remember
     std::int64_t root_override_ = -1;  // the first `!` subtree
-    const SourceLoc* camera_loc_ = nullptr;
-    const SourceLoc* background_loc_ = nullptr;
 
     void parse_defines();
     friend struct DepthGuard;
+    friend class ModuleCall;
 };
 
 }  // namespace kerf::eval

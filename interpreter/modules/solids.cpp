@@ -1,32 +1,14 @@
-// Primitive solids (docs/spec.md §4), validated and canonicalised as the PrimKind
-// comments in scene_graph.hpp say.
+// Primitive solids (docs/spec.md §4), validated and canonicalised as the
+// csg::PrimKind comments in csg/scene.hpp say.
 #include <cmath>
 
-#include "interpreter/evaluator.hpp"
 #include "interpreter/import/mesh_import.hpp"
 #include "interpreter/modules/args.hpp"
+#include "interpreter/modules/module_call.hpp"
 
 namespace kerf::eval {
 
-void Evaluator::add_primitive(csg::PrimKind kind, std::initializer_list<double> p, const SourceLoc& loc,
-                              std::uint32_t index) {
-    if (++primitives_ > opt_.limits.primitives)
-        throw SourceError(loc, "primitive limit " + std::to_string(opt_.limits.primitives) + " exceeded");
-    graph::Node n;
-    n.kind = graph::NodeKind::Primitive;
-    n.prim = kind;
-    n.index = index;
-    std::size_t i = 0;
-    for (double x : p) n.p[i++] = x;
-    n.loc = loc;
-    out_.push(out_.add(std::move(n)));
-}
-
 namespace {
-
-void no_children(const Args& a) {
-    if (!a.call->body.empty()) arg_error(a, "a solid takes no children");
-}
 
 // r or d (d/2); both is an error. Returns fallback when neither is given.
 std::optional<double> radius(const Args& a, std::size_t ri, std::size_t di, const char* rn, const char* dn) {
@@ -36,146 +18,159 @@ std::optional<double> radius(const Args& a, std::size_t ri, std::size_t di, cons
     return std::nullopt;
 }
 
-}  // namespace
+using P = csg::PrimKind;
 
-void Evaluator::solid(std::string_view name, const ast::Stmt& st, Scope& s) {
-    const SourceLoc& loc = st.loc;
-    using P = csg::PrimKind;
-    if (name == "sphere") {
-        Args a = match_args("sphere", {"r", "d"}, st, s);
-        no_children(a);
-        double r = radius(a, 0, 1, "r", "d").value_or(1);
-        if (!(r > 0)) arg_error(a, "radius must be positive, got " + format_number(r));
-        add_primitive(P::Sphere, {r}, loc);
-    } else if (name == "cube") {
-        Args a = match_args("cube", {"size", "center"}, st, s);
-        no_children(a);
-        glm::dvec3 size(1);
-        if (a.has(0) && a[0].is_number()) size = glm::dvec3(arg_number(a, 0, "size", 1));
-        else size = arg_vec3(a, 0, "size", size);
-        for (int k = 0; k < 3; ++k)
-            if (!(size[k] > 0)) arg_error(a, "size must be positive, got " + format_number(size[k]));
-        bool center = arg_bool(a, 1, "center", false);
-        glm::dvec3 lo = center ? -size / 2.0 : glm::dvec3(0);
-        glm::dvec3 hi = center ? size / 2.0 : size;
-        add_primitive(P::Box, {lo.x, lo.y, lo.z, hi.x, hi.y, hi.z}, loc);
-    } else if (name == "cylinder" || name == "cone") {
-        double h, r1, r2;
-        bool center;
-        if (name == "cylinder") {
-            Args a = match_args("cylinder", {"h", "r1", "r2", "center", "r", "d", "d1", "d2"}, st, s);
-            no_children(a);
-            h = arg_positive(a, 0, "h", 1);
-            auto general = radius(a, 4, 5, "r", "d");
-            auto end1 = radius(a, 1, 6, "r1", "d1");
-            auto end2 = radius(a, 2, 7, "r2", "d2");
-            if (general && (end1 || end2)) arg_error(a, "give r/d or r1/r2/d1/d2, not both");
-            r1 = end1.value_or(general.value_or(1));
-            r2 = end2.value_or(general.value_or(1));
-            center = arg_bool(a, 3, "center", false);
-            if (r1 < 0 || r2 < 0) arg_error(a, "radius must not be negative, got " + format_number(std::min(r1, r2)));
-            if (r1 == 0 && r2 == 0) arg_error(a, "radius must be positive, got 0");
-        } else {
-            Args a = match_args("cone", {"h", "r", "center", "d"}, st, s);
-            no_children(a);
-            h = arg_positive(a, 0, "h", 1);
-            r1 = radius(a, 1, 3, "r", "d").value_or(1);
-            if (!(r1 > 0)) arg_error(a, "radius must be positive, got " + format_number(r1));
-            r2 = 0;
-            center = arg_bool(a, 2, "center", false);
-        }
-        double z0 = center ? -h / 2 : 0;
-        add_primitive(P::Cylinder, {z0, z0 + h, r1, r2}, loc);
-    } else if (name == "torus") {
-        Args a = match_args("torus", {"R", "r"}, st, s);
-        no_children(a);
-        double R = arg_positive(a, 0, "R", 1);
-        double r = arg_positive(a, 1, "r", 0.25);
-        if (!(r < R))
-            arg_error(a, "minor radius r must be smaller than R, got r = " + format_number(r) + ", R = " +
-                             format_number(R));
-        add_primitive(P::Torus, {R, r}, loc);
-    } else if (name == "plane") {
-        Args a = match_args("plane", {"normal", "offset"}, st, s);
-        no_children(a);
-        glm::dvec3 n = arg_vec3(a, 0, "normal", {0, 0, 1});
-        double offset = arg_number(a, 1, "offset", 0);
-        double len = glm::length(n);
-        if (!(len > 0) || !std::isfinite(len)) arg_error(a, "normal must not be zero");
-        n /= len;
-        add_primitive(P::Plane, {n.x, n.y, n.z, offset / len}, loc);
-    } else if (name == "paraboloid") {
-        Args a = match_args("paraboloid", {"h", "r"}, st, s);
-        no_children(a);
-        double h = arg_positive(a, 0, "h", 1);
-        double r = arg_positive(a, 1, "r", 1);
-        add_primitive(P::Paraboloid, {h, r}, loc);
-    } else if (name == "hyperboloid") {
-        Args a = match_args("hyperboloid", {"h", "r", "waist"}, st, s);
-        no_children(a);
-        double h = arg_positive(a, 0, "h", 1);
-        double r = arg_positive(a, 1, "r", 1);
-        double w = arg_positive(a, 2, "waist", 0.5);
-        if (!(w < r))
-            arg_error(a, "waist must be smaller than r, got waist = " + format_number(w) + ", r = " + format_number(r));
-        add_primitive(P::Hyperboloid, {h, r, w}, loc);
-    } else if (name == "polyhedron") {
-        Args a = match_args("polyhedron", {"points", "faces", "convexity"}, st, s);
-        no_children(a);
-        if (!a.has(0) || !a[0].is_list()) arg_error(a, "points must be a list of [x, y, z] points");
-        if (!a.has(1) || !a[1].is_list()) arg_error(a, "faces must be a list of point index lists");
-        graph::PolygonMesh mesh;
-        for (const Value& p : a[0].as_list()) {
-            if (!p.is_vector(3)) arg_error(a, "points must be a list of [x, y, z] points, got an element " + to_repr(p));
-            glm::dvec3 q(p.as_list()[0].as_number(), p.as_list()[1].as_number(), p.as_list()[2].as_number());
-            if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z))
-                arg_error(a, "points must be finite, got " + to_repr(p));
-            mesh.points.push_back(q);
-        }
-        if (mesh.points.size() < 4) arg_error(a, "needs at least 4 points, got " + std::to_string(mesh.points.size()));
-        std::size_t fi = 0;
-        for (const Value& f : a[1].as_list()) {
-            if (!f.is_vector() || f.as_list().size() < 3)
-                arg_error(a, "face " + std::to_string(fi) + " must be a list of at least 3 point indices");
-            std::vector<std::uint32_t> face;
-            for (const Value& idx : f.as_list()) {
-                double d = idx.as_number();
-                if (d != std::floor(d) || d < 0 || d >= static_cast<double>(mesh.points.size()))
-                    arg_error(a, "face " + std::to_string(fi) + " refers to point " + format_number(d) + " (there are " +
-                                     std::to_string(mesh.points.size()) + " points)");
-                face.push_back(static_cast<std::uint32_t>(d));
-            }
-            mesh.faces.push_back(std::move(face));
-            ++fi;
-        }
-        if (mesh.faces.size() < 4) arg_error(a, "needs at least 4 faces, got " + std::to_string(mesh.faces.size()));
-        out_.graph.meshes.push_back(std::move(mesh));
-        add_primitive(P::Mesh, {}, loc, static_cast<std::uint32_t>(out_.graph.meshes.size() - 1));
-    } else {
-        import_solid(st, s);
-    }
+void sphere(ModuleCall& c) {
+    const Args& a = c.args;
+    double r = radius(a, 0, 1, "r", "d").value_or(1);
+    if (!(r > 0)) arg_error(a, "radius must be positive, got " + format_number(r));
+    c.add_primitive(P::Sphere, {r});
 }
 
-void Evaluator::import_solid(const ast::Stmt& st, Scope& s) {
-    Args a = match_args("import", {"file", "solid", "convexity"}, st, s);
-    no_children(a);
+void cube(ModuleCall& c) {
+    const Args& a = c.args;
+    glm::dvec3 size(1);
+    if (a.has(0) && a[0].is_number()) size = glm::dvec3(arg_number(a, 0, "size", 1));
+    else size = arg_vec3(a, 0, "size", size);
+    for (int k = 0; k < 3; ++k)
+        if (!(size[k] > 0)) arg_error(a, "size must be positive, got " + format_number(size[k]));
+    bool center = arg_bool(a, 1, "center", false);
+    glm::dvec3 lo = center ? -size / 2.0 : glm::dvec3(0);
+    glm::dvec3 hi = center ? size / 2.0 : size;
+    c.add_primitive(P::Box, {lo.x, lo.y, lo.z, hi.x, hi.y, hi.z});
+}
+
+void frustum(ModuleCall& c, double h, double r1, double r2, bool center) {
+    double z0 = center ? -h / 2 : 0;
+    c.add_primitive(P::Cylinder, {z0, z0 + h, r1, r2});
+}
+
+void cylinder(ModuleCall& c) {
+    const Args& a = c.args;
+    double h = arg_positive(a, 0, "h", 1);
+    auto general = radius(a, 4, 5, "r", "d");
+    auto end1 = radius(a, 1, 6, "r1", "d1");
+    auto end2 = radius(a, 2, 7, "r2", "d2");
+    if (general && (end1 || end2)) arg_error(a, "give r/d or r1/r2/d1/d2, not both");
+    double r1 = end1.value_or(general.value_or(1));
+    double r2 = end2.value_or(general.value_or(1));
+    bool center = arg_bool(a, 3, "center", false);
+    if (r1 < 0 || r2 < 0) arg_error(a, "radius must not be negative, got " + format_number(std::min(r1, r2)));
+    if (r1 == 0 && r2 == 0) arg_error(a, "radius must be positive, got 0");
+    frustum(c, h, r1, r2, center);
+}
+
+void cone(ModuleCall& c) {
+    const Args& a = c.args;
+    double h = arg_positive(a, 0, "h", 1);
+    double r = radius(a, 1, 3, "r", "d").value_or(1);
+    if (!(r > 0)) arg_error(a, "radius must be positive, got " + format_number(r));
+    frustum(c, h, r, 0, arg_bool(a, 2, "center", false));
+}
+
+void torus(ModuleCall& c) {
+    const Args& a = c.args;
+    double R = arg_positive(a, 0, "R", 1);
+    double r = arg_positive(a, 1, "r", 0.25);
+    if (!(r < R))
+        arg_error(a, "minor radius r must be smaller than R, got r = " + format_number(r) + ", R = " + format_number(R));
+    c.add_primitive(P::Torus, {R, r});
+}
+
+void plane(ModuleCall& c) {
+    const Args& a = c.args;
+    glm::dvec3 n = arg_vec3(a, 0, "normal", {0, 0, 1});
+    double offset = arg_number(a, 1, "offset", 0);
+    double len = glm::length(n);
+    if (!(len > 0) || !std::isfinite(len)) arg_error(a, "normal must not be zero");
+    n /= len;
+    c.add_primitive(P::Plane, {n.x, n.y, n.z, offset / len});
+}
+
+void paraboloid(ModuleCall& c) {
+    const Args& a = c.args;
+    double h = arg_positive(a, 0, "h", 1);
+    double r = arg_positive(a, 1, "r", 1);
+    c.add_primitive(P::Paraboloid, {h, r});
+}
+
+void hyperboloid(ModuleCall& c) {
+    const Args& a = c.args;
+    double h = arg_positive(a, 0, "h", 1);
+    double r = arg_positive(a, 1, "r", 1);
+    double w = arg_positive(a, 2, "waist", 0.5);
+    if (!(w < r))
+        arg_error(a, "waist must be smaller than r, got waist = " + format_number(w) + ", r = " + format_number(r));
+    c.add_primitive(P::Hyperboloid, {h, r, w});
+}
+
+void polyhedron(ModuleCall& c) {
+    const Args& a = c.args;
+    if (!a.has(0) || !a[0].is_list()) arg_error(a, "points must be a list of [x, y, z] points");
+    if (!a.has(1) || !a[1].is_list()) arg_error(a, "faces must be a list of point index lists");
+    graph::PolygonMesh mesh;
+    for (const Value& p : a[0].as_list()) {
+        if (!p.is_vector(3)) arg_error(a, "points must be a list of [x, y, z] points, got an element " + to_repr(p));
+        glm::dvec3 q(p.as_list()[0].as_number(), p.as_list()[1].as_number(), p.as_list()[2].as_number());
+        if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z))
+            arg_error(a, "points must be finite, got " + to_repr(p));
+        mesh.points.push_back(q);
+    }
+    if (mesh.points.size() < 4) arg_error(a, "needs at least 4 points, got " + std::to_string(mesh.points.size()));
+    std::size_t fi = 0;
+    for (const Value& f : a[1].as_list()) {
+        if (!f.is_vector() || f.as_list().size() < 3)
+            arg_error(a, "face " + std::to_string(fi) + " must be a list of at least 3 point indices");
+        std::vector<std::uint32_t> face;
+        for (const Value& idx : f.as_list()) {
+            double d = idx.as_number();
+            if (d != std::floor(d) || d < 0 || d >= static_cast<double>(mesh.points.size()))
+                arg_error(a, "face " + std::to_string(fi) + " refers to point " + format_number(d) + " (there are " +
+                                 std::to_string(mesh.points.size()) + " points)");
+            face.push_back(static_cast<std::uint32_t>(d));
+        }
+        mesh.faces.push_back(std::move(face));
+        ++fi;
+    }
+    if (mesh.faces.size() < 4) arg_error(a, "needs at least 4 faces, got " + std::to_string(mesh.faces.size()));
+    c.add_primitive(P::Mesh, {}, c.add_mesh(std::move(mesh)));
+}
+
+void import_file(ModuleCall& c) {
+    const Args& a = c.args;
     if (!a.has(0) || !a[0].is_string()) arg_error(a, "file must be a string naming an .stl, .obj or .ply file");
     const bool solid = arg_bool(a, 1, "solid", true);
-    const std::string path = files_.resolve(a[0].as_string(), st.loc);
+    const std::string path = c.files().resolve(a[0].as_string(), c.st.loc);
     const std::string key = (solid ? "1|" : "0|") + path;
-    auto it = imported_.find(key);
-    if (it == imported_.end()) {
+    auto it = c.state().imported.find(key);
+    if (it == c.state().imported.end()) {
         graph::PolygonMesh mesh;
         try {
-            mesh = import_mesh(path, opt_.limits.list_elements);
+            mesh = import_mesh(path, c.limits().list_elements);
         } catch (const MeshFormatError& e) {
-            throw SourceError(st.loc, "import(\"" + a[0].as_string() + "\"): " + e.what());
+            throw SourceError(c.st.loc, "import(\"" + a[0].as_string() + "\"): " + e.what());
         }
         mesh.solid = solid;
-        out_.graph.meshes.push_back(std::move(mesh));
-        it = imported_.emplace(key, static_cast<std::uint32_t>(out_.graph.meshes.size() - 1)).first;
+        it = c.state().imported.emplace(key, c.add_mesh(std::move(mesh))).first;
     }
-    add_primitive(csg::PrimKind::Mesh, {}, st.loc, it->second);
+    c.add_primitive(P::Mesh, {}, it->second);
 }
+
+const ModuleEntry kSolids[] = {
+    {"sphere", ModuleKind::Solid, {"r", "d"}, sphere},
+    {"cube", ModuleKind::Solid, {"size", "center"}, cube},
+    {"cylinder", ModuleKind::Solid, {"h", "r1", "r2", "center", "r", "d", "d1", "d2"}, cylinder},
+    {"cone", ModuleKind::Solid, {"h", "r", "center", "d"}, cone},
+    {"torus", ModuleKind::Solid, {"R", "r"}, torus},
+    {"plane", ModuleKind::Solid, {"normal", "offset"}, plane},
+    {"paraboloid", ModuleKind::Solid, {"h", "r"}, paraboloid},
+    {"hyperboloid", ModuleKind::Solid, {"h", "r", "waist"}, hyperboloid},
+    {"polyhedron", ModuleKind::Solid, {"points", "faces", "convexity"}, polyhedron},
+    {"import", ModuleKind::Solid, {"file", "solid", "convexity"}, import_file},
+};
+
+}  // namespace
+
+std::span<const ModuleEntry> solid_modules() { return kSolids; }
 
 }  // namespace kerf::eval

@@ -1,60 +1,92 @@
-// Dispatch of the builtin modules (docs/spec.md §4–§6) and their argument matching.
-#include <string_view>
+// One sorted table over the module groups, the dispatch of a call to its
+// entry, and the matching of arguments to parameters.
+#include <algorithm>
 
-#include "interpreter/evaluator.hpp"
+#include "interpreter/modules/args.hpp"
+#include "interpreter/modules/module_call.hpp"
 
 namespace kerf::eval {
 
-Args Evaluator::match_args(const char* callee, std::initializer_list<const char*> names, const ast::Stmt& st,
-                           Scope& s) {
-    Args a{callee, &st, std::vector<Value>(names.size()), std::vector<bool>(names.size(), false)};
+namespace {
+
+Args match_args(Evaluator& ev, const ModuleEntry& e, const ast::Stmt& st, Scope& s) {
+    const std::size_t n = e.params.size();
+    Args a{e.name, &st, std::vector<Value>(n), std::vector<bool>(n, false)};
     std::size_t positional = 0;
     for (const ast::Binding& b : st.args) {
-        std::size_t i = names.size();
+        std::size_t i = n;
         if (b.name.empty()) {
-            if (positional >= names.size())
-                throw SourceError(b.loc, std::string("too many arguments for '") + callee + "' (takes " +
-                                             std::to_string(names.size()) + ")");
+            if (positional >= n)
+                throw SourceError(b.loc, std::string("too many arguments for '") + e.name + "' (takes " +
+                                             std::to_string(n) + ")");
             i = positional++;
         } else {
             if (b.name[0] == '$') continue;  // $fn, $fa, $fs...: accepted and ignored
-            std::size_t j = 0;
-            for (const char* n : names) {
-                if (b.name == n) i = j;
-                ++j;
-            }
-            if (i == names.size())
-                throw SourceError(b.loc, "unknown argument '" + b.name + "' for '" + callee + "'");
+            for (std::size_t j = 0; j < n; ++j)
+                if (b.name == e.params[j]) i = j;
+            if (i == n) throw SourceError(b.loc, "unknown argument '" + b.name + "' for '" + e.name + "'");
         }
         if (a.given[i])
-            throw SourceError(b.loc, std::string("argument '") + names.begin()[i] + "' given twice to '" + callee + "'");
+            throw SourceError(b.loc, std::string("argument '") + e.params[i] + "' given twice to '" + e.name + "'");
         a.given[i] = true;
-        a.values[i] = b.value ? eval(*b.value, s) : Value();
+        a.values[i] = b.value ? ev.eval(*b.value, s) : Value();
     }
     return a;
 }
 
+}  // namespace
+
+const ModuleEntry* find_module(std::string_view name) {
+    static const std::vector<const ModuleEntry*> table = [] {
+        std::vector<const ModuleEntry*> all;
+        for (auto group : {solid_modules(), transform_modules(), appearance_modules(), setup_modules()})
+            for (const ModuleEntry& e : group) all.push_back(&e);
+        std::sort(all.begin(), all.end(),
+                  [](const ModuleEntry* a, const ModuleEntry* b) { return std::string_view(a->name) < b->name; });
+        return all;
+    }();
+    auto it = std::lower_bound(table.begin(), table.end(), name,
+                               [](const ModuleEntry* e, std::string_view n) { return e->name < n; });
+    return it != table.end() && (*it)->name == name ? *it : nullptr;
+}
+
 bool Evaluator::builtin_module(const ast::Stmt& st, Scope& s, bool top_level) {
-    std::string_view n = st.name;
-    if (n == "sphere" || n == "cube" || n == "cylinder" || n == "cone" || n == "torus" || n == "plane" ||
-        n == "paraboloid" || n == "hyperboloid" || n == "polyhedron" || n == "import") {
-        solid(n, st, s);
-        return true;
-    }
-    if (n == "union" || n == "intersection" || n == "difference" || n == "translate" || n == "rotate" ||
-        n == "scale" || n == "mirror" || n == "multmatrix" || n == "render" || n == "group") {
-        transform(n, st, s);
-        return true;
-    }
-    if (n == "color" || n == "material") {
-        appearance(n, st, s);
-        return true;
-    }
-    if (n == "camera" || n == "light" || n == "background") {
-        scene_statement(n, st, s, top_level);
-        return true;
-    }
-    return false;
+    const ModuleEntry* e = find_module(st.name);
+    if (!e) return false;
+    if (e->kind == ModuleKind::Setup && !top_level)
+        throw SourceError(st.loc, st.name + " is only allowed at the top level");
+    Args a = match_args(*this, *e, st, s);
+    if (e->kind != ModuleKind::Operation && !st.body.empty())
+        arg_error(a, e->kind == ModuleKind::Solid ? "a solid takes no children" : "takes no children");
+    ModuleCall call(*this, st, s, std::move(a));
+    e->handler(call);
+    return true;
+}
+
+void ModuleCall::children() { ev_.eval_block(st.body, scope, false); }
+GraphBuilder& ModuleCall::graph() { return ev_.out_; }
+ModuleState& ModuleCall::state() { return ev_.modules_; }
+Loader& ModuleCall::files() { return ev_.files_; }
+const EvalLimits& ModuleCall::limits() const { return ev_.opt_.limits; }
+
+void ModuleCall::add_primitive(csg::PrimKind kind, std::initializer_list<double> p, std::uint32_t index) {
+    const std::uint64_t limit = ev_.opt_.limits.primitives;
+    if (++state().primitives > limit)
+        throw SourceError(st.loc, "primitive limit " + std::to_string(limit) + " exceeded");
+    graph::Node n;
+    n.kind = graph::NodeKind::Primitive;
+    n.prim = kind;
+    n.index = index;
+    std::size_t i = 0;
+    for (double x : p) n.p[i++] = x;
+    n.loc = st.loc;
+    graph().push(graph().add(std::move(n)));
+}
+
+std::uint32_t ModuleCall::add_mesh(graph::PolygonMesh mesh) {
+    auto& meshes = graph().graph.meshes;
+    meshes.push_back(std::move(mesh));
+    return static_cast<std::uint32_t>(meshes.size() - 1);
 }
 
 }  // namespace kerf::eval

@@ -3,8 +3,8 @@
 #include <cmath>
 
 #include "interpreter/degrees.hpp"
-#include "interpreter/evaluator.hpp"
 #include "interpreter/modules/args.hpp"
+#include "interpreter/modules/module_call.hpp"
 
 namespace kerf::eval {
 
@@ -65,71 +65,103 @@ glm::dmat4 rotate_matrix(const Args& a) {
     return rot_axis(deg, v / len);
 }
 
+using NK = graph::NodeKind;
+
+// An operation node over the children's solids: union, intersection,
+// difference (an empty block still makes the empty solid).
+template <NK kind>
+void boolean(ModuleCall& c) {
+    std::size_t mark = c.graph().mark();
+    c.children();
+    c.graph().make_node(mark, kind, c.st.loc);
+}
+
+// render() and group() are OpenSCAD's: a plain union here.
+void plain_union(ModuleCall& c) {
+    std::size_t mark = c.graph().mark();
+    c.children();
+    c.graph().group(mark, c.st.loc);
+}
+
+// The children under world_from_child `m`; nothing when they make no solid.
+void transformed(ModuleCall& c, const glm::dmat4& m) {
+    GraphBuilder& g = c.graph();
+    std::size_t mark = g.mark();
+    c.children();
+    if (g.mark() == mark) return;
+    g.add_matrix(m);
+    g.wrap(mark, NK::Transform, static_cast<std::uint32_t>(g.graph.matrices.size() - 1), c.st.loc);
+}
+
+void translate(ModuleCall& c) {
+    glm::dmat4 m(1.0);
+    m[3] = glm::dvec4(arg_vec3(c.args, 0, "v", {0, 0, 0}, true), 1.0);
+    transformed(c, m);
+}
+
+void rotate(ModuleCall& c) { transformed(c, rotate_matrix(c.args)); }
+
+void scale(ModuleCall& c) {
+    const Args& a = c.args;
+    glm::dvec3 f(1);
+    if (a.has(0) && a[0].is_number()) f = glm::dvec3(arg_number(a, 0, "v", 1));
+    else f = arg_vec3(a, 0, "v", f, true, 1);
+    for (int k = 0; k < 3; ++k)
+        if (f[k] == 0) arg_error(a, "factor must not be 0");
+    glm::dmat4 m(1.0);
+    m[0][0] = f.x;
+    m[1][1] = f.y;
+    m[2][2] = f.z;
+    transformed(c, m);
+}
+
+void mirror(ModuleCall& c) {
+    const Args& a = c.args;
+    glm::dvec3 n = arg_vec3(a, 0, "v", {1, 0, 0}, true);
+    double n2 = glm::dot(n, n);
+    if (!(n2 > 0)) arg_error(a, "normal v must not be zero");
+    glm::dmat4 m(1.0);
+    for (int col = 0; col < 3; ++col)
+        for (int r = 0; r < 3; ++r) m[col][r] = (r == col ? 1.0 : 0.0) - 2 * n[r] * n[col] / n2;
+    transformed(c, m);
+}
+
+void multmatrix(ModuleCall& c) {
+    const Args& a = c.args;
+    if (!a.has(0)) arg_error(a, "m is required");
+    const Value& v = a[0];
+    bool ok = v.is_list() && (v.as_list().size() == 3 || v.as_list().size() == 4);
+    if (ok)
+        for (const Value& row : v.as_list()) ok = ok && row.is_vector(4);
+    if (!ok) arg_error(a, "m must be a 4x4 or 3x4 matrix of numbers");
+    const ValueList& rows = v.as_list();
+    glm::dmat4 m(1.0);
+    for (int r = 0; r < static_cast<int>(rows.size()); ++r)
+        for (int col = 0; col < 4; ++col) {
+            double x = rows[r].as_list()[col].as_number();
+            if (!std::isfinite(x)) arg_error(a, "m must be finite");
+            m[col][r] = x;
+        }
+    if (rows.size() == 4 && (m[0][3] != 0 || m[1][3] != 0 || m[2][3] != 0 || m[3][3] != 1))
+        arg_error(a, "the last row must be [0, 0, 0, 1] (only affine transforms are supported)");
+    transformed(c, m);
+}
+
+const ModuleEntry kTransforms[] = {
+    {"union", ModuleKind::Operation, {}, boolean<NK::Union>},
+    {"intersection", ModuleKind::Operation, {}, boolean<NK::Intersection>},
+    {"difference", ModuleKind::Operation, {}, boolean<NK::Difference>},
+    {"render", ModuleKind::Operation, {"convexity"}, plain_union},
+    {"group", ModuleKind::Operation, {"convexity"}, plain_union},
+    {"translate", ModuleKind::Operation, {"v"}, translate},
+    {"rotate", ModuleKind::Operation, {"a", "v"}, rotate},
+    {"scale", ModuleKind::Operation, {"v"}, scale},
+    {"mirror", ModuleKind::Operation, {"v"}, mirror},
+    {"multmatrix", ModuleKind::Operation, {"m"}, multmatrix},
+};
+
 }  // namespace
 
-void Evaluator::transform(std::string_view name, const ast::Stmt& st, Scope& s) {
-    using NK = graph::NodeKind;
-    std::size_t mark = out_.mark();
-    if (name == "union" || name == "intersection" || name == "difference") {
-        const char* callee = name == "union" ? "union" : name == "intersection" ? "intersection" : "difference";
-        match_args(callee, {}, st, s);
-        eval_block(st.body, s, false);
-        out_.make_node(mark, name == "union" ? NK::Union : name == "intersection" ? NK::Intersection : NK::Difference,
-                       st.loc);
-        return;
-    }
-    if (name == "render" || name == "group") {  // OpenSCAD's: a plain union here
-        match_args(name == "render" ? "render" : "group", {"convexity"}, st, s);
-        eval_block(st.body, s, false);
-        out_.group(mark, st.loc);
-        return;
-    }
-    glm::dmat4 m(1.0);
-    if (name == "translate") {
-        Args a = match_args("translate", {"v"}, st, s);
-        glm::dvec3 v = arg_vec3(a, 0, "v", {0, 0, 0}, true);
-        m[3] = glm::dvec4(v, 1.0);
-    } else if (name == "rotate") {
-        m = rotate_matrix(match_args("rotate", {"a", "v"}, st, s));
-    } else if (name == "scale") {
-        Args a = match_args("scale", {"v"}, st, s);
-        glm::dvec3 f(1);
-        if (a.has(0) && a[0].is_number()) f = glm::dvec3(arg_number(a, 0, "v", 1));
-        else f = arg_vec3(a, 0, "v", f, true, 1);
-        for (int k = 0; k < 3; ++k)
-            if (f[k] == 0) arg_error(a, "factor must not be 0");
-        m[0][0] = f.x;
-        m[1][1] = f.y;
-        m[2][2] = f.z;
-    } else if (name == "mirror") {
-        Args a = match_args("mirror", {"v"}, st, s);
-        glm::dvec3 n = arg_vec3(a, 0, "v", {1, 0, 0}, true);
-        double n2 = glm::dot(n, n);
-        if (!(n2 > 0)) arg_error(a, "normal v must not be zero");
-        for (int c = 0; c < 3; ++c)
-            for (int r = 0; r < 3; ++r) m[c][r] = (r == c ? 1.0 : 0.0) - 2 * n[r] * n[c] / n2;
-    } else {  // multmatrix
-        Args a = match_args("multmatrix", {"m"}, st, s);
-        if (!a.has(0)) arg_error(a, "m is required");
-        const Value& v = a[0];
-        bool ok = v.is_list() && (v.as_list().size() == 3 || v.as_list().size() == 4);
-        if (ok)
-            for (const Value& row : v.as_list()) ok = ok && row.is_vector(4);
-        if (!ok) arg_error(a, "m must be a 4x4 or 3x4 matrix of numbers");
-        const ValueList& rows = v.as_list();
-        for (int r = 0; r < static_cast<int>(rows.size()); ++r)
-            for (int c = 0; c < 4; ++c) {
-                double x = rows[r].as_list()[c].as_number();
-                if (!std::isfinite(x)) arg_error(a, "m must be finite");
-                m[c][r] = x;
-            }
-        if (rows.size() == 4 && (m[0][3] != 0 || m[1][3] != 0 || m[2][3] != 0 || m[3][3] != 1))
-            arg_error(a, "the last row must be [0, 0, 0, 1] (only affine transforms are supported)");
-    }
-    eval_block(st.body, s, false);
-    if (out_.mark() == mark) return;
-    out_.add_matrix(m);
-    out_.wrap(mark, NK::Transform, static_cast<std::uint32_t>(out_.graph.matrices.size() - 1), st.loc);
-}
+std::span<const ModuleEntry> transform_modules() { return kTransforms; }
 
 }  // namespace kerf::eval

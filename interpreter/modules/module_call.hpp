@@ -1,0 +1,67 @@
+// Built-in modules (docs/spec.md §4–§6) as one table: each entry is a name,
+// its kind, its parameters and a handler, so adding a solid is one entry.
+// The evaluator matches a call's arguments to the parameters (modules/
+// table.cpp), checks what the kind implies (solids and scene statements
+// take no children; scene statements are top level only), then runs the
+// handler with a ModuleCall: the matched arguments and the few evaluator
+// services a module needs.
+#pragma once
+#include <cstdint>
+#include <initializer_list>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "interpreter/evaluator.hpp"
+
+namespace kerf::eval {
+
+class ModuleCall {
+public:
+    ModuleCall(Evaluator& ev, const ast::Stmt& st, Scope& scope, Args args)
+        : st(st), scope(scope), args(std::move(args)), ev_(ev) {}
+
+    const ast::Stmt& st;
+    Scope& scope;
+    const Args args;
+
+    // Evaluates the statement's block of children (their nodes go on the
+    // builder's pending stack).
+    void children();
+    GraphBuilder& graph();
+    ModuleState& state();
+    Loader& files();
+    const EvalLimits& limits() const;
+    // A primitive node at the statement, counted against the limit.
+    void add_primitive(csg::PrimKind kind, std::initializer_list<double> p, std::uint32_t index = 0);
+    // The graph's index of a new mesh (for a Mesh primitive).
+    std::uint32_t add_mesh(graph::PolygonMesh mesh);
+
+private:
+    Evaluator& ev_;
+};
+
+enum class ModuleKind : std::uint8_t {
+    Solid,      // no children
+    Operation,  // booleans, transforms, appearance: apply to their children
+    Setup,      // camera, light, background: top level only, no children
+};
+
+struct ModuleEntry {
+    const char* name;
+    ModuleKind kind;
+    std::vector<const char*> params;  // positional order; named arguments by these names
+    void (*handler)(ModuleCall&);
+};
+
+// The entries of each group (solids.cpp, transforms.cpp, appearance.cpp,
+// setup.cpp); table.cpp merges them into one sorted table.
+std::span<const ModuleEntry> solid_modules();
+std::span<const ModuleEntry> transform_modules();
+std::span<const ModuleEntry> appearance_modules();
+std::span<const ModuleEntry> setup_modules();
+
+// The built-in module called `name`, or null.
+const ModuleEntry* find_module(std::string_view name);
+
+}  // namespace kerf::eval

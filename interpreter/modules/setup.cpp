@@ -1,0 +1,81 @@
+// The scene statements camera, light and background (docs/spec.md §6): top
+// level only, each of camera and background at most once.
+#include <cmath>
+
+#include "interpreter/modules/args.hpp"
+#include "interpreter/modules/module_call.hpp"
+
+namespace kerf::eval {
+
+namespace {
+
+void camera(ModuleCall& c) {
+    const Args& a = c.args;
+    ModuleState& state = c.state();
+    if (state.camera_loc)
+        throw SourceError(c.st.loc, "camera is already defined at line " + std::to_string(state.camera_loc->line));
+    if (!a.has(0)) arg_error(a, "position is required");
+    csg::Camera cam;
+    cam.position = arg_vec3(a, 0, "position", {0, 0, 0});
+    cam.look_at = arg_vec3(a, 1, "look_at", {0, 0, 0});
+    cam.up = arg_vec3(a, 2, "up", {0, 0, 1});
+    cam.fov = arg_number(a, 3, "fov", 40);
+    glm::dvec3 dir = cam.look_at - cam.position;
+    if (!(glm::length(dir) > 0)) arg_error(a, "position and look_at must differ");
+    if (!(glm::length(glm::cross(dir, cam.up)) > 1e-12 * glm::length(dir) * glm::length(cam.up)))
+        arg_error(a, "up must not be parallel to the view direction");
+    if (a.has(4)) {
+        if (!a[4].is_string() || (a[4].as_string() != "perspective" && a[4].as_string() != "orthographic"))
+            arg_error(a, "projection must be \"perspective\" or \"orthographic\"");
+        cam.orthographic = a[4].as_string() == "orthographic";
+    }
+    if (cam.orthographic) {
+        cam.height = arg_positive(a, 5, "height", 1);
+    } else {
+        if (a.has(5)) arg_error(a, "height is only for projection = \"orthographic\"");
+        if (!(cam.fov > 0 && cam.fov < 180)) arg_error(a, "fov must be between 0 and 180, got " + format_number(cam.fov));
+    }
+    c.graph().graph.camera = cam;
+    state.camera_loc = &c.st.loc;
+}
+
+void light(ModuleCall& c) {
+    const Args& a = c.args;
+    if (a.has(0) == a.has(1)) arg_error(a, "give position or direction (exactly one)");
+    csg::Light l;
+    if (a.has(0)) {
+        l.position = arg_vec3(a, 0, "position", {0, 0, 0});
+    } else {
+        l.directional = true;
+        glm::dvec3 d = arg_vec3(a, 1, "direction", {0, 0, -1});
+        if (!(glm::length(d) > 0)) arg_error(a, "direction must not be zero");
+        l.direction = d / glm::length(d);
+    }
+    if (a.has(2)) l.color = glm::dvec3(arg_color(a, 2, "color"));
+    l.intensity = arg_number(a, 3, "intensity", 1);
+    if (l.intensity < 0) arg_error(a, "intensity must not be negative, got " + format_number(l.intensity));
+    c.graph().graph.lights.push_back(l);
+}
+
+void background(ModuleCall& c) {
+    const Args& a = c.args;
+    ModuleState& state = c.state();
+    if (state.background_loc)
+        throw SourceError(c.st.loc,
+                          "background is already defined at line " + std::to_string(state.background_loc->line));
+    if (!a.has(0)) arg_error(a, "color is required");
+    c.graph().graph.background = glm::dvec3(arg_color(a, 0, "color"));
+    state.background_loc = &c.st.loc;
+}
+
+const ModuleEntry kSetup[] = {
+    {"camera", ModuleKind::Setup, {"position", "look_at", "up", "fov", "projection", "height"}, camera},
+    {"light", ModuleKind::Setup, {"position", "direction", "color", "intensity"}, light},
+    {"background", ModuleKind::Setup, {"color"}, background},
+};
+
+}  // namespace
+
+std::span<const ModuleEntry> setup_modules() { return kSetup; }
+
+}  // namespace kerf::eval
