@@ -1,0 +1,51 @@
+// The image a render fills: allocated once for the region (the crop or the
+// whole image), not zeroed (every value is written), and written pixel by
+// pixel in full-image coordinates. Colour goes in as linear floats, or, for
+// an 8-bit file, straight in as sRGB codes (RenderOptions::srgb8).
+#pragma once
+#include <array>
+#include <cstddef>
+
+#include <glm/glm.hpp>
+
+#include "render/image/image.hpp"
+#include "render/image/srgb_bytes.hpp"
+
+namespace kerf::render {
+
+class PixelStore {
+public:
+    PixelStore(Image& image, const std::array<int, 4>& region, int channels, ImageContent content, bool bytes)
+        : image_(image), x0_(region[0]), y0_(region[1]), bytes_(bytes), srgb_(srgb_table()) {
+        image.width = region[2] - region[0];
+        image.height = region[3] - region[1];
+        image.channels = channels;
+        image.content = content;
+        const std::size_t values = std::size_t(image.width) * image.height * channels;
+        if (bytes) image.srgb8.resize(values); else image.pixels.resize(values);
+    }
+
+    void color(int x, int y, const glm::dvec3& c) {
+        const std::size_t at = index(x, y);
+        if (bytes_) {
+            image_.srgb8[at] = srgb_byte(srgb_, float(c.x));
+            image_.srgb8[at + 1] = srgb_byte(srgb_, float(c.y));
+            image_.srgb8[at + 2] = srgb_byte(srgb_, float(c.z));
+        } else {
+            image_.pixels[at] = float(c.x), image_.pixels[at + 1] = float(c.y), image_.pixels[at + 2] = float(c.z);
+        }
+    }
+    // The float values of an AOV pixel.
+    float* values(int x, int y) { return &image_.pixels[index(x, y)]; }
+
+private:
+    std::size_t index(int x, int y) const {
+        return (std::size_t(y - y0_) * image_.width + std::size_t(x - x0_)) * image_.channels;
+    }
+    Image& image_;
+    int x0_, y0_;
+    bool bytes_;
+    const SrgbTable& srgb_;
+};
+
+}  // namespace kerf::render

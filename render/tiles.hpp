@@ -1,0 +1,70 @@
+// The image region in 32×32 tiles over a TBB arena's threads. Each tile
+// first asks whether all its rays miss the scene (tracer/tile_cull.cpp);
+// its pixels are then taken as misses without tracing (`traced` false), and
+// get what tracing would give, so a pixel's value never depends on which
+// tile it falls in (crops move tile borders).
+#pragma once
+#include <xmmintrin.h>
+#include <pmmintrin.h>
+
+#include <algorithm>
+#include <array>
+#include <functional>
+#include <mutex>
+
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include "render/camera.hpp"
+#include "render/shading.hpp"
+#include "render/tracer/tracer.hpp"
+
+namespace kerf::render {
+
+constexpr int kTile = 32;
+
+// Calls pixel(x, y, thread_state, traced) for every pixel of `region`, and
+// progress(fraction) after each tile, serialised.
+template <class Pixel>
+void for_each_tile(tbb::task_arena& arena, const std::array<int, 4>& region, const CameraModel& camera,
+                   const CsgTracer& tracer, tbb::enumerable_thread_specific<ThreadState>& states,
+                   const std::function<void(double)>& progress, Pixel&& pixel) {
+    const int width = region[2] - region[0], height = region[3] - region[1];
+    const int tiles_x = (width + kTile - 1) / kTile, tiles_y = (height + kTile - 1) / kTile;
+    const int tiles = tiles_x * tiles_y;
+    std::mutex progress_mutex;
+    int tiles_done = 0;
+    arena.execute([&] {
+        tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1), [&](const tbb::blocked_range<int>& r) {
+            // Denormals only slow the quartic solvers down; every thread uses
+            // the same mode, so results stay thread-count independent.
+            // The caller's thread may run tiles too: restore its mode after.
+            const unsigned saved_ftz = _MM_GET_FLUSH_ZERO_MODE(), saved_daz = _MM_GET_DENORMALS_ZERO_MODE();
+            _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
+            _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
+            ThreadState& ts = states.local();
+            for (int tile = r.begin(); tile != r.end(); ++tile) {
+                const int tx0 = region[0] + (tile % tiles_x) * kTile, ty0 = region[1] + (tile / tiles_x) * kTile;
+                const int tx1 = std::min(tx0 + kTile, region[2]), ty1 = std::min(ty0 + kTile, region[3]);
+                glm::dvec3 co[4], cd[4];  // the tile's corner rays, in order round it
+                camera.ray(tx0, ty0, co[0], cd[0]);
+                camera.ray(tx1, ty0, co[1], cd[1]);
+                camera.ray(tx1, ty1, co[2], cd[2]);
+                camera.ray(tx0, ty1, co[3], cd[3]);
+                const bool traced = !tracer.misses_all(co, cd);
+                for (int y = ty0; y < ty1; ++y)
+                    for (int x = tx0; x < tx1; ++x) pixel(x, y, ts, traced);
+                if (progress) {
+                    std::lock_guard<std::mutex> lock(progress_mutex);
+                    progress(double(++tiles_done) / tiles);
+                }
+            }
+            _MM_SET_FLUSH_ZERO_MODE(saved_ftz);
+            _MM_SET_DENORMALS_ZERO_MODE(saved_daz);
+        });
+    });
+}
+
+}  // namespace kerf::render
