@@ -13,17 +13,13 @@
 #include "grammar/source.hpp"
 #include "interpreter/interpreter.hpp"
 #include "lower/lower.hpp"
+#include "tests/fuzz/fuzz_limits.hpp"
 
 namespace {
 
 kerf::EvalOptions small_limits() {
     kerf::EvalOptions o;
-    o.limits.call_depth = 200;
-    o.limits.nesting = 64;
-    o.limits.loop_iterations = 100'000;
-    o.limits.list_elements = 100'000;
-    o.limits.primitives = 10'000;
-    o.limits.steps = 100'000;
+    o.limits = kerf::test::fuzz_limits();
     o.echo = [](const std::string&) {};  // keep the fuzzer's output readable
     return o;
 }

@@ -7,11 +7,11 @@
 #include <catch2/catch.hpp>
 
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "interpreter/interpreter.hpp"
+#include "tests/scripts/expectations.hpp"
 
 using namespace kerf;
 
@@ -44,18 +44,6 @@ std::vector<Snippet> sdl_blocks(const std::string& path) {
     return out;
 }
 
-// Text after each occurrence of `marker` up to the end of its line.
-std::vector<std::string> markers(const std::string& code, const std::string& marker) {
-    std::vector<std::string> out;
-    std::istringstream in(code);
-    std::string line;
-    while (std::getline(in, line)) {
-        auto p = line.find(marker);
-        if (p != std::string::npos) out.push_back(line.substr(p + marker.size()));
-    }
-    return out;
-}
-
 }  // namespace
 
 TEST_CASE("every sdl example in docs/language.md does what the text says", "[doc]") {
@@ -70,8 +58,8 @@ TEST_CASE("every sdl example in docs/language.md does what the text says", "[doc
         EvalOptions opt;
         opt.echo = [&](const std::string& l) { echoed.push_back(l); };
         std::vector<std::string> expected_echo;
-        for (const std::string& e : markers(b.code, "// ECHO: ")) expected_echo.push_back("ECHO: " + e);
-        auto errors = markers(b.code, "// error: ");
+        for (const std::string& e : test::markers(b.code, "// ECHO: ")) expected_echo.push_back("ECHO: " + e);
+        auto errors = test::markers(b.code, "// error: ");
         if (errors.empty()) {
             CHECK_NOTHROW(evaluate_source(file, opt));
         } else {
