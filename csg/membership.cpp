@@ -88,4 +88,36 @@ double surface_distance(const Leaf& leaf, const glm::dvec3& x) {
     return std::numeric_limits<double>::infinity();
 }
 
+namespace {
+
+bool node_contains(const Scene& s, std::uint32_t node, const glm::dvec3& p) {
+    const Node& n = s.nodes[node];
+    switch (n.op) {
+        case Op::Leaf: {
+            const Leaf& l = s.leaves[n.first];
+            return contains(l, l.object_from_world.point(p));
+        }
+        case Op::Union:
+            for (std::uint32_t k = 0; k < n.count; ++k)
+                if (node_contains(s, s.children[n.first + k], p)) return true;
+            return false;
+        case Op::Intersection:
+            for (std::uint32_t k = 0; k < n.count; ++k)
+                if (!node_contains(s, s.children[n.first + k], p)) return false;
+            return n.count > 0;
+        case Op::Difference:
+            if (n.count == 0 || !node_contains(s, s.children[n.first], p)) return false;
+            for (std::uint32_t k = 1; k < n.count; ++k)
+                if (node_contains(s, s.children[n.first + k], p)) return false;
+            return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+bool contains(const Scene& scene, const glm::dvec3& p_world) {
+    return scene.root != kNone && node_contains(scene, scene.root, p_world);
+}
+
 }  // namespace kerf::csg

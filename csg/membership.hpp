@@ -13,6 +13,11 @@ namespace kerf::csg {
 // always false (they have no analytic inequality).
 bool contains(const Leaf& leaf, const glm::dvec3& p_object);
 
+// True when the world point p is strictly inside the scene's solid: each
+// node's defining rule applied to its children (union: any; intersection:
+// all, and at least one child; difference: the minuend and no subtrahend).
+bool contains(const Scene& scene, const glm::dvec3& p_world);
+
 // Signed distance to the surface (negative inside): exact where simple
 // (sphere, box, torus, plane, cylinder/cone), otherwise max over the solid's
 // constraints of implicit value / gradient length, which is first-order

@@ -133,6 +133,7 @@ std::string format_diagnostic_head(const Diagnostic& d) {
     }
     out += d.severity == Severity::Error ? ": error: " : ": warning: ";
     out += clipped_message(d.message);
+    if (d.repeats > 1) out += " (" + std::to_string(d.repeats) + " times)";
     return out;
 }
 

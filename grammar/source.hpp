@@ -28,13 +28,15 @@ struct Diagnostic {
     Severity severity = Severity::Error;
     SourceLoc loc;
     std::string message;
+    std::uint64_t repeats = 1;  // a warning met again at the same place is one diagnostic
 };
 
 // "PATH:LINE:COL: error: MESSAGE" followed, when the text is known, by the
 // source line and a caret under the column (docs/spec.md §8). No trailing newline.
 std::string format_diagnostic(const Diagnostic& d);
 
-// The one-line head only ("PATH:LINE:COL: error: MESSAGE").
+// The one-line head only ("PATH:LINE:COL: error: MESSAGE"; a repeated
+// warning ends in " (N times)").
 std::string format_diagnostic_head(const Diagnostic& d);
 
 // The thrown form of a user-caused error: parse, evaluation and lowering

@@ -66,6 +66,10 @@ public:
 
     // Evaluates a whole parsed program (the main file).
     graph::SceneGraph run(ast::Program program);
+    // What kerf accepted but cannot honour (docs/spec.md §11): once per
+    // place and message, with a count when met again (a loop).
+    void warn(const SourceLoc& loc, std::string message);
+    std::vector<Diagnostic> take_warnings() { return std::move(warnings_); }
 
     // Expressions (eval_expr.cpp).
     Value eval(const ast::Expr& e, Scope& s);
@@ -128,6 +132,7 @@ private:
     std::vector<Define> defines_;
 
     ModuleState modules_;              // what built-in modules remember
+    std::vector<Diagnostic> warnings_;
     std::int64_t root_override_ = -1;  // the first `!` subtree
 
     void parse_defines();

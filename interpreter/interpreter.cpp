@@ -87,6 +87,15 @@ graph::SceneGraph Evaluator::run(ast::Program program) {
     return std::move(out_.graph);
 }
 
+void Evaluator::warn(const SourceLoc& loc, std::string message) {
+    for (Diagnostic& w : warnings_)
+        if (w.loc.file == loc.file && w.loc.line == loc.line && w.loc.col == loc.col && w.message == message) {
+            ++w.repeats;
+            return;
+        }
+    warnings_.push_back(Diagnostic{Severity::Warning, loc, std::move(message)});
+}
+
 }  // namespace eval
 
 namespace {
@@ -141,6 +150,7 @@ EvalResult evaluate_source(std::shared_ptr<const SourceFile> file, const EvalOpt
         ast::Program program = parse_program(file, pl);
         eval::Evaluator ev(options);
         result.graph = ev.run(std::move(program));
+        result.warnings = ev.take_warnings();
     });
     return result;
 }

@@ -16,6 +16,12 @@ using CurrentMaterial = ModuleState::CurrentMaterial;
 
 // An inner color() or material() starts from the enclosing material, so
 // `material(specular = 1) color("red") sphere();` keeps the specular.
+// Materials are opaque until transparency is rendered: say so where an
+// alpha below 1 is given rather than draw it opaque without a word.
+void check_alpha(ModuleCall& c, double alpha) {
+    if (alpha < 1) c.warn("alpha " + format_number(alpha) + " is ignored: kerf renders every solid opaque");
+}
+
 CurrentMaterial enclosing(ModuleCall& c) {
     auto& stack = c.state().materials;
     return stack.empty() ? CurrentMaterial{} : stack.back();
@@ -23,6 +29,7 @@ CurrentMaterial enclosing(ModuleCall& c) {
 
 // The children with `cur` as the innermost appearance.
 void appear(ModuleCall& c, const CurrentMaterial& cur) {
+
     GraphBuilder& g = c.graph();
     std::size_t mark = g.mark();
     auto& stack = c.state().materials;
@@ -43,6 +50,7 @@ void color(ModuleCall& c) {
     if (!a.has(0)) arg_error(a, "c is required");
     glm::dvec4 col = arg_color(a, 0, "c");
     if (a.has(1)) col.a = unit_interval(a, 1, "alpha", 1);
+    check_alpha(c, col.a);
     cur.m.color = glm::dvec3(col);
     cur.m.alpha = col.a;
     if (!cur.interior_set) cur.m.interior = cur.m.color;
@@ -54,6 +62,7 @@ void material(ModuleCall& c) {
     CurrentMaterial cur = enclosing(c);
     if (a.has(0)) {
         glm::dvec4 col = arg_color(a, 0, "color");
+        check_alpha(c, col.a);
         cur.m.color = glm::dvec3(col);
         cur.m.alpha = col.a;
         if (!cur.interior_set) cur.m.interior = cur.m.color;

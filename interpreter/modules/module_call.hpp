@@ -34,6 +34,8 @@ public:
     const EvalLimits& limits() const;
     // A primitive node at the statement, counted against the limit.
     void add_primitive(csg::PrimKind kind, std::initializer_list<double> p, std::uint32_t index = 0);
+    // A warning at the statement (Evaluator::warn).
+    void warn(std::string message);
     // The graph's index of a new mesh (for a Mesh primitive).
     std::uint32_t add_mesh(graph::PolygonMesh mesh);
 

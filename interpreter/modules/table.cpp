@@ -83,6 +83,8 @@ void ModuleCall::add_primitive(csg::PrimKind kind, std::initializer_list<double>
     graph().push(graph().add(std::move(n)));
 }
 
+void ModuleCall::warn(std::string message) { ev_.warn(st.loc, std::string(args.callee) + ": " + std::move(message)); }
+
 std::uint32_t ModuleCall::add_mesh(graph::PolygonMesh mesh) {
     auto& meshes = graph().graph.meshes;
     meshes.push_back(std::move(mesh));

@@ -108,33 +108,7 @@ private:
     std::mt19937_64 rng_;
 };
 
-// Strict point membership of the CSG expression (boundaries are outside).
-inline bool csg_contains(const csg::Scene& s, std::uint32_t node, const glm::dvec3& p) {
-    const csg::Node& n = s.nodes[node];
-    switch (n.op) {
-        case csg::Op::Leaf: {
-            const csg::Leaf& l = s.leaves[n.first];
-            return csg::contains(l, l.object_from_world.point(p));
-        }
-        case csg::Op::Union:
-            for (std::uint32_t k = 0; k < n.count; ++k)
-                if (csg_contains(s, s.children[n.first + k], p)) return true;
-            return false;
-        case csg::Op::Intersection:
-            for (std::uint32_t k = 0; k < n.count; ++k)
-                if (!csg_contains(s, s.children[n.first + k], p)) return false;
-            return n.count > 0;
-        case csg::Op::Difference:
-            if (n.count == 0 || !csg_contains(s, s.children[n.first], p)) return false;
-            for (std::uint32_t k = 1; k < n.count; ++k)
-                if (csg_contains(s, s.children[n.first + k], p)) return false;
-            return true;
-    }
-    return false;
-}
-
-inline bool csg_contains(const csg::Scene& s, const glm::dvec3& p) {
-    return s.root != csg::kNone && csg_contains(s, s.root, p);
-}
+// Strict point membership of the whole CSG expression (csg/membership.hpp).
+inline bool csg_contains(const csg::Scene& s, const glm::dvec3& p) { return csg::contains(s, p); }
 
 }  // namespace kerf::test

@@ -1,7 +1,8 @@
 // Expectations written in a script's comments, in the style of Crafting
 // Interpreters' test suite: `// ECHO: TEXT` is an echo line the run prints
 // (all of them, in order), `// error: LINE:COL: MESSAGE` the first error,
-// `// warning: LINE:COL: MESSAGE` a warning (all of them, in order);
+// `// warning: LINE:COL: MESSAGE` a warning (all of them, in order; one
+// met again at the same place ends in " (N times)");
 // `// limits: fuzz` runs the script under the fuzzer's limits. A location
 // in another file than the script is written FILE:LINE:COL with FILE
 // relative to the repository (stdlib/shapes.sdl:11:5). Shared by the golden
@@ -52,7 +53,8 @@ inline std::string expectation_text(const Diagnostic& d, const std::string& scri
         if (where.rfind(root, 0) == 0) where = where.substr(root.size());
         where += ':';
     }
-    return where + std::to_string(d.loc.line) + ':' + std::to_string(d.loc.col) + ": " + d.message;
+    std::string text = where + std::to_string(d.loc.line) + ':' + std::to_string(d.loc.col) + ": " + d.message;
+    return d.repeats > 1 ? text + " (" + std::to_string(d.repeats) + " times)" : text;
 }
 
 }  // namespace kerf::test
