@@ -1,7 +1,7 @@
 // What a CsgTracer builds once and every query then only reads: the Embree
 // device, the top BVH over the root's units, the own BVHs of large union and
 // difference nodes, and one triangle scene per mesh. Its own header because
-// the build (tracer_build.cpp, mesh_spans.cpp) and the per-ray files all
+// the build (build.cpp, mesh_spans.cpp) and the per-ray files all
 // need the layout.
 #pragma once
 #include <cstdint>

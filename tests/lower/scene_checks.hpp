@@ -1,4 +1,4 @@
-// Structural invariants every lowered scene must satisfy (csg_scene.hpp),
+// Structural invariants every lowered scene must satisfy (csg/scene.hpp),
 // checked from the arrays alone.
 #pragma once
 #include <catch2/catch.hpp>
