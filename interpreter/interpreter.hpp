@@ -11,7 +11,7 @@
 
 namespace kerf {
 
-// Spec §8 limits; every one is overridable from the command line and ends in
+// docs/spec.md §8 limits; every one is overridable from the command line and ends in
 // a located error when exceeded.
 struct EvalLimits {
     std::uint64_t call_depth = 1000;

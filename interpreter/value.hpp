@@ -71,7 +71,7 @@ public:
     const std::shared_ptr<const ValueList>& list_ptr() const { return std::get<ListPtr>(v_); }
     const Range& as_range() const { return std::get<Range>(v_); }
 
-    // Spec §2: false, 0, "", [], undef are false; everything else is true
+    // docs/spec.md §2: false, 0, "", [], undef are false; everything else is true
     // (any range, and NaN, as in OpenSCAD where a number is true if != 0).
     bool truthy() const;
 

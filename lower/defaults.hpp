@@ -1,4 +1,4 @@
-// Spec §6 scene defaults applied by lowering, so that a solid-only script
+// docs/spec.md §6 scene defaults applied by lowering, so that a solid-only script
 // (an OpenSCAD file) renders: a camera framing the solid, two lights.
 #pragma once
 #include <vector>

@@ -1,4 +1,4 @@
-// Spec §8 scripts that parse but must not evaluate: infinite and exponential
+// docs/spec.md §8 scripts that parse but must not evaluate: infinite and exponential
 // recursion, runaway loops and lists, include cycles, NaN and infinity where
 // geometry needs a number. Through the real binary, bounded in time and
 // memory (bad_input_checks.hpp).

@@ -1,4 +1,4 @@
-// Spec §8 malformed text through the real binary: truncated files, binary
+// docs/spec.md §8 malformed text through the real binary: truncated files, binary
 // garbage, a 1 MB identifier, 10,000-deep nesting. Each ends in exit 1 and
 // one located, short diagnostic (bad_input_checks.hpp), within the time and
 // memory bounds of run_kerf_bounded.

@@ -1,4 +1,4 @@
-// Spec §7–§8 command-line knobs through the real binary: -D values that do
+// docs/spec.md §7–§8 command-line knobs through the real binary: -D values that do
 // not parse or evaluate are a bad command line (exit 2, one line), and each
 // limit flag moves its limit exactly (counts derived from the script).
 #include "tests/cli/bad_input_checks.hpp"

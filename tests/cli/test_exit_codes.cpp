@@ -1,4 +1,4 @@
-// Spec §8 exit statuses and the one-line diagnostics, through the real binary.
+// docs/spec.md §8 exit statuses and the one-line diagnostics, through the real binary.
 #include <catch2/catch.hpp>
 
 #include "tests/cli/run_kerf.hpp"

@@ -1,4 +1,4 @@
-// Spec §8 limits: every runaway script ends in a located error, fast, with
+// docs/spec.md §8 limits: every runaway script ends in a located error, fast, with
 // bounded memory, and without exhausting the C stack.
 #include <catch2/catch.hpp>
 

@@ -49,7 +49,7 @@ TEST_CASE("leaves point back at their statements") {
 
 namespace {
 
-// Spec §6 pinhole model, written independently of the lowering code:
+// docs/spec.md §6 pinhole model, written independently of the lowering code:
 // returns pixel coordinates of a world point for a W×H image.
 glm::dvec2 project(const csg::Camera& c, const glm::dvec3& p, double W, double H) {
     const glm::dvec3 f = glm::normalize(c.look_at - c.position);
