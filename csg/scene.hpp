@@ -13,6 +13,14 @@ namespace kerf::csg {
 
 constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 
+// The scale range the renderer promises a correct picture in: solids,
+// cameras and lights within ±1e30 of the origin, and a view at least 1e-30
+// across (a camera that far from what it looks at, or a default camera
+// framing a solid that large) (docs/accuracy.md, "Range"). Beyond it the
+// tracer's float BVH boxes or its squared terms would overflow or
+// underflow; lowering and the scene statements refuse it.
+constexpr double kRenderableRange = 1e30;
+
 struct Aabb {
     glm::dvec3 lo{std::numeric_limits<double>::infinity()};
     glm::dvec3 hi{-std::numeric_limits<double>::infinity()};

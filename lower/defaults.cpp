@@ -1,6 +1,8 @@
 #include "lower/defaults.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace kerf {
 
@@ -24,14 +26,28 @@ csg::Aabb framing_box(const csg::Scene& scene) {
     return frame;
 }
 
-csg::Camera default_camera(const csg::Aabb& frame) {
+csg::Camera default_camera(const csg::Aabb& frame, const SourceLoc& loc) {
     csg::Camera cam;
     cam.fov = 40;
     cam.up = {0, 0, 1};
     const glm::dvec3 centre = 0.5 * (frame.lo + frame.hi);
     double radius = 0.5 * glm::length(frame.hi - frame.lo);
-    // A point or a vanishing box still needs a camera some distance away.
-    if (!(radius > 1e-9 * (1 + glm::length(centre)))) radius = 1;
+    // A point still needs a camera some distance away; any solid of
+    // positive size is framed at its own size, however small or large
+    // (lowering has checked that it lies in the renderable range).
+    if (!(radius > 0)) radius = std::max(1.0, glm::length(centre)) * 1e-6;
+    char text[160];
+    if (radius < 0.5 / csg::kRenderableRange) {
+        std::snprintf(text, sizeof text, "the solid is %g across: too small to frame (kerf frames solids at least %g across)",
+                      2 * radius, 1 / csg::kRenderableRange);
+        throw SourceError(loc, text);
+    }
+    if (radius < 1e-12 * glm::length(centre)) {
+        std::snprintf(text, sizeof text,
+                      "the solid is %g across at %g from the origin: too small there to frame (give a camera())",
+                      2 * radius, glm::length(centre));
+        throw SourceError(loc, text);
+    }
     const double half = glm::radians(cam.fov / 2);
     const double distance = 1.05 * radius / std::sin(half);
     cam.look_at = centre;

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <limits>
+#include <string>
 
 #include "lower/mesh_lowering.hpp"
 #include "lower/primitive_bounds.hpp"
@@ -31,6 +34,12 @@ double volume_ratio(const glm::dmat3& m) {
     return std::abs(glm::determinant(unit));
 }
 
+std::string format_range(double x) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", x);
+    return buf;
+}
+
 }  // namespace
 
 void place_leaf(csg::Leaf& leaf, const csg::Affine& wfo, const std::vector<glm::dvec3>* mesh_points,
@@ -57,6 +66,19 @@ void place_leaf(csg::Leaf& leaf, const csg::Affine& wfo, const std::vector<glm::
         leaf.bounds = clip_by_halfspace(csg::Aabb::everything(), world_halfspace(leaf));
     else
         leaf.bounds = primitive_bounds(leaf.kind, leaf.p, wfo);
+    check_range(leaf.bounds, loc);
+}
+
+void check_range(const csg::Aabb& box, const SourceLoc& loc) {
+    double far = 0;
+    for (int i = 0; i < 3; ++i) {
+        // Unbounded sides (half-spaces) are fine; what is finite must fit.
+        if (std::isfinite(box.lo[i])) far = std::max(far, std::abs(box.lo[i]));
+        if (std::isfinite(box.hi[i])) far = std::max(far, std::abs(box.hi[i]));
+    }
+    if (far > csg::kRenderableRange)
+        throw SourceError(loc, "this solid reaches " + format_range(far) + " from the origin; kerf renders solids within " +
+                                   format_range(csg::kRenderableRange));
 }
 
 }  // namespace kerf

@@ -10,8 +10,14 @@ namespace kerf {
 
 // Fills leaf.world_from_object, object_from_world, normal_to_world and
 // bounds (leaf.kind and leaf.p must be set; mesh_points for Mesh leaves).
-// A singular or non-finite composed transform is a SourceError at `loc`.
+// A singular or non-finite composed transform is a SourceError at `loc`, and
+// so is a box outside the renderable range (check_range).
 void place_leaf(csg::Leaf& leaf, const csg::Affine& world_from_object,
                 const std::vector<glm::dvec3>* mesh_points, const SourceLoc& loc);
+
+// A SourceError at `loc` unless the box's finite coordinates lie within
+// ±csg::kRenderableRange. (A tiny solid is fine: it is small in the picture;
+// what must not be tiny is the view, see defaults.hpp and the camera.)
+void check_range(const csg::Aabb& box, const SourceLoc& loc);
 
 }  // namespace kerf

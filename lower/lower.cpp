@@ -10,7 +10,14 @@ namespace kerf {
 namespace {
 
 void apply_scene_statements(const graph::SceneGraph& g, csg::Scene& s) {
-    s.camera = g.camera ? *g.camera : default_camera(framing_box(s));
+    if (g.camera) {
+        s.camera = *g.camera;
+    } else {
+        // Located at the top of the main file: the default camera belongs
+        // to no statement of its own.
+        const SourceLoc& where = g.nodes.empty() ? SourceLoc{} : g.nodes[g.root].loc;
+        s.camera = default_camera(framing_box(s), where);
+    }
     s.lights = g.lights.empty() ? default_lights(s.camera) : g.lights;
     s.background = g.background.value_or(glm::dvec3(0.2, 0.2, 0.2));
 }

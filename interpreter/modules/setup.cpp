@@ -9,6 +9,15 @@ namespace kerf::eval {
 
 namespace {
 
+// A camera or light beyond the renderable range (csg::kRenderableRange).
+glm::dvec3 in_range(const Args& a, glm::dvec3 p, const char* name) {
+    for (int i = 0; i < 3; ++i)
+        if (std::abs(p[i]) > csg::kRenderableRange)
+            arg_error(a, std::string(name) + " must lie within " + format_number(csg::kRenderableRange) +
+                             " of the origin, got " + format_number(std::abs(p[i])));
+    return p;
+}
+
 void camera(ModuleCall& c) {
     const Args& a = c.args;
     ModuleState& state = c.state();
@@ -16,12 +25,14 @@ void camera(ModuleCall& c) {
         throw SourceError(c.st.loc, "camera is already defined at line " + std::to_string(state.camera_loc->line));
     if (!a.has(0)) arg_error(a, "position is required");
     csg::Camera cam;
-    cam.position = arg_vec3(a, 0, "position", {0, 0, 0});
-    cam.look_at = arg_vec3(a, 1, "look_at", {0, 0, 0});
+    cam.position = in_range(a, arg_vec3(a, 0, "position", {0, 0, 0}), "position");
+    cam.look_at = in_range(a, arg_vec3(a, 1, "look_at", {0, 0, 0}), "look_at");
     cam.up = arg_vec3(a, 2, "up", {0, 0, 1});
     cam.fov = arg_number(a, 3, "fov", 40);
     glm::dvec3 dir = cam.look_at - cam.position;
     if (!(glm::length(dir) > 0)) arg_error(a, "position and look_at must differ");
+    if (glm::length(dir) < 1 / csg::kRenderableRange)
+        arg_error(a, "position and look_at must be at least " + format_number(1 / csg::kRenderableRange) + " apart");
     if (!(glm::length(glm::cross(dir, cam.up)) > 1e-12 * glm::length(dir) * glm::length(cam.up)))
         arg_error(a, "up must not be parallel to the view direction");
     if (a.has(4)) {
@@ -44,7 +55,7 @@ void light(ModuleCall& c) {
     if (a.has(0) == a.has(1)) arg_error(a, "give position or direction (exactly one)");
     csg::Light l;
     if (a.has(0)) {
-        l.position = arg_vec3(a, 0, "position", {0, 0, 0});
+        l.position = in_range(a, arg_vec3(a, 0, "position", {0, 0, 0}), "position");
     } else {
         l.directional = true;
         glm::dvec3 d = arg_vec3(a, 1, "direction", {0, 0, -1});

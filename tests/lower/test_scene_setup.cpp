@@ -1,10 +1,15 @@
 // Materials per leaf and the docs/spec.md §6 scene defaults.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "tests/lower/graph_builder.hpp"
+#include "interpreter/interpreter.hpp"
 #include "lower/lower.hpp"
+#include "render/render.hpp"
 
 using namespace kerf;
 using kerf::test::GraphBuilder;
@@ -132,4 +137,38 @@ TEST_CASE("scene statements override the defaults") {
     CHECK(s.lights[0].directional);
     CHECK(s.lights[0].intensity == 0.7);
     CHECK(s.background == glm::dvec3(1, 1, 1));
+}
+
+TEST_CASE("the default camera frames a solid the same way at every size in the renderable range") {
+    // Rendered through lowering and the tracer: the silhouette of a sphere
+    // (and of a torus, whose quartic scales with the fourth power) must be
+    // the same pixel mask at 1e-30 and at 1e29 as at 1. It used to be empty
+    // below ~2e-9 (the radius was replaced by 1) and, past 1e38, a camera at
+    // infinity with exit 0.
+    auto mask = [](const std::string& text) {
+        auto f = std::make_shared<SourceFile>();
+        f->path = "test.sdl";
+        f->text = text;
+        const csg::Scene s = lower_to_csg(evaluate_source(f).graph);
+        render::RenderOptions o;
+        o.width = 32, o.height = 24, o.threads = 1, o.aov = render::Aov::Depth;
+        const render::Image img = render::render(s, o);
+        std::vector<bool> m;
+        for (float d : img.pixels) m.push_back(std::isfinite(d));
+        return m;
+    };
+    for (const std::string solid : {"sphere(S);", "rotate([60, 0, 30]) torus(S, S / 4);"}) {
+        auto with = [&](const std::string& size) {
+            std::string t = solid;
+            for (std::size_t p; (p = t.find('S')) != std::string::npos;) t.replace(p, 1, size);
+            return mask(t);
+        };
+        const std::vector<bool> unit = with("1");
+        const auto covered = std::count(unit.begin(), unit.end(), true);
+        CHECK(covered > 60);  // framed: a real part of the 768 pixels
+        for (const std::string size : {"1e-30", "1e-12", "2e-9", "1e12", "1e29"}) {
+            INFO(solid << " at size " << size);
+            CHECK(with(size) == unit);
+        }
+    }
 }

@@ -96,7 +96,10 @@ TEST_CASE("rank-deficient shears and non-finite matrices are errors too") {
     {  // two tiny (but individually fine) scales: still a regular transform
         GraphBuilder b;
         const auto top = b.scale(glm::dvec3(1e-60), b.scale(glm::dvec3(1e-60), b.sphere(1)));
-        const csg::Scene s = lower_to_csg(b.finish({top}));
+        graph::SceneGraph& g = b.finish({top});
+        // Far below what the default camera frames (1e-30): a camera of its own.
+        g.camera = csg::Camera{};
+        const csg::Scene s = lower_to_csg(g);
         CHECK(s.leaves[0].bounds.hi.x == Approx(1e-120));
     }
 }
