@@ -39,8 +39,10 @@ void check_output_path(const std::string& path);
 
 // Format by extension (OpenImageIO). EXR/TIFF/HDR/PFM: linear float; others
 // (PNG, JPEG, ...): 8-bit, colour sRGB-encoded, AOVs normalised (docs/spec.md §7).
-// Written to a temporary file in the same folder, then renamed over `path`,
-// so a failed write leaves an existing file intact.
+// Encoded into memory, then written to a temporary file in the same folder
+// with every write, fsync and close checked, and renamed over `path`: a
+// failed write ("no space left on device") throws and leaves an existing
+// file intact and no temporary behind (replace_file.hpp).
 void write_image(const Image& image, const std::string& path);
 
 // Whether write_image() stores `path` in 8 bits (then a colour render can

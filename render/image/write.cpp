@@ -1,28 +1,26 @@
-// Image output, written atomically (temporary file in the destination
-// folder, then rename), so readers never see half a file and a failed write
-// keeps the previous image. PNG goes through libpng (png_file.cpp); every
-// other format through OpenImageIO, loaded only then (oiio_loader.cpp).
+// Image output: every format is encoded into memory — PNG by libpng
+// (png_file.cpp), the others by OpenImageIO, loaded only then
+// (oiio_loader.cpp) — and the bytes are written atomically and checked by
+// replace_file(), so readers never see half a file and a failed write
+// (a full disk, a signal) keeps the previous image.
 #include "render/image/image.hpp"
 
 #include <algorithm>
-#include <cstdint>
-#include <atomic>
-#include <cerrno>
 #include <cmath>
-#include <cstring>
+#include <cstdint>
 #include <filesystem>
 #include <limits>
 #include <string>
 #include <system_error>
+#include <vector>
 
-#include <fcntl.h>
-#include <unistd.h>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include "render/image/oiio_loader.hpp"
 #include "render/image/png_file.hpp"
+#include "render/image/replace_file.hpp"
 #include "render/image/srgb_bytes.hpp"
 
 namespace kerf::render {
@@ -80,13 +78,23 @@ BigVector<std::uint8_t> encode_8bit(const Image& im) {
     return out;
 }
 
-std::string temp_name(const fs::path& target) {
-    static std::atomic<unsigned> counter{0};
-    // Keeps the extension: OpenImageIO picks the writer by the file name.
-    return (target.parent_path() / ("." + target.stem().string() + ".kerf-tmp-" + std::to_string(::getpid()) + "-" +
-                                    std::to_string(counter++) + target.extension().string()))
-        .string();
-}
+// The OpenImageIO module's encoder hands the file's bytes here; they are
+// written (and any failure kept) before it returns.
+struct FileSink {
+    explicit FileSink(const std::string& path) : target(&path) {}
+    const std::string* target;
+    std::string message;
+    bool called = false;
+    static void receive(void* context, const void* bytes, std::size_t size) {
+        auto* sink = static_cast<FileSink*>(context);
+        sink->called = true;
+        try {
+            sink->message = replace_file(*sink->target, bytes, size);
+        } catch (const std::exception& e) {  // nothing may unwind through the module's C frames
+            sink->message = e.what();
+        }
+    }
+};
 
 }  // namespace
 
@@ -103,12 +111,9 @@ void check_output_path(const std::string& path) {
     if (!fs::is_directory(folder, ec))
         throw ImageWriteError("cannot write " + path + ": no folder '" + folder.string() + "'");
     // The folder must accept the temporary file write_image() renames over
-    // the target: create and remove one now (permissions, read-only mounts).
-    const std::string probe = temp_name(target);
-    const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0644);
-    if (fd < 0) throw ImageWriteError("cannot write " + path + ": " + std::strerror(errno));
-    ::close(fd);
-    ::unlink(probe.c_str());
+    // the target (permissions, read-only mounts).
+    if (const std::string why = probe_folder(path); !why.empty())
+        throw ImageWriteError("cannot write " + path + ": " + why);
 }
 
 bool is_8bit_output(const std::string& path) { return !is_float_format(lower_extension(fs::path(path))); }
@@ -126,32 +131,29 @@ void write_image(const Image& image, const std::string& path) {
     if (as_float && as_bytes)
         throw ImageWriteError("cannot write " + path + ": the image was rendered in 8 bits, the format holds floats");
     const bool srgb = !as_float && image.content == ImageContent::Color;
-    const std::string tmp = temp_name(target);
     BigVector<std::uint8_t> encoded;
     if (!as_float && !as_bytes) encoded = encode_8bit(image);
     const std::uint8_t* bytes = as_bytes ? image.srgb8.data() : encoded.data();
+    // Every format is encoded into memory, then written by replace_file().
     std::string message;
     if (ext == ".png") {
-        message = write_png(tmp, bytes, image.width, image.height, image.channels, srgb);
+        std::vector<unsigned char> file;
+        message = encode_png(file, bytes, image.width, image.height, image.channels, srgb);
+        if (message.empty()) message = replace_file(path, file.data(), file.size());
     } else {
         const OiioModule& oiio = oiio_module();
         char error[512] = "";
         const void* data = as_float ? static_cast<const void*>(image.pixels.data()) : bytes;
-        if (!oiio.write(tmp.c_str(), data, as_float, image.width, image.height, image.channels, srgb, error,
-                        sizeof error))
+        FileSink sink(path);
+        if (!oiio.encode(path.c_str(), data, as_float, image.width, image.height, image.channels, srgb,
+                         FileSink::receive, &sink, error, sizeof error))
             message = error[0] ? error : "write failed";
+        else
+            message = sink.called ? sink.message : "the encoder produced no file";
     }
-    std::error_code ec;
     if (!message.empty()) {
-        fs::remove(tmp, ec);
         std::replace(message.begin(), message.end(), '\n', ' ');
         throw ImageWriteError("cannot write " + path + ": " + message);
-    }
-    fs::rename(tmp, target, ec);
-    if (ec) {
-        std::error_code ignored;
-        fs::remove(tmp, ignored);
-        throw ImageWriteError("cannot write " + path + ": " + ec.message());
     }
 }
 

@@ -206,3 +206,21 @@ TEST_CASE("writing to a missing folder or an unknown format throws a one-line er
                     render::ImageWriteError);
     fs::remove_all(dir);
 }
+
+TEST_CASE("formats whose writer opens the file itself are encoded in memory too", "[image_io]") {
+    // SGI's writer has no IOProxy: it writes to a memory file, and kerf
+    // writes the bytes.
+    const fs::path dir = fresh_dir("sgi");
+    render::Image im = gradient(3, render::ImageContent::Normal);
+    render::write_image(im, (dir / "n.sgi").string());
+    int w, h, c;
+    OIIO::TypeDesc t;
+    const auto px = read_back(dir / "n.sgi", w, h, c, t);
+    REQUIRE(px.size() == im.pixels.size());
+    for (std::size_t i = 0; i < px.size(); ++i)
+        CHECK(std::lround(px[i] * 255) == std::lround(std::clamp(0.5f * im.pixels[i] + 0.5f, 0.0f, 1.0f) * 255));
+    int files = 0;
+    for (const auto& e : fs::directory_iterator(dir)) files += e.is_regular_file() ? 1 : 0;
+    CHECK(files == 1);
+    fs::remove_all(dir);
+}
