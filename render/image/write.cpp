@@ -14,6 +14,7 @@
 #include <system_error>
 #include <vector>
 
+#include <sys/stat.h>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -78,6 +79,25 @@ BigVector<std::uint8_t> encode_8bit(const Image& im) {
     return out;
 }
 
+// OpenJPEG codes 6 resolution levels, which need 2^5 pixels each way; below
+// that its writer reported success over a 77-byte file that reads back as
+// nothing. 0 x 0: the size is not known yet.
+void check_size(const std::string& path, const std::string& ext, int width, int height) {
+    constexpr int kSide = 32;
+    if ((ext == ".jp2" || ext == ".j2k") && width > 0 && height > 0 && (width < kSide || height < kSide))
+        throw ImageWriteError("cannot write " + path + ": JPEG 2000 needs at least 32x32 pixels (OpenJPEG's 6 " +
+                              "resolution levels), the image is " + std::to_string(width) + "x" +
+                              std::to_string(height));
+}
+
+// Identity, not spelling: "./a.png", a symlink or a hard link to the input
+// are the input too.
+bool same_file(const std::string& a, const std::string& b) {
+    struct stat sa {}, sb {};
+    return ::stat(a.c_str(), &sa) == 0 && ::stat(b.c_str(), &sb) == 0 && sa.st_dev == sb.st_dev &&
+           sa.st_ino == sb.st_ino;
+}
+
 // The OpenImageIO module's encoder hands the file's bytes here; they are
 // written (and any failure kept) before it returns.
 struct FileSink {
@@ -98,7 +118,7 @@ struct FileSink {
 
 }  // namespace
 
-void check_output_path(const std::string& path) {
+void check_output_path(const std::string& path, int width, int height, const std::vector<std::string>& inputs) {
     const fs::path target(path);
     const std::string ext = target.extension().string();
     if (lower_extension(target) != ".png" && !oiio_module().can_write(path.c_str()))
@@ -110,6 +130,10 @@ void check_output_path(const std::string& path) {
     const fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
     if (!fs::is_directory(folder, ec))
         throw ImageWriteError("cannot write " + path + ": no folder '" + folder.string() + "'");
+    for (const std::string& input : inputs)
+        if (same_file(path, input))
+            throw ImageWriteError("cannot write " + path + ": it is the input file " + input);
+    check_size(path, lower_extension(target), width, height);
     // The folder must accept the temporary file write_image() renames over
     // the target (permissions, read-only mounts).
     if (const std::string why = probe_folder(path); !why.empty())
@@ -130,6 +154,7 @@ void write_image(const Image& image, const std::string& path) {
     const bool as_float = is_float_format(ext);
     if (as_float && as_bytes)
         throw ImageWriteError("cannot write " + path + ": the image was rendered in 8 bits, the format holds floats");
+    check_size(path, ext, image.width, image.height);
     const bool srgb = !as_float && image.content == ImageContent::Color;
     BigVector<std::uint8_t> encoded;
     if (!as_float && !as_bytes) encoded = encode_8bit(image);

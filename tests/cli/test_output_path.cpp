@@ -150,6 +150,40 @@ TEST_CASE("a signal while the image is being written leaves the old image and no
     }
 }
 
+TEST_CASE("the output is never the scene: by name, ./, a symlink or a hard link", "[output]") {
+    auto dir = test_dir("out_is_input");
+    // `kerf render model.png` would write model.png, over its own scene.
+    const std::string text = "sphere(1);\n";
+    const auto scene = write_file(dir / "model.png", text);
+    fs::create_symlink(dir / "model.png", dir / "link.png");
+    fs::create_hard_link(dir / "model.png", dir / "hard.png");
+    const std::string same[] = {"", (dir / "." / "model.png").string(), (dir / "link.png").string(),
+                                (dir / "hard.png").string()};
+    for (const std::string& out : same) {
+        INFO("-o '" << out << "'");
+        const KerfRun r = run_kerf("render '" + scene + "' -W 8 -H 8" + (out.empty() ? "" : " -o '" + out + "'"), dir);
+        CHECK(r.status == 3);
+        CHECK(r.err == "kerf: error: cannot write " + (out.empty() ? scene : out) + ": it is the input file " +
+                           scene + "\n");
+        CHECK(slurp(scene) == text);
+        CHECK(fs::is_symlink(dir / "link.png"));
+    }
+    // A different file of the same content is not the scene.
+    const auto copy = dir / "copy.png";
+    fs::copy_file(scene, copy);
+    CHECK(run_kerf("render '" + scene + "' -W 8 -H 8 -o '" + copy.string() + "'", dir).status == 0);
+    CHECK(slurp(copy) != text);
+}
+
+TEST_CASE("an empty -o name is a usage error, not the default", "[output]") {
+    auto dir = test_dir("out_empty");
+    const auto scene = write_file(dir / "s.sdl", "sphere(1);\n");
+    const KerfRun r = run_kerf("render '" + scene + "' -W 8 -H 8 -o ''", dir);
+    CHECK(r.status == 2);
+    CHECK(first_line(r.err) == "kerf: error: -o needs a file name, got ''");
+    CHECK_FALSE(fs::exists(dir / "s.png"));  // not quietly the default either
+}
+
 TEST_CASE("an output name of 250 bytes is written: the temporary's name is short", "[output]") {
     auto dir = test_dir("out_long_name");
     const auto scene = write_file(dir / "s.sdl", "sphere(1);\n");
@@ -161,4 +195,25 @@ TEST_CASE("an output name of 250 bytes is written: the temporary's name is short
         CHECK(r.err.empty());
         CHECK(fs::file_size(out) > 0);
     }
+}
+
+TEST_CASE("JPEG 2000 below 32 pixels is exit 3 before rendering, not a 77-byte file", "[output]") {
+    // OpenJPEG's 6 resolution levels need 32 pixels each way; its writer
+    // reported success over a file that reads back as nothing.
+    auto dir = test_dir("out_small_jp2");
+    const auto scene = write_file(dir / "broken.sdl", kBrokenScene);  // checked first: exit 3, not 1
+    const auto out = dir / "small.jp2";
+    KerfRun r = run_kerf("render '" + scene + "' -W 31 -H 64 -o '" + out.string() + "'", dir);
+    CHECK(r.status == 3);
+    CHECK(r.err == "kerf: error: cannot write " + out.string() +
+                       ": JPEG 2000 needs at least 32x32 pixels (OpenJPEG's 6 resolution levels), "
+                       "the image is 31x64\n");
+    // The image written is the crop.
+    r = run_kerf("render '" + scene + "' -W 64 -H 64 --crop 0,0,40,20 -o '" + out.string() + "'", dir);
+    CHECK(r.status == 3);
+    CHECK(r.err.find("the image is 40x20") != std::string::npos);
+    CHECK_FALSE(fs::exists(out));
+    const auto good = write_file(dir / "good.sdl", "sphere(1);\n");
+    CHECK(run_kerf("render '" + good + "' -W 32 -H 32 -o '" + out.string() + "'", dir).status == 0);
+    CHECK(fs::file_size(out) > 77);
 }
