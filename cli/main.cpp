@@ -43,7 +43,9 @@ void print_stats(const render::RenderStats& s, const render::Image& img) {
 int run(const cli::Options& o) {
     if (o.command == cli::Command::Render) {
         try {
-            render::check_output_path(o.output);
+            const auto& crop = o.render.crop;  // the image written is the crop
+            render::check_output_path(o.output, crop ? (*crop)[2] - (*crop)[0] : o.render.width,
+                                      crop ? (*crop)[3] - (*crop)[1] : o.render.height, {o.scene});
         } catch (const render::ImageWriteError& e) {
             std::cerr << "kerf: error: " << e.what() << '\n';
             return kRenderFailed;

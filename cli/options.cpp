@@ -73,7 +73,10 @@ Options parse_options(const std::vector<std::string>& args) {
             if (i + 1 >= args.size()) throw UsageError(a + " needs a value");
             return args[++i];
         };
-        if (a == "-o") o.output = value();
+        if (a == "-o") {
+            o.output = value();
+            if (o.output.empty()) throw UsageError("-o needs a file name, got ''");
+        }
         else if (a == "-W") o.render.width = parse_int<int>(a, value(), 1, 32768);
         else if (a == "-H") o.render.height = parse_int<int>(a, value(), 1, 32768);
         else if (a == "--spp") o.render.spp = parse_int<int>(a, value(), 1, 65536);

@@ -1,17 +1,44 @@
-// The three file formats of import(), each parsed from the file's bytes into
-// a mesh in the file's own (counter-clockwise) face order. mesh_import.cpp
+// The three file formats of import(), each parsed from the file into a mesh
+// in the file's own (counter-clockwise) face order. mesh_import.cpp
 // validates and reorients the result.
 #pragma once
+#include <cstddef>
 #include <cstdint>
+#include <string>
 #include <string_view>
 
 #include "interpreter/scene_graph.hpp"
 
 namespace kerf::eval::mesh_format {
 
-graph::PolygonMesh read_stl(std::string_view bytes, std::uint64_t max_faces);
+// An import file (a regular file), open for reading. Its size is known
+// before any byte is read, so the readers check what a header declares
+// against it first, and read only what they need when they need it.
+class MeshFile {
+public:
+    // Throws MeshFormatError when the file cannot be opened or is longer
+    // than kMaxImportBytes.
+    explicit MeshFile(const std::string& path);
+    ~MeshFile();
+    MeshFile(const MeshFile&) = delete;
+    MeshFile& operator=(const MeshFile&) = delete;
+
+    std::uint64_t size() const { return size_; }
+    // Exactly `n` bytes from `offset` into `out`; throws MeshFormatError on a
+    // read error or when the file ends first (it shrank while being read).
+    void read_exact(std::uint64_t offset, char* out, std::size_t n) const;
+    // Up to `n` bytes from `offset`, fewer at the end of the file.
+    std::string read(std::uint64_t offset, std::size_t n) const;
+    std::string read_all() const { return read(0, static_cast<std::size_t>(size_)); }
+
+private:
+    int fd_ = -1;
+    std::uint64_t size_ = 0;
+};
+
+graph::PolygonMesh read_stl(const MeshFile& file, std::uint64_t max_faces);
 graph::PolygonMesh read_obj(std::string_view bytes, std::uint64_t max_faces);
-graph::PolygonMesh read_ply(std::string_view bytes, std::uint64_t max_faces);
+graph::PolygonMesh read_ply(const MeshFile& file, std::uint64_t max_faces);
 
 // Line number (1-based) of byte offset `at`, for text-format errors.
 std::size_t line_of(std::string_view bytes, std::size_t at);
@@ -45,8 +72,10 @@ private:
 bool parse_number(std::string_view tok, double& out);
 
 // Refuses a count of items that could not fit in the bytes left (each item
-// needs at least `min_bytes`), before anything is allocated for them.
-void check_count(std::uint64_t count, std::size_t bytes_left, std::size_t min_bytes, const std::string& what,
-                 std::uint64_t limit);
+// needs at least `min_bytes`; `slack` more bytes are allowed for, e.g. the
+// missing separator after a text file's last number), before anything is
+// allocated for them.
+void check_count(std::uint64_t count, std::uint64_t bytes_left, std::size_t min_bytes, const std::string& what,
+                 std::uint64_t limit, std::uint64_t slack = 0);
 
 }  // namespace kerf::eval::mesh_format

@@ -1,14 +1,19 @@
-// import(): file reading, dispatch by extension, validation shared by all
-// formats, and the turn into OpenSCAD's clockwise face order.
+// import(): file reading (bounded: the size is checked before reading),
+// dispatch by extension, validation shared by all formats, and the turn into
+// OpenSCAD's clockwise face order.
 #include "interpreter/import/mesh_import.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <charconv>
 #include <cctype>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "interpreter/import/formats.hpp"
 
@@ -64,27 +69,74 @@ bool parse_number(std::string_view tok, double& out) {
     return ec == std::errc() && end == tok.data() + tok.size();
 }
 
-void check_count(std::uint64_t count, std::size_t bytes_left, std::size_t min_bytes, const std::string& what,
-                 std::uint64_t limit) {
+void check_count(std::uint64_t count, std::uint64_t bytes_left, std::size_t min_bytes, const std::string& what,
+                 std::uint64_t limit, std::uint64_t slack) {
     if (count > limit)
         throw MeshFormatError("the file declares " + std::to_string(count) + " " + what + ", more than the limit " +
                               std::to_string(limit) + " (--max-list)");
-    if (count > bytes_left / min_bytes)
+    if (count > (bytes_left + slack) / min_bytes)
         throw MeshFormatError("the file declares " + std::to_string(count) + " " + what + " but only " +
                               std::to_string(bytes_left) + " bytes follow (truncated?)");
+}
+
+namespace {
+
+[[noreturn]] void io_failure(const char* what, int err) {
+    throw MeshFormatError(std::string(what) + " the file: " + std::strerror(err));
+}
+
+// Closes the descriptor unless released: the constructor below may throw.
+struct FdGuard {
+    int fd;
+    ~FdGuard() {
+        if (fd >= 0) ::close(fd);
+    }
+};
+
+}  // namespace
+
+MeshFile::MeshFile(const std::string& path) {
+    FdGuard guard{::open(path.c_str(), O_RDONLY | O_CLOEXEC)};
+    if (guard.fd < 0) io_failure("cannot open", errno);
+    struct stat st {};
+    if (::fstat(guard.fd, &st) != 0) io_failure("cannot open", errno);
+    // (import() finds only regular files; this one may have been swapped since.)
+    if (!S_ISREG(st.st_mode)) throw MeshFormatError("not a regular file");
+    size_ = static_cast<std::uint64_t>(st.st_size);
+    if (size_ > kMaxImportBytes)
+        throw MeshFormatError("longer than " + std::to_string(kMaxImportBytes >> 20) + " MiB (" +
+                              std::to_string(size_) + " bytes), too large to import");
+    std::swap(fd_, guard.fd);
+}
+
+MeshFile::~MeshFile() {
+    if (fd_ >= 0) ::close(fd_);
+}
+
+void MeshFile::read_exact(std::uint64_t offset, char* out, std::size_t n) const {
+    if (offset > size_ || n > size_ - offset)
+        throw MeshFormatError("byte " + std::to_string(size_) + ": the file ends inside the data (truncated?)");
+    for (std::size_t done = 0; done < n;) {
+        const ssize_t got = ::pread(fd_, out + done, n - done, static_cast<off_t>(offset + done));
+        if (got < 0 && errno == EINTR) continue;
+        if (got < 0) io_failure("cannot read", errno);
+        if (got == 0)
+            throw MeshFormatError("byte " + std::to_string(offset + done) +
+                                  ": the file ended early (did it change while being read?)");
+        done += static_cast<std::size_t>(got);
+    }
+}
+
+std::string MeshFile::read(std::uint64_t offset, std::size_t n) const {
+    if (offset >= size_) return {};
+    std::string bytes(static_cast<std::size_t>(std::min<std::uint64_t>(n, size_ - offset)), '\0');
+    read_exact(offset, bytes.data(), bytes.size());
+    return bytes;
 }
 
 }  // namespace mesh_format
 
 namespace {
-
-std::string read_bytes(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw MeshFormatError("cannot open the file");
-    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (in.bad()) throw MeshFormatError("cannot read the file");
-    return bytes;
-}
 
 void validate(const graph::PolygonMesh& m) {
     if (m.faces.empty()) throw MeshFormatError("the file holds no faces");
@@ -107,16 +159,12 @@ void validate(const graph::PolygonMesh& m) {
 graph::PolygonMesh import_mesh(const std::string& path, std::uint64_t max_faces) {
     std::string ext = std::filesystem::path(path).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    graph::PolygonMesh m;
-    if (ext == ".stl") {
-        m = mesh_format::read_stl(read_bytes(path), max_faces);
-    } else if (ext == ".obj") {
-        m = mesh_format::read_obj(read_bytes(path), max_faces);
-    } else if (ext == ".ply") {
-        m = mesh_format::read_ply(read_bytes(path), max_faces);
-    } else {
+    if (ext != ".stl" && ext != ".obj" && ext != ".ply")
         throw MeshFormatError("unknown mesh format '" + ext + "' (kerf reads .stl, .obj and .ply)");
-    }
+    const mesh_format::MeshFile file(path);
+    graph::PolygonMesh m = ext == ".stl"   ? mesh_format::read_stl(file, max_faces)
+                    : ext == ".ply" ? mesh_format::read_ply(file, max_faces)
+                                    : mesh_format::read_obj(file.read_all(), max_faces);
     validate(m);
     for (auto& f : m.faces) std::reverse(f.begin(), f.end());  // counter-clockwise → OpenSCAD's clockwise
     return m;

@@ -16,9 +16,15 @@ struct MeshFormatError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-// Reads the file by its extension (case-insensitive). Faces above max_faces
-// are an error, so a huge file cannot exhaust memory; every face has at least
-// 3 corners, every index is in range, every point is finite.
+// The longest file import() reads: the bound scene files have
+// (kMaxSourceBytes). A binary STL of this size holds 5.4 million triangles.
+constexpr std::uint64_t kMaxImportBytes = std::uint64_t(256) << 20;
+
+// Reads the file by its extension (case-insensitive). A file longer than
+// kMaxImportBytes, counts in a header that the file's size cannot hold, and
+// faces above max_faces are errors found before the data is read, so a huge
+// or lying file cannot exhaust memory; every face has at least 3 corners,
+// every index is in range, every point is finite.
 graph::PolygonMesh import_mesh(const std::string& path, std::uint64_t max_faces);
 
 }  // namespace kerf::eval

@@ -2,6 +2,7 @@
 // elements and their properties; the 'vertex' element's x, y, z and the
 // 'face' element's vertex_indices (or vertex_index) list define the mesh.
 // Other elements and properties are read past and dropped.
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstring>
@@ -141,17 +142,48 @@ Header read_header(std::string_view bytes) {
     return h;
 }
 
+// The fewest bytes one element of `e` takes: binary, its scalars and list
+// lengths (a list may be empty); ascii, a digit and a separator each.
+std::uint64_t min_element_bytes(const Element& e, Format fmt) {
+    std::uint64_t bytes = 0;
+    for (const Property& p : e.props) bytes += fmt == Format::Ascii ? 2 : p.list ? p.count_size : p.size;
+    return bytes;
+}
+
+// The header, read by itself (it is short; the search for its end doubles
+// the bytes read each round), and every element count checked against the
+// bytes after it, before the body is read.
+Header read_checked_header(const MeshFile& file, std::uint64_t max_faces) {
+    std::string head;
+    for (std::size_t n = 4096;; n *= 2) {
+        head = file.read(0, n);
+        const std::size_t end = head.find("end_header");
+        if (head.size() < n || (end != std::string::npos && head.find('\n', end) != std::string::npos)) break;
+    }
+    Header h = read_header(head);
+    std::uint64_t left = file.size() - h.body_start;
+    for (const Element& e : h.elements) {
+        const std::uint64_t min = min_element_bytes(e, h.fmt);
+        if (min == 0) continue;  // no properties: no data, whatever the count
+        // ascii: the last number of the file needs no separator after it
+        check_count(e.count, left, min, e.name + " elements", e.name == "face" ? max_faces : ~std::uint64_t(0),
+                    h.fmt == Format::Ascii ? 1 : 0);
+        left -= std::min(left, e.count * min);
+    }
+    return h;
+}
+
 }  // namespace
 
-graph::PolygonMesh read_ply(std::string_view bytes, std::uint64_t max_faces) {
-    const Header h = read_header(bytes);
+graph::PolygonMesh read_ply(const MeshFile& file, std::uint64_t max_faces) {
+    const Header h = read_checked_header(file, max_faces);
+    const std::string bytes = file.read_all();
     const Format fmt = h.fmt;
     Body body(bytes, h.body_start, fmt);
     graph::PolygonMesh m;
     for (const Element& e : h.elements) {
         const bool is_vertex = e.name == "vertex", is_face = e.name == "face";
-        check_count(e.count, body.left(), fmt == Format::Ascii ? 2 : 1, e.name + " elements",
-                    is_face ? max_faces : ~std::uint64_t(0));
+        if (e.props.empty() && !is_vertex) continue;  // no data, however many: nothing to read
         for (std::uint64_t i = 0; i < e.count; ++i) {
             glm::dvec3 v(0);
             int xyz = 0;
@@ -167,7 +199,7 @@ graph::PolygonMesh read_ply(std::string_view bytes, std::uint64_t max_faces) {
                 double n = body.read(p.count_size, false, p.count_signed);
                 if (n < 0) body.fail("negative list length");
                 check_count(static_cast<std::uint64_t>(n), body.left(), fmt == Format::Ascii ? 2 : p.size, "list items",
-                            ~std::uint64_t(0));
+                            ~std::uint64_t(0), fmt == Format::Ascii ? 1 : 0);
                 const bool indices = is_face && (p.name == "vertex_indices" || p.name == "vertex_index");
                 std::vector<std::uint32_t> face;
                 for (std::uint64_t k = 0; k < static_cast<std::uint64_t>(n); ++k) {

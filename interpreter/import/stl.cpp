@@ -3,6 +3,8 @@
 // vertices: each triangle brings its own three points.
 #include <algorithm>
 #include <cstring>
+#include <string>
+#include <vector>
 
 #include "interpreter/import/mesh_import.hpp"
 #include "interpreter/import/formats.hpp"
@@ -23,20 +25,28 @@ float le_f32(const char* p) {
     return f;
 }
 
-graph::PolygonMesh read_binary(std::string_view bytes, std::uint64_t count, std::uint64_t max_faces) {
-    check_count(count, bytes.size() - 84, 50, "triangles", max_faces);
+// Streamed: a batch of records at a time, so the file's bytes are never all
+// in memory beside the mesh made of them.
+graph::PolygonMesh read_binary(const MeshFile& file, std::uint64_t count, std::uint64_t max_faces) {
+    check_count(count, file.size() - 84, 50, "triangles", max_faces);
     graph::PolygonMesh m;
     m.points.reserve(3 * count);
     m.faces.reserve(count);
-    for (std::uint64_t t = 0; t < count; ++t) {
-        const char* rec = bytes.data() + 84 + 50 * t + 12;  // skip the stored normal: the winding decides
-        std::vector<std::uint32_t> face;
-        for (int v = 0; v < 3; ++v) {
-            const char* p = rec + 12 * v;
-            face.push_back(static_cast<std::uint32_t>(m.points.size()));
-            m.points.emplace_back(le_f32(p), le_f32(p + 4), le_f32(p + 8));
+    constexpr std::uint64_t kBatch = 4096;  // records per read: 200 KiB
+    std::vector<char> records(50 * kBatch);
+    for (std::uint64_t first = 0; first < count; first += kBatch) {
+        const std::uint64_t n = std::min(kBatch, count - first);
+        file.read_exact(84 + 50 * first, records.data(), 50 * n);
+        for (std::uint64_t t = 0; t < n; ++t) {
+            const char* rec = records.data() + 50 * t + 12;  // skip the stored normal: the winding decides
+            std::vector<std::uint32_t> face;
+            for (int v = 0; v < 3; ++v) {
+                const char* p = rec + 12 * v;
+                face.push_back(static_cast<std::uint32_t>(m.points.size()));
+                m.points.emplace_back(le_f32(p), le_f32(p + 4), le_f32(p + 8));
+            }
+            m.faces.push_back(std::move(face));
         }
-        m.faces.push_back(std::move(face));
     }
     return m;
 }
@@ -80,22 +90,31 @@ graph::PolygonMesh read_ascii(std::string_view bytes, std::uint64_t max_faces) {
 
 }  // namespace
 
-graph::PolygonMesh read_stl(std::string_view bytes, std::uint64_t max_faces) {
+graph::PolygonMesh read_stl(const MeshFile& file, std::uint64_t max_faces) {
     // A binary file's header may begin with "solid" too: the size decides,
     // and control bytes tell a broken binary file from a broken ASCII one.
+    // The header and the size alone settle a binary file, before any
+    // triangle is read.
+    const std::string head = file.read(0, 84);
+    const bool solid = head.substr(0, 5) == "solid";
+    const auto mismatch = [&](std::uint64_t count) {
+        return MeshFormatError("binary STL header counts " + std::to_string(count) + " triangles (" +
+                               std::to_string(84 + 50 * count) + " bytes) but the file has " +
+                               std::to_string(file.size()) + " bytes");
+    };
+    std::uint64_t count = 0;
+    if (head.size() == 84) {
+        count = le_u32(head.data() + 80);
+        if (file.size() == 84 + 50 * count) return read_binary(file, count, max_faces);
+        if (!solid) throw mismatch(count);
+    }
+    if (!solid) throw MeshFormatError("not an STL file (shorter than a binary STL header, no 'solid')");
+    const std::string bytes = file.read_all();
     const bool text = std::none_of(bytes.begin(), bytes.end(), [](char c) {
         return (c >= 0 && c < 9) || (c > 13 && c < 32);
     });
-    if (bytes.size() >= 84) {
-        const std::uint64_t count = le_u32(bytes.data() + 80);
-        if (bytes.size() == 84 + 50 * count) return read_binary(bytes, count, max_faces);
-        if (!text || bytes.substr(0, 5) != "solid")
-            throw MeshFormatError("binary STL header counts " + std::to_string(count) + " triangles (" +
-                                  std::to_string(84 + 50 * count) + " bytes) but the file has " +
-                                  std::to_string(bytes.size()) + " bytes");
-    }
-    if (bytes.substr(0, 5) == "solid") return read_ascii(bytes, max_faces);
-    throw MeshFormatError("not an STL file (shorter than a binary STL header, no 'solid')");
+    if (!text && head.size() == 84) throw mismatch(count);
+    return read_ascii(bytes, max_faces);
 }
 
 }  // namespace kerf::eval::mesh_format

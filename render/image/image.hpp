@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "render/image/big_buffer.hpp"
 
@@ -32,15 +33,21 @@ public:
 };
 
 // Throws ImageWriteError (one line) if write_image() could not write `path`:
-// OpenImageIO has no writer for its extension, or its folder is missing or
-// refuses a new file. The CLI calls it before evaluating and rendering, so a
-// typo in -o costs nothing.
-void check_output_path(const std::string& path);
+// OpenImageIO has no writer for its extension, its folder is missing or
+// refuses a new file, `path` is one of `inputs` (the same file by device and
+// inode: another spelling, a symlink or a hard link), or the format cannot
+// hold a `width` x `height` image (JPEG 2000 below 32 pixels; 0: not
+// checked). The CLI calls it before evaluating and rendering, so a typo in
+// -o costs nothing.
+void check_output_path(const std::string& path, int width = 0, int height = 0,
+                       const std::vector<std::string>& inputs = {});
 
 // Format by extension (OpenImageIO). EXR/TIFF/HDR/PFM: linear float; others
 // (PNG, JPEG, ...): 8-bit, colour sRGB-encoded, AOVs normalised (docs/spec.md §7).
-// Written to a temporary file in the same folder, then renamed over `path`,
-// so a failed write leaves an existing file intact.
+// Encoded into memory, then written to a temporary file in the same folder
+// with every write, fsync and close checked, and renamed over `path`: a
+// failed write ("no space left on device") throws and leaves an existing
+// file intact and no temporary behind (replace_file.hpp).
 void write_image(const Image& image, const std::string& path);
 
 // Whether write_image() stores `path` in 8 bits (then a colour render can

@@ -26,9 +26,9 @@ OiioModule load() {
         }
         OiioModule m;
         m.can_write = reinterpret_cast<decltype(m.can_write)>(::dlsym(h, "kerf_oiio_can_write"));
-        m.write = reinterpret_cast<decltype(m.write)>(::dlsym(h, "kerf_oiio_write"));
-        if (m.can_write && m.write) return m;
-        why = p.string() + " lacks kerf_oiio_write";
+        m.encode = reinterpret_cast<decltype(m.encode)>(::dlsym(h, "kerf_oiio_encode"));
+        if (m.can_write && m.encode) return m;
+        why = p.string() + " lacks kerf_oiio_encode";
     }
     throw ImageWriteError("cannot load the OpenImageIO module " + std::string(KERF_OIIO_MODULE_NAME) +
                           (why.empty() ? " (not beside kerf nor at " KERF_OIIO_MODULE_PATH ")" : ": " + why));

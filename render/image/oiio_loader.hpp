@@ -5,10 +5,13 @@
 
 namespace kerf::render {
 
+// The module's C interface (oiio_module/oiio_module.cpp): `encode` hands
+// the encoded file to `sink` and never writes `path` itself.
 struct OiioModule {
+    using Sink = void (*)(void* context, const void* bytes, std::size_t size);
     int (*can_write)(const char* path) = nullptr;
-    int (*write)(const char* path, const void* pixels, int as_float, int width, int height, int channels, int srgb,
-                 char* error, std::size_t error_size) = nullptr;
+    int (*encode)(const char* path, const void* pixels, int as_float, int width, int height, int channels, int srgb,
+                  Sink sink, void* context, char* error, std::size_t error_size) = nullptr;
 };
 
 // The loaded module; throws ImageWriteError naming the file and dlerror()

@@ -1,7 +1,8 @@
 // PNG output: the image data deflated in parallel bands, the chunks around
-// it by libpng. libpng reports errors by longjmp: everything between setjmp
-// and the calls that may jump is plain C data (the compressed stream is
-// built before setjmp), so no destructor is ever skipped.
+// it by libpng, all into memory (write.cpp then replaces the file). libpng
+// reports errors by longjmp: everything between setjmp and the calls that
+// may jump is plain C data (the compressed stream is built before setjmp,
+// the output vector is the caller's), so no destructor is ever skipped.
 #include "render/image/png_file.hpp"
 
 #include <csetjmp>
@@ -9,6 +10,7 @@
 #include <cstring>
 
 #include <algorithm>
+#include <new>
 #include <vector>
 
 #include <png.h>
@@ -22,6 +24,7 @@ namespace {
 struct ErrorSink {
     std::jmp_buf jump;
     char message[256];
+    std::vector<unsigned char>* file;
 };
 
 void on_error(png_structp png, png_const_charp msg) {
@@ -31,6 +34,21 @@ void on_error(png_structp png, png_const_charp msg) {
 }
 
 void on_warning(png_structp, png_const_charp) {}
+
+// libpng's output: appended to the caller's vector. png_error() longjmps,
+// so it is called only after the try block has been left.
+void on_write(png_structp png, png_bytep data, png_size_t size) {
+    auto* sink = static_cast<ErrorSink*>(png_get_error_ptr(png));
+    bool grown = true;
+    try {
+        sink->file->insert(sink->file->end(), data, data + size);
+    } catch (const std::bad_alloc&) {
+        grown = false;
+    }
+    if (!grown) png_error(png, "out of memory");
+}
+
+void on_flush(png_structp) {}
 
 // One band of rows as a raw deflate segment: each row behind its filter
 // byte ("up": minus the row above; the first image row has none above).
@@ -98,14 +116,14 @@ std::vector<unsigned char> deflate_image(const std::uint8_t* pixels, std::size_t
 
 // Returns false with sink.message set. libpng writes the signature and the
 // header chunks; the image data is deflated above and goes in as IDAT chunks.
-bool write_rows(std::FILE* f, const std::uint8_t* pixels, int width, int height, int channels, bool srgb,
-                ErrorSink& sink) {
+bool encode_file(const std::uint8_t* pixels, int width, int height, int channels, bool srgb, ErrorSink& sink) {
     const std::size_t stride = std::size_t(width) * std::size_t(channels);
     const std::vector<unsigned char> idat = deflate_image(pixels, stride, height);
     if (idat.empty()) {
         std::snprintf(sink.message, sizeof sink.message, "compression failed");
         return false;
     }
+    sink.file->reserve(idat.size() + 4096);  // the chunks around it are a few hundred bytes
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &sink, on_error, on_warning);
     if (!png) {
         std::snprintf(sink.message, sizeof sink.message, "out of memory");
@@ -117,7 +135,7 @@ bool write_rows(std::FILE* f, const std::uint8_t* pixels, int width, int height,
         if (!info) std::snprintf(sink.message, sizeof sink.message, "out of memory");
         return false;
     }
-    png_init_io(png, f);
+    png_set_write_fn(png, nullptr, on_write, on_flush);
     const int type = channels == 1   ? PNG_COLOR_TYPE_GRAY
                      : channels == 3 ? PNG_COLOR_TYPE_RGB
                                      : PNG_COLOR_TYPE_RGB_ALPHA;
@@ -137,17 +155,13 @@ bool write_rows(std::FILE* f, const std::uint8_t* pixels, int width, int height,
 
 }  // namespace
 
-std::string write_png(const std::string& path, const std::uint8_t* pixels, int width, int height, int channels,
-                      bool srgb) {
+std::string encode_png(std::vector<unsigned char>& file, const std::uint8_t* pixels, int width, int height,
+                       int channels, bool srgb) {
     if (channels != 1 && channels != 3 && channels != 4) return "PNG holds 1, 3 or 4 channels";
-    std::FILE* f = std::fopen(path.c_str(), "wb");
-    if (!f) return std::strerror(errno);
     ErrorSink sink{};
-    const bool ok = write_rows(f, pixels, width, height, channels, srgb, sink);
-    const bool closed = std::fclose(f) == 0;
-    if (!ok) return sink.message;
-    if (!closed) return std::strerror(errno);
-    return {};
+    sink.file = &file;
+    file.clear();
+    return encode_file(pixels, width, height, channels, srgb, sink) ? std::string() : std::string(sink.message);
 }
 
 }  // namespace kerf::render

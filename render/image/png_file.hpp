@@ -4,13 +4,15 @@
 #pragma once
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace kerf::render {
 
-// Writes 8-bit pixels (1 grey, 3 RGB or 4 RGBA channels, rows top to
-// bottom). `srgb` marks colour images with PNG's sRGB chunk. Returns an
-// empty string on success, else what went wrong.
-std::string write_png(const std::string& path, const std::uint8_t* pixels, int width, int height, int channels,
-                      bool srgb);
+// Encodes 8-bit pixels (1 grey, 3 RGB or 4 RGBA channels, rows top to
+// bottom) as the bytes of a PNG file into `file`. `srgb` marks colour
+// images with PNG's sRGB chunk. Returns an empty string on success, else
+// what went wrong.
+std::string encode_png(std::vector<unsigned char>& file, const std::uint8_t* pixels, int width, int height,
+                       int channels, bool srgb);
 
 }  // namespace kerf::render

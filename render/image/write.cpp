@@ -1,28 +1,27 @@
-// Image output, written atomically (temporary file in the destination
-// folder, then rename), so readers never see half a file and a failed write
-// keeps the previous image. PNG goes through libpng (png_file.cpp); every
-// other format through OpenImageIO, loaded only then (oiio_loader.cpp).
+// Image output: every format is encoded into memory — PNG by libpng
+// (png_file.cpp), the others by OpenImageIO, loaded only then
+// (oiio_loader.cpp) — and the bytes are written atomically and checked by
+// replace_file(), so readers never see half a file and a failed write
+// (a full disk, a signal) keeps the previous image.
 #include "render/image/image.hpp"
 
 #include <algorithm>
-#include <cstdint>
-#include <atomic>
-#include <cerrno>
 #include <cmath>
-#include <cstring>
+#include <cstdint>
 #include <filesystem>
 #include <limits>
 #include <string>
 #include <system_error>
+#include <vector>
 
-#include <fcntl.h>
-#include <unistd.h>
+#include <sys/stat.h>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include "render/image/oiio_loader.hpp"
 #include "render/image/png_file.hpp"
+#include "render/image/replace_file.hpp"
 #include "render/image/srgb_bytes.hpp"
 
 namespace kerf::render {
@@ -80,17 +79,46 @@ BigVector<std::uint8_t> encode_8bit(const Image& im) {
     return out;
 }
 
-std::string temp_name(const fs::path& target) {
-    static std::atomic<unsigned> counter{0};
-    // Keeps the extension: OpenImageIO picks the writer by the file name.
-    return (target.parent_path() / ("." + target.stem().string() + ".kerf-tmp-" + std::to_string(::getpid()) + "-" +
-                                    std::to_string(counter++) + target.extension().string()))
-        .string();
+// OpenJPEG codes 6 resolution levels, which need 2^5 pixels each way; below
+// that its writer reported success over a 77-byte file that reads back as
+// nothing. 0 x 0: the size is not known yet.
+void check_size(const std::string& path, const std::string& ext, int width, int height) {
+    constexpr int kSide = 32;
+    if ((ext == ".jp2" || ext == ".j2k") && width > 0 && height > 0 && (width < kSide || height < kSide))
+        throw ImageWriteError("cannot write " + path + ": JPEG 2000 needs at least 32x32 pixels (OpenJPEG's 6 " +
+                              "resolution levels), the image is " + std::to_string(width) + "x" +
+                              std::to_string(height));
 }
+
+// Identity, not spelling: "./a.png", a symlink or a hard link to the input
+// are the input too.
+bool same_file(const std::string& a, const std::string& b) {
+    struct stat sa {}, sb {};
+    return ::stat(a.c_str(), &sa) == 0 && ::stat(b.c_str(), &sb) == 0 && sa.st_dev == sb.st_dev &&
+           sa.st_ino == sb.st_ino;
+}
+
+// The OpenImageIO module's encoder hands the file's bytes here; they are
+// written (and any failure kept) before it returns.
+struct FileSink {
+    explicit FileSink(const std::string& path) : target(&path) {}
+    const std::string* target;
+    std::string message;
+    bool called = false;
+    static void receive(void* context, const void* bytes, std::size_t size) {
+        auto* sink = static_cast<FileSink*>(context);
+        sink->called = true;
+        try {
+            sink->message = replace_file(*sink->target, bytes, size);
+        } catch (const std::exception& e) {  // nothing may unwind through the module's C frames
+            sink->message = e.what();
+        }
+    }
+};
 
 }  // namespace
 
-void check_output_path(const std::string& path) {
+void check_output_path(const std::string& path, int width, int height, const std::vector<std::string>& inputs) {
     const fs::path target(path);
     const std::string ext = target.extension().string();
     if (lower_extension(target) != ".png" && !oiio_module().can_write(path.c_str()))
@@ -102,13 +130,14 @@ void check_output_path(const std::string& path) {
     const fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
     if (!fs::is_directory(folder, ec))
         throw ImageWriteError("cannot write " + path + ": no folder '" + folder.string() + "'");
+    for (const std::string& input : inputs)
+        if (same_file(path, input))
+            throw ImageWriteError("cannot write " + path + ": it is the input file " + input);
+    check_size(path, lower_extension(target), width, height);
     // The folder must accept the temporary file write_image() renames over
-    // the target: create and remove one now (permissions, read-only mounts).
-    const std::string probe = temp_name(target);
-    const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0644);
-    if (fd < 0) throw ImageWriteError("cannot write " + path + ": " + std::strerror(errno));
-    ::close(fd);
-    ::unlink(probe.c_str());
+    // the target (permissions, read-only mounts).
+    if (const std::string why = probe_folder(path); !why.empty())
+        throw ImageWriteError("cannot write " + path + ": " + why);
 }
 
 bool is_8bit_output(const std::string& path) { return !is_float_format(lower_extension(fs::path(path))); }
@@ -125,33 +154,31 @@ void write_image(const Image& image, const std::string& path) {
     const bool as_float = is_float_format(ext);
     if (as_float && as_bytes)
         throw ImageWriteError("cannot write " + path + ": the image was rendered in 8 bits, the format holds floats");
+    check_size(path, ext, image.width, image.height);
     const bool srgb = !as_float && image.content == ImageContent::Color;
-    const std::string tmp = temp_name(target);
     BigVector<std::uint8_t> encoded;
     if (!as_float && !as_bytes) encoded = encode_8bit(image);
     const std::uint8_t* bytes = as_bytes ? image.srgb8.data() : encoded.data();
+    // Every format is encoded into memory, then written by replace_file().
     std::string message;
     if (ext == ".png") {
-        message = write_png(tmp, bytes, image.width, image.height, image.channels, srgb);
+        std::vector<unsigned char> file;
+        message = encode_png(file, bytes, image.width, image.height, image.channels, srgb);
+        if (message.empty()) message = replace_file(path, file.data(), file.size());
     } else {
         const OiioModule& oiio = oiio_module();
         char error[512] = "";
         const void* data = as_float ? static_cast<const void*>(image.pixels.data()) : bytes;
-        if (!oiio.write(tmp.c_str(), data, as_float, image.width, image.height, image.channels, srgb, error,
-                        sizeof error))
+        FileSink sink(path);
+        if (!oiio.encode(path.c_str(), data, as_float, image.width, image.height, image.channels, srgb,
+                         FileSink::receive, &sink, error, sizeof error))
             message = error[0] ? error : "write failed";
+        else
+            message = sink.called ? sink.message : "the encoder produced no file";
     }
-    std::error_code ec;
     if (!message.empty()) {
-        fs::remove(tmp, ec);
         std::replace(message.begin(), message.end(), '\n', ' ');
         throw ImageWriteError("cannot write " + path + ": " + message);
-    }
-    fs::rename(tmp, target, ec);
-    if (ec) {
-        std::error_code ignored;
-        fs::remove(tmp, ignored);
-        throw ImageWriteError("cannot write " + path + ": " + ec.message());
     }
 }
 

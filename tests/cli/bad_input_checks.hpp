@@ -39,16 +39,23 @@ inline std::size_t count_of(const std::string& text, const std::string& what) {
 // leaves room for long paths while a 1 MB echo would be caught.
 constexpr std::size_t kMaxStderr = 1000;
 
+// What run_kerf_bounded allows each command.
+struct Bounds {
+    int seconds = 60;
+    long memory_kb = 2'000'000;
+};
+
 // Runs both commands on `path` with extra `flags`; returns check's head
 // (render's must be identical: it evaluates and lowers the same way).
-inline Located reject(const std::string& path, const std::filesystem::path& dir, const std::string& flags = "") {
+inline Located reject(const std::string& path, const std::filesystem::path& dir, const std::string& flags = "",
+                      const Bounds& bounds = {}) {
     Located check_head;
     std::string check_line;
     for (const std::string command : {"check", "render"}) {
         const auto image = dir / "must_not_exist.png";
         std::string args = command + " '" + path + "' " + flags;
         if (command == "render") args += " -W 16 -H 16 -o '" + image.string() + "'";
-        const KerfRun r = run_kerf_bounded(args, dir);
+        const KerfRun r = run_kerf_bounded(args, dir, bounds.seconds, bounds.memory_kb);
         INFO("kerf " << args << "\nstderr: " << r.err.substr(0, 2 * kMaxStderr));
         CHECK(r.status == 1);
         const std::string line = first_line(r.err);
@@ -70,8 +77,8 @@ inline Located reject(const std::string& path, const std::filesystem::path& dir,
 }
 
 inline void expect_error(const std::string& path, const std::filesystem::path& dir, int line, int col,
-                         const std::string& message, const std::string& flags = "") {
-    const Located head = reject(path, dir, flags);
+                         const std::string& message, const std::string& flags = "", const Bounds& bounds = {}) {
+    const Located head = reject(path, dir, flags, bounds);
     CHECK(head.line == line);
     CHECK(head.col == col);
     CHECK(head.message == message);

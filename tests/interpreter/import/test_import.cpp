@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstring>
+#include <filesystem>
 #include <functional>
 
 #include "tests/interpreter/eval_helpers.hpp"
@@ -140,6 +141,13 @@ std::string error_in(const std::string& path, kerf::EvalOptions opt = {}) {
     return "no error";
 }
 
+// The message of the error importing `bytes` as `name` (the location left out).
+std::string err_of(TempTree& t, const std::string& name, const std::string& bytes) {
+    t.write(name, bytes);
+    const std::string e = error_in(t.write("s.sdl", "import(\"" + name + "\");\n"));
+    return e.rfind("1:1: error: ", 0) == 0 ? e.substr(12) : e;
+}
+
 // Signed volume (positive for counter-clockwise-outward faces), area and
 // bounds of a polygon mesh, by fanning each face.
 struct Measures {
@@ -243,4 +251,41 @@ TEST_CASE("the list limit bounds the faces a file may bring", "[import][limits]"
           "1:1: error: import(\"cube.stl\"): line 37: more than 5 triangles (--max-list)");
     CHECK(error_in(t.write("s.sdl", "import(\"cube.ply\");\n"), opt) ==
           "1:1: error: import(\"cube.ply\"): the file declares 6 face elements, more than the limit 5 (--max-list)");
+}
+
+TEST_CASE("a file longer than the import bound is refused before it is read", "[import][limits]") {
+    // Sparse: 2 GiB of file costs no disk. It used to be read whole (3.8 GB
+    // at the peak) before its header was found wrong.
+    TempTree t;
+    const std::string big = t.write("big.stl", "");
+    std::filesystem::resize_file(big, std::uint64_t(2) << 30);
+    CHECK(error_in(t.write("s.sdl", "\n  import(\"big.stl\");\n")) ==
+          "2:3: error: import(\"big.stl\"): longer than 256 MiB (2147483648 bytes), too large to import");
+}
+
+TEST_CASE("a binary STL's count and a PLY's element counts are checked against the file's size first",
+          "[import][limits]") {
+    TempTree t;
+    // Below the bound, but a header claiming 2^32 - 1 triangles.
+    std::string lying = "binary STL";
+    lying.resize(80, ' ');
+    lying += std::string("\xff\xff\xff\xff", 4);
+    const std::string stl = t.write("lying.stl", lying);
+    std::filesystem::resize_file(stl, std::uint64_t(200) << 20);
+    CHECK(error_in(t.write("s.sdl", "import(\"lying.stl\");\n")) ==
+          "1:1: error: import(\"lying.stl\"): binary STL header counts 4294967295 triangles (214748364834 bytes) "
+          "but the file has 209715200 bytes");
+    // Each vertex takes 4 + 4 + 8 + 1 bytes, each face at least its list
+    // length: 8 vertices need 136 bytes, and 135 follow.
+    const std::string ply = ply_binary(false);
+    const std::size_t body = ply_header("binary_little_endian").size();
+    CHECK(err_of(t, "short.ply", ply.substr(0, body + 135)) ==
+          "import(\"short.ply\"): the file declares 8 vertex elements but only 135 bytes follow (truncated?)");
+    CHECK(err_of(t, "faces.ply", ply.substr(0, body + 136 + 5)) ==
+          "import(\"faces.ply\"): the file declares 6 face elements but only 5 bytes follow (truncated?)");
+    // An element without properties holds no data, however large its count.
+    std::string empty_element = ply_ascii();
+    empty_element.insert(empty_element.find("end_header"), "element junk 1000000000000\n");
+    t.write("junk.ply", empty_element);
+    CHECK(eval_file(t.write("s.sdl", "import(\"junk.ply\");\n")).graph.meshes.at(0).faces.size() == 6);
 }

@@ -206,3 +206,49 @@ TEST_CASE("writing to a missing folder or an unknown format throws a one-line er
                     render::ImageWriteError);
     fs::remove_all(dir);
 }
+
+TEST_CASE("JPEG 2000 is refused below 32 pixels each way, and reads back from 32", "[image_io]") {
+    // OpenJPEG's writer reported success below 32 pixels over a 77-byte file
+    // that reads back as nothing.
+    const fs::path dir = fresh_dir("jp2");
+    const auto sized = [](int w, int h) {
+        render::Image im;
+        im.width = w, im.height = h, im.channels = 3;
+        for (int i = 0; i < w * h * 3; ++i) im.pixels.push_back(float(i % 7) / 7);
+        return im;
+    };
+    for (const auto& [w, h] : {std::pair{31, 32}, std::pair{32, 31}, std::pair{1, 1}}) {
+        INFO(w << "x" << h);
+        CHECK_THROWS_WITH(render::write_image(sized(w, h), (dir / "small.jp2").string()),
+                          Catch::Contains("JPEG 2000 needs at least 32x32 pixels"));
+        CHECK_FALSE(fs::exists(dir / "small.jp2"));
+    }
+    for (const char* name : {"ok.jp2", "ok.j2k"}) {
+        render::write_image(sized(32, 40), (dir / name).string());
+        int w, h, c;
+        OIIO::TypeDesc t;
+        const auto px = read_back(dir / name, w, h, c, t);
+        CHECK(w == 32);
+        CHECK(h == 40);
+        CHECK(c == 3);
+    }
+    fs::remove_all(dir);
+}
+
+TEST_CASE("formats whose writer opens the file itself are encoded in memory too", "[image_io]") {
+    // SGI's writer has no IOProxy: it writes to a memory file, and kerf
+    // writes the bytes.
+    const fs::path dir = fresh_dir("sgi");
+    render::Image im = gradient(3, render::ImageContent::Normal);
+    render::write_image(im, (dir / "n.sgi").string());
+    int w, h, c;
+    OIIO::TypeDesc t;
+    const auto px = read_back(dir / "n.sgi", w, h, c, t);
+    REQUIRE(px.size() == im.pixels.size());
+    for (std::size_t i = 0; i < px.size(); ++i)
+        CHECK(std::lround(px[i] * 255) == std::lround(std::clamp(0.5f * im.pixels[i] + 0.5f, 0.0f, 1.0f) * 255));
+    int files = 0;
+    for (const auto& e : fs::directory_iterator(dir)) files += e.is_regular_file() ? 1 : 0;
+    CHECK(files == 1);
+    fs::remove_all(dir);
+}
