@@ -4,6 +4,7 @@
 
 #include "interpreter/import/mesh_import.hpp"
 #include "interpreter/modules/args.hpp"
+#include "interpreter/modules/mesh_check.hpp"
 #include "interpreter/modules/module_call.hpp"
 
 namespace kerf::eval {
@@ -19,6 +20,28 @@ std::optional<double> radius(const Args& a, std::size_t ri, std::size_t di, cons
 }
 
 using P = csg::PrimKind;
+
+// Orients a solid mesh (mesh_check.hpp) and says what it changed; an open,
+// non-manifold or non-orientable one has no inside and becomes a thin shell.
+void orient(ModuleCall& c, graph::PolygonMesh& mesh) {
+    if (!mesh.solid) return;  // a shell by request: its faces need no inside
+    const MeshCheck m = check_mesh(mesh);
+    if (m.faces_turned == m.faces)
+        c.warn("all " + std::to_string(m.faces) +
+               " faces were wound inside out and have been reversed (faces go clockwise seen from outside)");
+    else if (m.faces_turned > 0)
+        c.warn(std::to_string(m.faces_turned) + " of " + std::to_string(m.faces) +
+               (m.faces_turned == 1 ? " faces was" : " faces were") + " wound against their neighbours and turned round");
+    if (m.closed()) return;
+    std::string why;
+    if (m.open_edges) why = std::to_string(m.open_edges) + (m.open_edges == 1 ? " edge belongs" : " edges belong") + " to one face only";
+    if (m.nonmanifold_edges)
+        why += (why.empty() ? "" : ", ") + std::to_string(m.nonmanifold_edges) +
+               (m.nonmanifold_edges == 1 ? " edge is" : " edges are") + " shared by more than two faces";
+    if (m.nonorientable) why += std::string(why.empty() ? "" : ", ") + "its faces cannot be oriented consistently";
+    c.warn("the mesh is not a closed solid (" + why + "): it is rendered as a thin shell");
+    mesh.solid = false;
+}
 
 void sphere(ModuleCall& c) {
     const Args& a = c.args;
@@ -133,6 +156,7 @@ void polyhedron(ModuleCall& c) {
         ++fi;
     }
     if (mesh.faces.size() < 4) arg_error(a, "needs at least 4 faces, got " + std::to_string(mesh.faces.size()));
+    orient(c, mesh);
     c.add_primitive(P::Mesh, {}, c.add_mesh(std::move(mesh)));
 }
 
@@ -151,6 +175,7 @@ void import_file(ModuleCall& c) {
             throw SourceError(c.st.loc, "import(\"" + a[0].as_string() + "\"): " + e.what());
         }
         mesh.solid = solid;
+        orient(c, mesh);
         it = c.state().imported.emplace(key, c.add_mesh(std::move(mesh))).first;
     }
     c.add_primitive(P::Mesh, {}, it->second);
