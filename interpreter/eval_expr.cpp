@@ -89,7 +89,7 @@ void Evaluator::bind(Scope& s, std::string_view name, Value v, const SourceLoc* 
         dyn_.push_back(DynVar{name, std::move(v)});
         return;
     }
-    s.vars.push_back(VarSlot{name, std::move(v), loc, true});
+    s.add(VarSlot{name, std::move(v), loc, true});
 }
 
 // let (a = 1, b = a + 1): each binding sees the previous ones.
@@ -194,7 +194,7 @@ void Evaluator::expand_for(const ast::Expr& e, std::size_t k, Scope& loop, Value
     bool dollar = is_dollar(b.name);
     std::size_t slot = dollar ? dyn_.size() : loop.vars.size();
     if (dollar) dyn_.push_back(DynVar{b.name, Value()});
-    else loop.vars.push_back(VarSlot{b.name, Value(), &b.loc, true});
+    else loop.add(VarSlot{b.name, Value(), &b.loc, true});
     for (std::uint64_t i = 0; i < n; ++i) {
         count_step(b.loc);
         Value item = seq.is_range() ? Value(seq.as_range().at(i)) : seq.as_list()[i];
@@ -204,7 +204,7 @@ void Evaluator::expand_for(const ast::Expr& e, std::size_t k, Scope& loop, Value
         else expand_element(*e.items[0], loop, out);
     }
     if (dollar) dyn_.resize(slot);
-    else loop.vars.resize(slot);
+    else loop.truncate(slot);
 }
 
 void Evaluator::expand_element(const ast::Expr& e, Scope& s, ValueList& out) {

@@ -1,6 +1,7 @@
 // Statements: blocks and their bindings, modules and children(), for/let/
 // echo/assert/if, include and use.
 #include <optional>
+#include <unordered_map>
 
 #include "grammar/parser.hpp"
 #include "interpreter/evaluator.hpp"
@@ -9,13 +10,21 @@ namespace kerf::eval {
 
 namespace {
 
-void check_unique(std::vector<const ast::Stmt*>& seen, const ast::Stmt& st, const char* what) {
-    for (const ast::Stmt* prev : seen)
-        if (prev->name == st.name)
+// Names bound twice in one block (by hash: a file may bind 100,000 names).
+class UniqueNames {
+public:
+    explicit UniqueNames(std::size_t expected) { first_.reserve(expected); }
+    void check(std::vector<const ast::Stmt*>& seen, const ast::Stmt& st, const char* what) {
+        auto [it, fresh] = first_.emplace(st.name, &st);
+        if (!fresh)
             throw SourceError(st.loc, std::string(what) + "'" + st.name + "' is already defined at " +
-                                          line_ref(st.loc, prev->loc));
-    seen.push_back(&st);
-}
+                                          line_ref(st.loc, it->second->loc));
+        seen.push_back(&st);
+    }
+
+private:
+    std::unordered_map<std::string_view, const ast::Stmt*> first_;
+};
 
 }  // namespace
 
@@ -71,14 +80,15 @@ const BlockInfo& Evaluator::prepare(const std::vector<ast::StmtPtr>& stmts) {
     {
         flatten(stmts, flat);
         std::vector<const ast::Stmt*> assigned;
+        UniqueNames names(flat.size()), functions(0), modules(0);  // three namespaces, as in OpenSCAD
         for (const ast::Stmt* st : flat) {
             switch (st->kind) {
                 case ast::StmtKind::Assign:
-                    check_unique(assigned, *st, "");
+                    names.check(assigned, *st, "");
                     info.assigns.push_back(st);
                     break;
-                case ast::StmtKind::FunctionDef: check_unique(info.functions, *st, "function "); break;
-                case ast::StmtKind::ModuleDef: check_unique(info.modules, *st, "module "); break;
+                case ast::StmtKind::FunctionDef: functions.check(info.functions, *st, "function "); break;
+                case ast::StmtKind::ModuleDef: modules.check(info.modules, *st, "module "); break;
                 case ast::StmtKind::Use: info.used.push_back(load_use(*st)); break;
                 case ast::StmtKind::Empty:
                 case ast::StmtKind::Include: break;
@@ -114,7 +124,7 @@ void Evaluator::bind_block(const BlockInfo& info, Scope& scope, bool top_level) 
     scope.used = info.used;
     scope.vars.reserve(info.assigns.size());
     for (const ast::Stmt* a : info.assigns)
-        if (!is_dollar(a->name)) scope.vars.push_back(VarSlot{a->name, Value(), &a->loc, false});
+        if (!is_dollar(a->name)) scope.add(VarSlot{a->name, Value(), &a->loc, false});
     std::size_t slot = 0;
     for (const ast::Stmt* a : info.assigns) {
         Value v;
@@ -276,7 +286,7 @@ void Evaluator::stmt_for(const ast::Stmt& st, std::size_t k, Scope& loop, Scope&
     bool dollar = is_dollar(b.name);
     std::size_t slot = dollar ? dyn_.size() : loop.vars.size();
     if (dollar) dyn_.push_back(DynVar{b.name, Value()});
-    else loop.vars.push_back(VarSlot{b.name, Value(), &b.loc, true});
+    else loop.add(VarSlot{b.name, Value(), &b.loc, true});
     const BlockInfo& body = prepare(st.body);
     for (std::uint64_t i = 0; i < n; ++i) {
         count_step(b.loc);
@@ -295,7 +305,7 @@ void Evaluator::stmt_for(const ast::Stmt& st, std::size_t k, Scope& loop, Scope&
         }
     }
     if (dollar) dyn_.resize(slot);
-    else loop.vars.resize(slot);
+    else loop.truncate(slot);
 }
 
 // ---------------------------------------------------------------- statements

@@ -4,7 +4,10 @@
 // are not first-class values, so no definition can outlive its scope, and
 // `use`d files' scopes live as long as the evaluator.
 #pragma once
+#include <cstdint>
+#include <memory>
 #include <string>
+#include <unordered_map>
 #include <string_view>
 #include <vector>
 
@@ -33,7 +36,7 @@ struct VarSlot {
 struct Scope {
     Scope* parent = nullptr;
     const ModuleFrame* module = nullptr;  // inherited from the parent
-    std::vector<VarSlot> vars;
+    std::vector<VarSlot> vars;            // grow with add(), shrink with truncate()
     std::vector<const ast::Stmt*> functions;
     std::vector<const ast::Stmt*> modules;
     std::vector<Scope*> used;  // top-level scopes of `use`d files
@@ -43,10 +46,40 @@ struct Scope {
     Scope(const Scope&) = delete;
     Scope& operator=(const Scope&) = delete;
 
+    // The first slot bound to `name` in this scope. Small scopes (calls,
+    // loops) are searched in order; a scope that grows past kIndexFrom
+    // names (a file of thousands of top-level bindings) gets a hash index,
+    // so binding and looking up n names stays linear in n, not quadratic.
     VarSlot* find_local(std::string_view name) {
+        if (index_) {
+            auto it = index_->find(name);
+            return it == index_->end() ? nullptr : &vars[it->second];
+        }
         for (VarSlot& v : vars)
             if (v.name == name) return &v;
         return nullptr;
+    }
+    void add(VarSlot v) {
+        vars.push_back(std::move(v));
+        if (index_) index_->emplace(vars.back().name, std::uint32_t(vars.size() - 1));
+        else if (vars.size() > kIndexFrom) build_index();
+    }
+    void truncate(std::size_t n) {
+        if (index_)
+            for (std::size_t i = n; i < vars.size(); ++i) {
+                auto it = index_->find(vars[i].name);
+                if (it != index_->end() && it->second == i) index_->erase(it);
+            }
+        vars.resize(n);
+    }
+
+private:
+    static constexpr std::size_t kIndexFrom = 32;
+    std::unique_ptr<std::unordered_map<std::string_view, std::uint32_t>> index_;
+    void build_index() {
+        index_ = std::make_unique<std::unordered_map<std::string_view, std::uint32_t>>();
+        index_->reserve(2 * vars.size());
+        for (std::size_t i = 0; i < vars.size(); ++i) index_->emplace(vars[i].name, std::uint32_t(i));
     }
 };
 
