@@ -26,7 +26,7 @@ double highlight(double x, double s) {
 }  // namespace
 
 Shader::Shader(const csg::Scene& scene, const CsgTracer& tracer, int max_reflect_depth)
-    : scene_(scene), tracer_(tracer), max_depth_(max_reflect_depth), offset_(100 * tracer.epsilon()) {}
+    : scene_(scene), tracer_(tracer), max_depth_(max_reflect_depth) {}
 
 glm::dvec3 Shader::radiance(const TraceRay& ray, int depth, ThreadState& ts) const {
     TraceHit hit;
@@ -38,7 +38,7 @@ glm::dvec3 Shader::radiance(const TraceRay& ray, int depth, ThreadState& ts) con
     const csg::Leaf& leaf = scene_.leaves[hit.surface.mat_leaf];
     const csg::Material& m = leaf.material < scene_.materials.size() ? scene_.materials[leaf.material] : fallback;
     const glm::dvec3 albedo = hit.surface.cut ? m.interior : m.color;
-    const glm::dvec3 origin = p + offset_ * n;
+    const glm::dvec3 origin = p + tracer_.surface_offset(hit, p) * n;
     const glm::dvec3 view = -glm::normalize(ray.d);
 
     glm::dvec3 c = kAmbient * albedo;

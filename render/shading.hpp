@@ -26,15 +26,10 @@ public:
     // Linear RGB seen along the ray; `depth` counts reflections so far.
     glm::dvec3 radiance(const TraceRay& ray, int depth, ThreadState& ts) const;
 
-    // Shadow and reflection rays start this far off the surface, along the
-    // normal: proportional to the scene's coordinates, not a fixed epsilon.
-    double surface_offset() const { return offset_; }
-
 private:
     const csg::Scene& scene_;
     const CsgTracer& tracer_;
     int max_depth_;
-    double offset_;
 };
 
 }  // namespace kerf::render

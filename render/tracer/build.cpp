@@ -65,8 +65,7 @@ CsgTracer::Impl::~Impl() {
     if (device) rtcReleaseDevice(device);
 }
 
-void CsgTracer::Impl::build_accel(Accel& accel, const std::vector<std::uint32_t>& nodes, bool top_level,
-                                  double scale) {
+void CsgTracer::Impl::build_accel(Accel& accel, const std::vector<std::uint32_t>& nodes, bool top_level) {
     for (std::uint32_t node : nodes) {
         const csg::Aabb& b = scene.nodes[node].bounds;
         if (b.empty()) continue;  // an empty solid can never be hit
@@ -74,15 +73,18 @@ void CsgTracer::Impl::build_accel(Accel& accel, const std::vector<std::uint32_t>
             accel.always.push_back(node);
             continue;
         }
-        // Outward rounding plus slack for the float ray's own rounding.
+        // Relative to the frame, rounded outwards, plus slack for the float
+        // ray's own rounding (its origin lies within ~frame_radius, see
+        // make_state).
+        const glm::dvec3 lo = b.lo - frame, hi = b.hi - frame;
+        const double pad = 1e-6 * frame_radius;
         RTCBounds r;
-        const double pad = 1e-6 * scale;
-        r.lower_x = round_down(b.lo.x - pad - 1e-6 * std::abs(b.lo.x));
-        r.lower_y = round_down(b.lo.y - pad - 1e-6 * std::abs(b.lo.y));
-        r.lower_z = round_down(b.lo.z - pad - 1e-6 * std::abs(b.lo.z));
-        r.upper_x = round_up(b.hi.x + pad + 1e-6 * std::abs(b.hi.x));
-        r.upper_y = round_up(b.hi.y + pad + 1e-6 * std::abs(b.hi.y));
-        r.upper_z = round_up(b.hi.z + pad + 1e-6 * std::abs(b.hi.z));
+        r.lower_x = round_down(lo.x - pad - 1e-6 * std::abs(lo.x));
+        r.lower_y = round_down(lo.y - pad - 1e-6 * std::abs(lo.y));
+        r.lower_z = round_down(lo.z - pad - 1e-6 * std::abs(lo.z));
+        r.upper_x = round_up(hi.x + pad + 1e-6 * std::abs(hi.x));
+        r.upper_y = round_up(hi.y + pad + 1e-6 * std::abs(hi.y));
+        r.upper_z = round_up(hi.z + pad + 1e-6 * std::abs(hi.z));
         r.align0 = r.align1 = 0;
         accel.items.push_back(node);
         accel.boxes.push_back(r);
@@ -108,31 +110,26 @@ void CsgTracer::Impl::build_accel(Accel& accel, const std::vector<std::uint32_t>
 }
 
 CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_unique<Impl>(scene, use_float)) {
-    // Scale: the magnitude of coordinates that matter, for relative tolerances.
-    // (The camera is left out: a far camera must not coarsen the geometry's
-    // tolerance; its distance enters per ray, see make_state.)
-    double scale = 0;
-    for (const csg::Leaf& leaf : scene.leaves)
-        if (finite_box(leaf.bounds))
-            scale = std::max({scale, glm::length(leaf.bounds.lo), glm::length(leaf.bounds.hi)});
-    scale_ = scale > 0 ? scale : std::max(1.0, glm::length(scene.camera.position));
-    eps_ = (use_float ? 2e-5 : 1e-9) * scale_;
-
     impl_->device = rtcNewDevice(nullptr);
     if (!impl_->device) throw std::runtime_error("cannot create the Embree device");
     rtcSetDeviceErrorFunction(impl_->device, embree_error, nullptr);
 
     impl_->accel_of_node.assign(scene.nodes.size(), -1);
-    for (const Node& n : scene.nodes)
-        impl_->padded.push_back({n.bounds.lo - glm::dvec3(eps_), n.bounds.hi + glm::dvec3(eps_)});
     for (const csg::Leaf& leaf : scene.leaves) {
         const glm::dmat3& m = leaf.object_from_world.linear;
         impl_->leaf_stretch.push_back(
             std::sqrt(glm::dot(m[0], m[0]) + glm::dot(m[1], m[1]) + glm::dot(m[2], m[2])));
     }
+    const std::vector<std::uint32_t> units =
+        scene.root == csg::kNone ? std::vector<std::uint32_t>{} : root_units(scene);
+    impl_->local_tolerances(units);
+    for (std::uint32_t id = 0; id < scene.nodes.size(); ++id) {
+        const csg::Aabb& b = scene.nodes[id].bounds;
+        const glm::dvec3 e(impl_->node_eps[id]);
+        impl_->padded.push_back({b.lo - e, b.hi + e});
+    }
     if (scene.root == csg::kNone) return;
     impl_->build_meshes();
-    const std::vector<std::uint32_t> units = root_units(scene);
     for (std::uint32_t id = 0; id < scene.nodes.size(); ++id) {
         const Node& n = scene.nodes[id];
         const std::uint32_t skip = n.op == Op::Difference ? 1 : 0;
@@ -140,17 +137,22 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
             std::vector<std::uint32_t> kids(scene.children.begin() + n.first + skip,
                                             scene.children.begin() + n.first + n.count);
             impl_->node_accels.push_back(std::make_unique<Accel>());
-            impl_->build_accel(*impl_->node_accels.back(), kids, false, scale_);
+            impl_->build_accel(*impl_->node_accels.back(), kids, false);
             impl_->accel_of_node[id] = std::int32_t(impl_->node_accels.size() - 1);
         }
     }
-    impl_->build_accel(impl_->top, units, true, scale_);
+    impl_->build_accel(impl_->top, units, true);
     if (impl_->top.always.empty()) {
-        // Padded far beyond the node box tests' eps_ slack, so the early out
-        // never culls what they would keep.
+        // Padded beyond every Embree box and the node box tests' slack, so
+        // the early out never culls what they would keep, and a float ray
+        // started at its entry (make_state) has every box ahead of it.
         csg::Aabb reach;
-        for (std::uint32_t unit : impl_->top.items) reach.extend(scene.nodes[unit].bounds);
-        const double pad = 1e-6 * scale_ + 4 * eps_;
+        double eps = 0;
+        for (std::uint32_t unit : impl_->top.items) {
+            reach.extend(scene.nodes[unit].bounds);
+            eps = std::max(eps, impl_->node_eps[unit]);
+        }
+        const double pad = 4e-6 * impl_->frame_radius + 4 * eps;
         if (!reach.empty()) reach = {reach.lo - glm::dvec3(pad), reach.hi + glm::dvec3(pad)};
         impl_->reach = reach;
     }

@@ -32,7 +32,20 @@ struct CsgTracer::Impl {
     // The padded box around every bounded unit; everything() when a unit is
     // unbounded. A ray whose line misses it hits nothing (first_hit.cpp).
     csg::Aabb reach = csg::Aabb::everything();
-    std::vector<csg::Aabb> padded;            // per node: bounds grown by eps (box tests)
+    std::vector<csg::Aabb> padded;            // per node: bounds grown by node_eps (box tests)
+    // Local tolerances (docs/accuracy.md "Far from the origin"): the
+    // degenerate rule's world length per node, from the sizes and positions
+    // of the leaves of the unit it belongs to, never from the whole scene,
+    // so a far-away part does not coarsen the rest. leaf_eps: the same per
+    // leaf (shading's surface offset).
+    std::vector<double> node_eps, leaf_eps;
+    double eps_per_distance = 0;              // added per unit of the ray origin's |o|
+    // Embree's float BVHs hold boxes relative to `frame` (the middle of the
+    // bounded units) and rays start at o - frame: a scene far from the
+    // origin keeps float precision. frame_radius: the largest |corner -
+    // frame| of a bounded unit (float slack of boxes and t windows).
+    glm::dvec3 frame{0.0};
+    double frame_radius = 1;
     std::vector<std::int32_t> accel_of_node;  // -1: children evaluated directly
     std::vector<std::unique_ptr<Accel>> node_accels;
     std::vector<double> leaf_stretch;         // per leaf: Frobenius norm of object_from_world.linear
@@ -41,7 +54,8 @@ struct CsgTracer::Impl {
 
     Impl(const csg::Scene& s, bool f) : scene(s), use_float(f) {}
     ~Impl();
-    void build_accel(Accel& accel, const std::vector<std::uint32_t>& nodes, bool top_level, double scale);
+    void build_accel(Accel& accel, const std::vector<std::uint32_t>& nodes, bool top_level);
+    void local_tolerances(const std::vector<std::uint32_t>& units);  // build.cpp
     void build_meshes();  // mesh_spans.cpp
 };
 

@@ -15,6 +15,7 @@ namespace {
 bool try_unit_entry(TopContext& ctx, std::uint32_t unit_index, std::uint32_t node) {
     TraceScratch& s = *ctx.state->scratch;
     const std::uint32_t base = s.stack.size();
+    ctx.state->enter_unit(node);
     const std::uint32_t n = ctx.state->spans(node, ctx.tnear, ctx.best, Need::First);
     bool better = false;
     for (std::uint32_t i = 0; i < n; ++i) {
@@ -39,7 +40,7 @@ void top_intersect_callback(const RTCIntersectFunctionNArguments* args) {
     auto* ctx = reinterpret_cast<TopContext*>(args->context);
     if (try_unit_entry(*ctx, args->primID, ctx->accel->items[args->primID])) {
         RTCRayHit* rh = reinterpret_cast<RTCRayHit*>(args->rayhit);
-        rh->ray.tfar = std::min(rh->ray.tfar, round_up(ctx->best) + float(ctx->state->t_pad));
+        rh->ray.tfar = std::min(rh->ray.tfar, embree_t(*ctx->state, ctx->best));
         rh->hit.geomID = args->geomID;
         rh->hit.primID = args->primID;
     }
@@ -47,7 +48,7 @@ void top_intersect_callback(const RTCIntersectFunctionNArguments* args) {
 
 bool CsgTracer::intersect(const TraceRay& ray, TraceHit& hit, TraceScratch& scratch) const {
     RayState st;
-    if (!make_state(st, impl_.get(), ray, eps_, scale_, scratch)) return false;
+    if (!make_state(st, impl_.get(), ray, scratch)) return false;
     TopContext ctx(st, ray);
     // Unbounded units (numbered after the BVH's for ties) go first: the
     // traversal then starts with their entry as tfar.

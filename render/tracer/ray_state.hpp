@@ -1,7 +1,8 @@
 // Per-ray state of the tracer. One RayState lives on the stack of each
 // intersect/occluded call; the Embree contexts that carry it through nested
 // BVH queries start with an RTCIntersectContext (Embree hands that pointer
-// back to our callbacks). X// evaluation, difference first entry, mesh leaves, first hit, shadow rays);
+// back to our callbacks). The per-ray work is spread over several files (node
+// spans, difference first entry, mesh leaves, first hit, shadow rays);
 // what they share on the hot path is here, inline: no virtual calls, no heap
 // allocation, no locks per ray.
 #pragma once
@@ -40,10 +41,15 @@ struct RayState {
     glm::dvec3 o, d, invd;
     float org[3], dir[3];
     double len;       // |d|: world length per unit of t
-    double eps;       // t-length of the degenerate rule
+    double inv_len;
+    double eps;       // t-length of the degenerate rule in the current unit
+    double eps_ray;   // world part of eps from the origin's own magnitude
     double t_pad;     // t slack of float Embree windows
+    double t_shift;   // the float Embree ray starts at o + t_shift·d (its t is t - t_shift)
     TraceScratch* scratch;
 
+    // Sets the degenerate rule for a query of `unit` (tolerances.cpp).
+    void enter_unit(std::uint32_t unit) { eps = (impl->node_eps[unit] + eps_ray) * inv_len; }
     // node_spans.cpp: pushes the node's spans overlapping [a, b] and returns
     // their count. Starts with the node's own box test.
     std::uint32_t spans(std::uint32_t node, double a, double b, Need need);
@@ -94,22 +100,35 @@ inline bool slab_hit(const csg::Aabb& box, const glm::dvec3& o, const glm::dvec3
 // set-up skipped, when the ray's line misses `reach` (the box around every
 // bounded unit): a slab test on the whole line (no t-window, so no tolerance
 // to get wrong), so background pixels cost three divisions and no more.
-inline bool make_state(RayState& st, const CsgTracer::Impl* impl, const TraceRay& ray, double eps_world,
-                       double scale, TraceScratch& scratch) {
+// The float ray for Embree starts where the line enters `reach` (or at o if
+// that is behind), relative to the BVHs' frame: its rounding then follows
+// the scene's extent, not the camera's distance or the scene's offset.
+[[gnu::always_inline]] inline bool make_state(RayState& st, const CsgTracer::Impl* impl, const TraceRay& ray, TraceScratch& scratch) {
     st.invd = 1.0 / ray.d;  // ±inf on axes the ray is parallel to
-    if (!slab_hit(impl->reach, ray.o, st.invd, -kInf, kInf)) return false;
+    double enter = -kInf, leave = kInf;
+    for (int i = 0; i < 3; ++i) {
+        double ta = (impl->reach.lo[i] - ray.o[i]) * st.invd[i], tb = (impl->reach.hi[i] - ray.o[i]) * st.invd[i];
+        if (ta > tb) std::swap(ta, tb);
+        enter = std::max(enter, ta);  // NaN (in a face plane, parallel) is ignored: conservative
+        leave = std::min(leave, tb);
+    }
+    if (!(enter <= leave)) return false;
     st.impl = impl;
     st.o = ray.o;
     st.d = ray.d;
+    st.t_shift = std::isfinite(enter) ? std::max(0.0, enter) : 0.0;
+    const glm::dvec3 start = ray.o + st.t_shift * ray.d - impl->frame;
     for (int i = 0; i < 3; ++i) {
-        st.org[i] = float(ray.o[i]);
+        st.org[i] = float(start[i]);
         st.dir[i] = float(ray.d[i]);
     }
     st.len = glm::length(ray.d);
-    const double inv_len = 1 / st.len, dist = glm::length(ray.o);
-    // Round-off of t also grows with the origin's distance (far cameras).
-    st.eps = (eps_world + (impl->use_float ? 1e-6 : 1e-13) * dist) * inv_len;
-    st.t_pad = 1e-5 * (scale + dist) * inv_len;
+    st.inv_len = 1 / st.len;
+    // Round-off of t also grows with the origin's own magnitude (far cameras).
+    st.eps_ray = impl->eps_per_distance * glm::length(ray.o);
+    st.eps = (impl->node_eps.empty() ? 0.0 : st.eps_ray) * st.inv_len;
+    // (|x|+|y|+|z| >= the length: no square root for a slack.)
+    st.t_pad = 1e-5 * (impl->frame_radius + std::abs(start.x) + std::abs(start.y) + std::abs(start.z)) * st.inv_len;
     st.scratch = &scratch;
     return true;
 }
@@ -135,11 +154,14 @@ inline RTCRayHit embree_ray(float ox, float oy, float oz, float dx, float dy, fl
     return rh;
 }
 
+// A t of the double ray as the float Embree ray's t, rounded up, with slack.
+inline float embree_t(const RayState& st, double t) { return round_up(t - st.t_shift) + float(st.t_pad); }
+
 // The state's ray on the t-window [a, b], widened by t_pad for float round-off.
 inline RTCRayHit make_rayhit(const RayState& st, double a, double b) {
     return embree_ray(st.org[0], st.org[1], st.org[2], st.dir[0], st.dir[1], st.dir[2],
-                      std::max(0.0f, round_down(a) - float(st.t_pad)),
-                      b == kInf ? std::numeric_limits<float>::infinity() : round_up(b) + float(st.t_pad));
+                      std::max(0.0f, round_down(a - st.t_shift) - float(st.t_pad)),
+                      b == kInf ? std::numeric_limits<float>::infinity() : embree_t(st, b));
 }
 
 // A query over the root's units (first_hit.cpp, shadow_rays.cpp).

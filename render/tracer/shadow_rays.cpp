@@ -14,6 +14,7 @@ namespace {
 bool unit_blocks(TopContext& ctx, std::uint32_t node) {
     TraceScratch& s = *ctx.state->scratch;
     const std::uint32_t base = s.stack.size();
+    ctx.state->enter_unit(node);
     const std::uint32_t n = ctx.state->spans(node, ctx.tnear, ctx.best, Need::Any);
     bool blocks = false;
     for (std::uint32_t i = 0; i < n && !blocks; ++i) {
@@ -37,7 +38,7 @@ void top_occluded_callback(const RTCOccludedFunctionNArguments* args) {
 
 bool CsgTracer::occluded(const TraceRay& ray, TraceScratch& scratch) const {
     RayState st;
-    if (!make_state(st, impl_.get(), ray, eps_, scale_, scratch)) return false;
+    if (!make_state(st, impl_.get(), ray, scratch)) return false;
     TopContext ctx(st, ray);
     for (std::uint32_t node : impl_->top.always)
         if (unit_blocks(ctx, node)) return true;

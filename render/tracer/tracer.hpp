@@ -55,16 +55,15 @@ public:
     // World unit normal of the final solid at a hit point.
     glm::dvec3 normal(const TraceHit& hit, const glm::dvec3& world_point) const;
 
-    // Span lengths below this are empty (the degenerate rule), world units.
-    double epsilon() const { return eps_; }
-    // Largest coordinate magnitude of the scene's bounded parts (>= tiny).
-    double scale() const { return scale_; }
+    // How far along its normal a ray leaving the surface of `hit` at `p`
+    // starts (shadows, reflections): above the local degenerate rule
+    // (tolerances.cpp), world units.
+    double surface_offset(const TraceHit& hit, const glm::dvec3& p) const;
 
     struct Impl;
 
 private:
     std::unique_ptr<Impl> impl_;
-    double eps_ = 0, scale_ = 1;
 };
 
 }  // namespace kerf::render

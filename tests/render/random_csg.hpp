@@ -85,6 +85,25 @@ public:
         return u;
     }
 
+    // The whole subtree moved by `by`, half-spaces too (far-origin tests).
+    static Tree moved(Tree t, const glm::dvec3& by) {
+        if (t.op != csg::Op::Leaf) {
+            for (Tree& k : t.kids) k = moved(std::move(k), by);
+            return t;
+        }
+        const csg::Leaf& l = t.leaf;
+        if (l.kind == csg::PrimKind::Plane) {
+            // dot(n, x) < d moved by `by`: dot(n, x) < d + dot(n, by).
+            const glm::dvec3 n(l.p[0], l.p[1], l.p[2]);
+            t.leaf = make_leaf(l.kind, {n.x, n.y, n.z, l.p[3] + glm::dot(n, by)}, glm::dmat4(1.0), l.material);
+            return t;
+        }
+        glm::dmat4 w(l.world_from_object.linear);
+        w[3] = glm::dvec4(l.world_from_object.offset, 1.0);
+        t.leaf = make_leaf(l.kind, std::vector<double>(l.p, l.p + 6), translate(by.x, by.y, by.z) * w, l.material);
+        return t;
+    }
+
 private:
     // Scales a subtree by f and moves its origin to `at`.
     Tree shrink(Tree t, double f, glm::dvec3 at) {

@@ -1,0 +1,123 @@
+// The tracer's tolerances, local to each unit (docs/accuracy.md, "Far from
+// the origin"). Two things limit how exactly a crossing is known: the
+// solver's error relative to the leaf's own size, and the rounding of
+// coordinates relative to their magnitude (o - centre in double). So the
+// degenerate rule of a unit is
+//     eps = kSize * size + kPosition * magnitude
+// over the leaves of that unit only (size: half the box diagonal, magnitude:
+// the largest |coordinate| of the box), and each ray adds kPosition * |o|
+// for its own origin (make_state). One far-away part therefore no longer
+// coarsens the rest of the scene, and a scene moved far from the origin
+// keeps the tolerance its size asks for.
+//
+// Embree's float BVHs work in a frame centred on the bounded units, so that
+// their rounding follows the scene's extent, not its distance from 0.
+#include <algorithm>
+#include <cmath>
+
+#include "render/tracer/build.hpp"
+
+namespace kerf::render {
+
+namespace {
+
+// Double: the solver is good to ~1e-9 of the leaf's size (quartics, grazing
+// roots), coordinates to ~450 ulps. Float leaves (a speed option) round in
+// single precision both ways.
+struct Factors {
+    double size, position, per_distance;
+};
+constexpr Factors kDouble{1e-9, 1e-13, 1e-13};
+constexpr Factors kFloat{2e-5, 2e-5, 1e-6};
+
+bool finite(const csg::Aabb& b) {
+    for (int i = 0; i < 3; ++i)
+        if (!(std::abs(b.lo[i]) < csg::kRenderableRange * 2 && std::abs(b.hi[i]) < csg::kRenderableRange * 2))
+            return false;
+    return true;
+}
+
+struct Extent {
+    double size = 0, magnitude = 0;
+    void add(const Extent& e) {
+        size = std::max(size, e.size);
+        magnitude = std::max(magnitude, e.magnitude);
+    }
+};
+
+Extent leaf_extent(const csg::Leaf& leaf) {
+    Extent e;
+    e.magnitude = glm::length(leaf.world_from_object.offset);
+    if (finite(leaf.bounds)) {
+        e.size = 0.5 * glm::length(leaf.bounds.hi - leaf.bounds.lo);
+        e.magnitude = std::max({e.magnitude, glm::length(leaf.bounds.lo), glm::length(leaf.bounds.hi)});
+    } else if (leaf.kind == csg::PrimKind::Plane) {
+        // A half-space's crossing is linear: only its position rounds.
+        const double n = glm::length(glm::dvec3(leaf.p[0], leaf.p[1], leaf.p[2]));
+        if (n > 0) e.magnitude += std::abs(leaf.p[3]) / n;
+    }
+    return e;
+}
+
+}  // namespace
+
+void CsgTracer::Impl::local_tolerances(const std::vector<std::uint32_t>& units) {
+    const Factors f = use_float ? kFloat : kDouble;
+    eps_per_distance = f.per_distance;
+    node_eps.assign(scene.nodes.size(), 0);
+    leaf_eps.assign(scene.leaves.size(), 0);
+    double widest = 0;
+    std::vector<std::uint32_t> stack, members;
+    for (std::uint32_t unit : units) {
+        // The unit's subtree, iteratively (trees may be deep).
+        Extent ext;
+        if (finite(scene.nodes[unit].bounds)) {
+            const csg::Aabb& b = scene.nodes[unit].bounds;
+            ext.size = 0.5 * glm::length(b.hi - b.lo);
+        }
+        members.clear();
+        stack.assign(1, unit);
+        while (!stack.empty()) {
+            const std::uint32_t id = stack.back();
+            stack.pop_back();
+            members.push_back(id);
+            const csg::Node& n = scene.nodes[id];
+            if (n.op == csg::Op::Leaf) {
+                ext.add(leaf_extent(scene.leaves[n.first]));
+                continue;
+            }
+            for (std::uint32_t k = 0; k < n.count; ++k) stack.push_back(scene.children[n.first + k]);
+        }
+        const double eps = use_float ? f.size * std::max(ext.size, ext.magnitude)
+                                     : f.size * ext.size + f.position * ext.magnitude;
+        widest = std::max(widest, eps);
+        for (std::uint32_t id : members) {
+            node_eps[id] = std::max(node_eps[id], eps);
+            const csg::Node& n = scene.nodes[id];
+            if (n.op == csg::Op::Leaf) leaf_eps[n.first] = std::max(leaf_eps[n.first], eps);
+        }
+    }
+    // Nodes above the units (the root's union chain) are never spanned;
+    // give them the widest so their padded boxes stay conservative.
+    for (std::uint32_t id = 0; id < scene.nodes.size(); ++id)
+        if (node_eps[id] == 0) node_eps[id] = widest;
+
+    csg::Aabb bounded;
+    for (std::uint32_t unit : units)
+        if (finite(scene.nodes[unit].bounds)) bounded.extend(scene.nodes[unit].bounds);
+    if (bounded.empty()) {
+        frame = glm::dvec3(0.0);
+        frame_radius = std::max(1.0, glm::length(scene.camera.position));
+        return;
+    }
+    frame = 0.5 * (bounded.lo + bounded.hi);
+    frame_radius = std::max(0.5 * glm::length(bounded.hi - bounded.lo), 1e-300);
+}
+
+double CsgTracer::surface_offset(const TraceHit& hit, const glm::dvec3& p) const {
+    // Well above the degenerate rule at the hit, so a shadow or reflected
+    // ray starts clear of the surface it leaves.
+    return 100 * (impl_->leaf_eps[hit.surface.leaf] + impl_->eps_per_distance * glm::length(p));
+}
+
+}  // namespace kerf::render
