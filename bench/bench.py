@@ -101,8 +101,10 @@ class Bench:
         return base
 
     def kerf_cmd(self, sdl, out, size, extra=()):
+        # --aa off: one ray per pixel, as POV-Ray's -A below (docs/quality.md
+        # measures the anti-aliasing trade on its own).
         return [self.kerf, "render", sdl, "-o", out, "--stats", "-W", str(size), "-H", str(size),
-                "--threads", str(self.a.threads)] + KERF_LIMITS + list(extra)
+                "--threads", str(self.a.threads), "--aa", "off"] + KERF_LIMITS + list(extra)
 
     def pov_cmd(self, pov, out, size, mask=False):
         cmd = ["povray", "+I" + pov, "+O" + out, f"+W{size}", f"+H{size}", "-A", f"+WT{self.a.threads}",

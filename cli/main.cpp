@@ -38,6 +38,9 @@ void print_stats(const render::RenderStats& s, const render::Image& img) {
                  static_cast<unsigned long long>(s.reflect_rays), s.seconds,
                  s.seconds > 0 ? rays / s.seconds * 1e-6 : 0.0, s.union_ops * per,
                  s.difference_ops * per, s.intersection_ops * per, s.interval_tests * per);
+    if (s.refined_pixels > 0)
+        std::fprintf(stderr, "stats: anti-aliasing: %llu of %d pixels took the full samples\n",
+                     static_cast<unsigned long long>(s.refined_pixels), img.width * img.height);
 }
 
 int run(const cli::Options& o) {

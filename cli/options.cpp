@@ -18,6 +18,14 @@ Int parse_int(const std::string& flag, const std::string& text, Int lo, Int hi) 
     return v;
 }
 
+double parse_fraction(const std::string& flag, const std::string& text) {
+    double v = 0;
+    auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+    if (ec != std::errc() || p != text.data() + text.size() || !(v >= 0 && v <= 1))
+        throw UsageError(flag + " expects a number from 0 to 1, got '" + text + "'");
+    return v;
+}
+
 std::array<int, 4> parse_crop(const std::string& text) {
     std::array<int, 4> c{};
     std::size_t start = 0;
@@ -43,7 +51,8 @@ void parse_define(const std::string& text, Options& o) {
 
 const char* usage_text() {
     return "usage:\n"
-           "  kerf render SCENE.sdl [-o OUT] [-W 800] [-H 600] [--spp N] [--threads N]\n"
+           "  kerf render SCENE.sdl [-o OUT] [-W 800] [-H 600] [--threads N]\n"
+           "                        [--aa auto|off] [--aa-samples 16] [--aa-threshold 0.05] [--spp N]\n"
            "                        [--preview] [--aov depth|normal|hits] [--stats]\n"
            "                        [-D name=value ...] [-I dir ...] [--crop x0,y0,x1,y1]\n"
            "                        [--seed N] [--precision double|float]\n"
@@ -67,6 +76,8 @@ Options parse_options(const std::vector<std::string>& args) {
     else throw UsageError("unknown command '" + cmd + "' (expected render, check or dump)");
 
     constexpr std::uint64_t big = std::numeric_limits<std::uint32_t>::max();
+    o.render.adaptive = true;  // --aa auto is the default
+    std::string aa_flag, aa_knob, spp_flag;  // as given, to refuse contradictions
     for (std::size_t i = 1; i < args.size(); ++i) {
         const std::string& a = args[i];
         auto value = [&]() -> const std::string& {
@@ -79,7 +90,20 @@ Options parse_options(const std::vector<std::string>& args) {
         }
         else if (a == "-W") o.render.width = parse_int<int>(a, value(), 1, 32768);
         else if (a == "-H") o.render.height = parse_int<int>(a, value(), 1, 32768);
-        else if (a == "--spp") o.render.spp = parse_int<int>(a, value(), 1, 65536);
+        else if (a == "--spp") {
+            o.render.spp = parse_int<int>(a, value(), 1, 65536);
+            spp_flag = a;
+        } else if (a == "--aa") {
+            const std::string& v = value();
+            if (v != "auto" && v != "off") throw UsageError("--aa expects auto or off, got '" + v + "'");
+            aa_flag = a + " " + v;
+        } else if (a == "--aa-samples") {
+            o.render.aa_samples = parse_int<int>(a, value(), 2, 4096);
+            aa_knob = a;
+        } else if (a == "--aa-threshold") {
+            o.render.aa_threshold = parse_fraction(a, value());
+            aa_knob = a;
+        }
         else if (a == "--threads") o.render.threads = parse_int<int>(a, value(), 0, 1024);
         else if (a == "--seed") o.render.seed = parse_int<std::uint64_t>(a, value(), 0, UINT64_MAX);
         else if (a == "--preview") o.render.preview = true;
@@ -112,6 +136,19 @@ Options parse_options(const std::vector<std::string>& args) {
         else throw UsageError("more than one scene given ('" + o.scene + "' and '" + a + "')");
     }
     if (o.scene.empty()) throw UsageError(cmd + " needs a scene file");
+    // Sampling: adaptive unless --spp, --aa off, --preview or an AOV; a knob
+    // that would then be ignored is an error, never silence.
+    if (aa_flag == "--aa auto" && !spp_flag.empty())
+        throw UsageError("--spp gives uniform sampling; it cannot be combined with --aa auto");
+    if (aa_flag == "--aa off" || !spp_flag.empty()) o.render.adaptive = false;
+    if (!aa_knob.empty() && !o.render.adaptive)
+        throw UsageError(aa_knob + " applies to adaptive anti-aliasing, which " +
+                         (spp_flag.empty() ? std::string("--aa off") : std::string("--spp")) + " turns off");
+    const char* centre_only = o.render.preview ? "--preview" : o.render.aov != render::Aov::None ? "--aov" : nullptr;
+    if (centre_only && (!aa_knob.empty() || aa_flag == "--aa auto" || !spp_flag.empty()))
+        throw UsageError(std::string(centre_only) + " traces one ray through each pixel centre; drop " +
+                         (!aa_knob.empty() ? aa_knob : !spp_flag.empty() ? spp_flag : aa_flag));
+    if (centre_only) o.render.adaptive = false;
     if (o.render.crop && ((*o.render.crop)[2] > o.render.width || (*o.render.crop)[3] > o.render.height))
         throw UsageError("--crop rectangle lies outside the " + std::to_string(o.render.width) + "x" +
                          std::to_string(o.render.height) + " image");

@@ -6,9 +6,11 @@
 #include "render/render.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <limits>
 #include <optional>
 
+#include "render/adaptive.hpp"
 #include "render/aov.hpp"
 #include "render/camera.hpp"
 #include "render/pixel_store.hpp"
@@ -25,6 +27,8 @@ namespace {
 void check_options(const RenderOptions& o) {
     if (o.width < 1 || o.height < 1) throw std::invalid_argument("image size must be at least 1×1");
     if (o.spp < 1) throw std::invalid_argument("samples per pixel must be at least 1");
+    if (o.adaptive && (o.aa_samples < 2 || !(o.aa_threshold >= 0 && o.aa_threshold <= 1)))
+        throw std::invalid_argument("adaptive anti-aliasing needs at least 2 samples and a threshold from 0 to 1");
     if (o.threads < 0) throw std::invalid_argument("thread count must not be negative");
     if (o.crop) {
         const auto& c = *o.crop;
@@ -56,32 +60,77 @@ Image render(const csg::Scene& scene, const RenderOptions& options, RenderStats*
     PixelStore store(image, region, aov_channels(aov), aov_content(aov), options.srgb8 && aov == Aov::None);
     tbb::enumerable_thread_specific<ThreadState> states;
 
-    for_each_tile(arena, region, camera, tracer, states, progress, [&](int x, int y, ThreadState& ts, bool traced) {
-        if (aov != Aov::None) {
-            aov_pixel(aov, camera, tracer, x, y, ts, traced, store.values(x, y));
-            return;
+    // One sample through (px, py); `surface` as Shader::radiance.
+    auto sample = [&](double px, double py, ThreadState& ts, bool traced, std::uint32_t* surface) {
+        ++ts.rays.primary;
+        if (!traced) {
+            if (surface) *surface = 0;
+            return scene.background;
         }
-        auto sample = [&](double px, double py) {
-            ++ts.rays.primary;
-            if (!traced) return scene.background;
-            glm::dvec3 o, d;
-            camera.ray_unnormalised(px, py, o, d);
-            return shader.radiance(TraceRay{o, d, 0, std::numeric_limits<double>::infinity()}, 0, ts);
-        };
+        glm::dvec3 o, d;
+        camera.ray_unnormalised(px, py, o, d);
+        return shader.radiance(TraceRay{o, d, 0, std::numeric_limits<double>::infinity()}, 0, ts, surface);
+    };
+    // The mean of `pattern`'s samples in pixel (x, y).
+    auto samples_mean = [&](const SamplePattern& pattern, int x, int y, ThreadState& ts, bool traced) {
+        const int n = pattern.count();
+        if (n == 1) return sample(x + 0.5, y + 0.5, ts, traced, nullptr);  // the centre: no jitter, no generator
+        std::uint64_t rng = SamplePattern::pixel_rng(options.seed, x, y);
         glm::dvec3 sum(0.0);
-        const int n = samples.count();
-        if (n == 1) {  // the pixel centre: no jitter, no generator to seed
-            sum = sample(x + 0.5, y + 0.5);
-        } else {
-            std::uint64_t rng = SamplePattern::pixel_rng(options.seed, x, y);
-            for (int i = 0; i < n; ++i) {
-                const glm::dvec2 s = samples.offset(i, rng);
-                sum += sample(x + s.x, y + s.y);
-            }
-            sum /= double(n);
+        for (int i = 0; i < n; ++i) {
+            const glm::dvec2 s = pattern.offset(i, rng);
+            sum += sample(x + s.x, y + s.y, ts, traced, nullptr);
         }
-        store.color(x, y, sum);
-    });
+        return sum / double(n);
+    };
+
+    if (aov != Aov::None) {
+        for_each_tile(arena, region, camera, tracer, states, progress, [&](int x, int y, ThreadState& ts, bool traced) {
+            aov_pixel(aov, camera, tracer, x, y, ts, traced, store.values(x, y));
+        });
+    } else if (options.adaptive && !options.preview) {
+        // Centres first (about a quarter of the time), then the refinement.
+        CentreSamples centres(region, options.width, options.height);
+        const SamplePattern refine(options.aa_samples);
+        const int threshold = int(std::lround(options.aa_threshold * 255));
+        auto part = [&](double from, double to) -> std::function<void(double)> {
+            if (!progress) return {};
+            return [&progress, from, to](double f) { progress(from + (to - from) * f); };
+        };
+        const std::array<int, 4> area = centres.area();
+        for_each_tile(arena, area, camera, tracer, states, part(0, 0.25), [&](int x, int y, ThreadState& ts, bool traced) {
+            std::uint32_t surface;
+            const glm::dvec3 c = sample(x + 0.5, y + 0.5, ts, traced, &surface);
+            centres.set(x, y, c, surface);
+            if (x >= region[0] && x < region[2] && y >= region[1] && y < region[3]) store.color(x, y, c);
+        });
+        // Only candidates are written again; the rest keep their centre.
+        for_each_tile(arena, region, camera, tracer, states, part(0.25, 1), [&](int x, int y, ThreadState& ts, bool traced) {
+            if (!centres.needs_more(x, y, threshold)) return;
+            // Probes at the 4 corners first: a straight edge that crosses the
+            // pixel always separates its corners, so a candidate whose
+            // corners all look like its centre (next to an edge but wholly
+            // on one side, about half of them) stops there with their mean.
+            glm::dvec3 sum = sample(x + 0.5, y + 0.5, ts, traced, nullptr);
+            bool same = true;
+            for (int i = 0; i < 4; ++i) {
+                std::uint32_t surface;
+                const glm::dvec3 c = sample(x + (i & 1), y + (i >> 1), ts, traced, &surface);
+                same = same && centres.looks_alike(x, y, c, surface, threshold);
+                sum += c;
+            }
+            if (same) {
+                store.color(x, y, sum / 5.0);
+                return;
+            }
+            ++ts.refined_pixels;
+            store.color(x, y, samples_mean(refine, x, y, ts, traced));
+        });
+    } else {
+        for_each_tile(arena, region, camera, tracer, states, progress, [&](int x, int y, ThreadState& ts, bool traced) {
+            store.color(x, y, samples_mean(samples, x, y, ts, traced));
+        });
+    }
 
     if (stats) *stats = sum_stats(states, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     return image;

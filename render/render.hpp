@@ -19,7 +19,14 @@ enum class Aov : std::uint8_t { None, Depth, Normal, Hits };
 
 struct RenderOptions {
     int width = 800, height = 600;
-    int spp = 1;                     // samples per pixel (stratified jitter when > 1)
+    int spp = 1;                     // uniform: samples per pixel (stratified jitter when > 1)
+    // Adaptive anti-aliasing (adaptive.hpp; the CLI's default): a sample at
+    // each pixel centre, then aa_samples stratified samples (the pattern of
+    // spp = aa_samples) where a neighbour hit another surface or differs by
+    // more than aa_threshold (0..1, a display channel). Replaces `spp`.
+    bool adaptive = false;
+    int aa_samples = 16;
+    double aa_threshold = 0.05;
     int threads = 0;                 // 0: all hardware threads
     bool preview = false;            // 1 spp, no reflections (same resolution)
     Aov aov = Aov::None;             // AOVs trace one ray through each pixel centre
@@ -39,6 +46,7 @@ struct RenderStats {
     double seconds = 0;
     std::uint64_t union_ops = 0, difference_ops = 0, intersection_ops = 0;
     std::uint64_t interval_tests = 0;  // ray–primitive intersections computed
+    std::uint64_t refined_pixels = 0;  // adaptive anti-aliasing: pixels given aa_samples
     std::uint64_t rays() const { return primary_rays + shadow_rays + reflect_rays; }
 };
 

@@ -28,9 +28,13 @@ double highlight(double x, double s) {
 Shader::Shader(const csg::Scene& scene, const CsgTracer& tracer, int max_reflect_depth)
     : scene_(scene), tracer_(tracer), max_depth_(max_reflect_depth) {}
 
-glm::dvec3 Shader::radiance(const TraceRay& ray, int depth, ThreadState& ts) const {
+glm::dvec3 Shader::radiance(const TraceRay& ray, int depth, ThreadState& ts, std::uint32_t* surface) const {
     TraceHit hit;
-    if (!tracer_.intersect(ray, hit, ts.scratch)) return scene_.background;
+    if (!tracer_.intersect(ray, hit, ts.scratch)) {
+        if (surface) *surface = 0;
+        return scene_.background;
+    }
+    if (surface) *surface = (hit.surface.leaf + 1) * 2 + hit.surface.cut;
     const glm::dvec3 p = ray.o + hit.t * ray.d;
     glm::dvec3 n = tracer_.normal(hit, p);
     if (glm::dot(n, ray.d) > 0) n = -n;  // grazing round-off: light the side we see

@@ -18,13 +18,16 @@ struct RayCounts {
 struct ThreadState {
     TraceScratch scratch;
     RayCounts rays;
+    std::uint64_t refined_pixels = 0;  // adaptive anti-aliasing
 };
 
 class Shader {
 public:
     Shader(const csg::Scene& scene, const CsgTracer& tracer, int max_reflect_depth);
     // Linear RGB seen along the ray; `depth` counts reflections so far.
-    glm::dvec3 radiance(const TraceRay& ray, int depth, ThreadState& ts) const;
+    // `surface`, if given, gets 0 for a miss, else an id of the surface the
+    // ray hit (leaf and cut face), for adaptive anti-aliasing.
+    glm::dvec3 radiance(const TraceRay& ray, int depth, ThreadState& ts, std::uint32_t* surface = nullptr) const;
 
 private:
     const csg::Scene& scene_;

@@ -12,6 +12,7 @@ RenderStats sum_stats(const tbb::enumerable_thread_specific<ThreadState>& states
         s.difference_ops += ts.scratch.counters.difference_ops;
         s.intersection_ops += ts.scratch.counters.intersection_ops;
         s.interval_tests += ts.scratch.counters.interval_tests;
+        s.refined_pixels += ts.refined_pixels;
     }
     s.seconds = seconds;
     return s;

@@ -1,0 +1,84 @@
+// Adaptive anti-aliasing (docs/quality.md): a first pass traces one ray
+// through every pixel centre, stores its colour in the image and keeps what
+// it looks like (display codes, surface hit) for the whole region + a ring.
+// A pixel is a candidate if any of its 8 neighbours hit another surface (a
+// silhouette, an edge between leaves, a cut) or differs from it by more
+// than the threshold in a display (sRGB) channel (shadow edges,
+// highlights). A candidate gets probe samples at its 4 corners; if they all
+// look like its centre it is their mean with the centre, else it gets the
+// uniform pattern of RenderOptions::aa_samples (the pixel `--spp 16` gives). The decision reads only first-pass values of full-image
+// coordinates, so the thread count and a crop never change a pixel: the
+// first pass covers the region plus a one-pixel ring.
+#pragma once
+#include <algorithm>
+#include <array>
+#include <cstdlib>
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include "render/image/big_buffer.hpp"
+#include "render/image/srgb_bytes.hpp"
+
+namespace kerf::render {
+
+class CentreSamples {
+public:
+    // `region` grown by one pixel, clamped to the image.
+    CentreSamples(const std::array<int, 4>& region, int width, int height)
+        : x0_(std::max(0, region[0] - 1)), y0_(std::max(0, region[1] - 1)),
+          x1_(std::min(width, region[2] + 1)), y1_(std::min(height, region[3] + 1)),
+          srgb_(srgb_table()) {
+        looks_.resize(std::size_t(x1_ - x0_) * std::size_t(y1_ - y0_));  // uninitialised: set() fills all
+    }
+    std::array<int, 4> area() const { return {x0_, y0_, x1_, y1_}; }
+
+    // `surface`: 0 for a miss, else an id of the surface hit (Shader::radiance).
+    void set(int x, int y, const glm::dvec3& c, std::uint32_t surface) { looks_[index(x, y)] = look(c, surface); }
+
+    // Whether pixel (x, y) of the region needs more samples. `threshold`:
+    // in 8-bit display codes.
+    bool needs_more(int x, int y, int threshold) const {
+        const std::uint64_t* c = &looks_[index(x, y)];
+        const std::uint64_t l = *c;
+        if (x > x0_ && x + 1 < x1_ && y > y0_ && y + 1 < y1_) {
+            // Inside: all eight neighbours look the same (most pixels).
+            const std::size_t w = std::size_t(x1_ - x0_);
+            const std::uint64_t *up = c - w - 1, *down = c + w - 1;
+            if (((up[0] ^ l) | (up[1] ^ l) | (up[2] ^ l) | (c[-1] ^ l) | (c[1] ^ l) | (down[0] ^ l) | (down[1] ^ l) |
+                 (down[2] ^ l)) == 0)
+                return false;
+        }
+        for (int ny = std::max(y0_, y - 1); ny <= std::min(y1_ - 1, y + 1); ++ny)
+            for (int nx = std::max(x0_, x - 1); nx <= std::min(x1_ - 1, x + 1); ++nx) {
+                const std::uint64_t d = looks_[index(nx, ny)];
+                if (d == l) continue;
+                if (!alike(d, l, threshold)) return true;
+            }
+        return false;
+    }
+
+    // Whether a sample (colour c, surface) looks like pixel (x, y)'s centre.
+    bool looks_alike(int x, int y, const glm::dvec3& c, std::uint32_t surface, int threshold) const {
+        return alike(look(c, surface), looks_[index(x, y)], threshold);
+    }
+
+private:
+    // What a sample looks like: surface << 32 | its 8-bit display codes.
+    std::uint64_t look(const glm::dvec3& c, std::uint32_t surface) const {
+        return std::uint64_t(surface) << 32 | std::uint32_t(srgb_byte(srgb_, float(c.x))) |
+               std::uint32_t(srgb_byte(srgb_, float(c.y))) << 8 | std::uint32_t(srgb_byte(srgb_, float(c.z))) << 16;
+    }
+    static bool alike(std::uint64_t a, std::uint64_t b, int threshold) {
+        if (a >> 32 != b >> 32) return false;  // another surface
+        for (int k = 0; k < 24; k += 8)
+            if (std::abs(int((a >> k) & 0xFF) - int((b >> k) & 0xFF)) > threshold) return false;
+        return true;
+    }
+    std::size_t index(int x, int y) const { return std::size_t(y - y0_) * std::size_t(x1_ - x0_) + std::size_t(x - x0_); }
+    int x0_, y0_, x1_, y1_;
+    const SrgbTable& srgb_;
+    BigVector<std::uint64_t> looks_;
+};
+
+}  // namespace kerf::render

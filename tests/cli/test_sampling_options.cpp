@@ -1,0 +1,50 @@
+// Sampling on the command line: adaptive anti-aliasing is the default,
+// --spp N is uniform, and a knob that a choice would ignore is a usage error
+// (exit 2), never silence.
+#include <catch2/catch.hpp>
+
+#include "tests/cli/run_kerf.hpp"
+
+TEST_CASE("sampling knobs that would be ignored are usage errors") {
+    auto dir = test_dir("sampling");
+    const struct {
+        const char* args;
+        const char* error;
+    } cases[] = {
+        {"--spp 4 --aa auto", "--spp gives uniform sampling; it cannot be combined with --aa auto"},
+        {"--spp 4 --aa-samples 8", "--aa-samples applies to adaptive anti-aliasing, which --spp turns off"},
+        {"--aa off --aa-threshold 0.1", "--aa-threshold applies to adaptive anti-aliasing, which --aa off turns off"},
+        {"--aov depth --spp 4", "--aov traces one ray through each pixel centre; drop --spp"},
+        {"--preview --aa-samples 8", "--preview traces one ray through each pixel centre; drop --aa-samples"},
+        {"--aa maybe", "--aa expects auto or off, got 'maybe'"},
+        {"--aa-threshold 1.5", "--aa-threshold expects a number from 0 to 1, got '1.5'"},
+        {"--aa-threshold nan", "--aa-threshold expects a number from 0 to 1, got 'nan'"},
+        {"--aa-samples 1", "--aa-samples expects a whole number from 2 to 4096, got '1'"},
+    };
+    for (const auto& c : cases) {
+        const auto r = run_kerf(std::string("render x.sdl ") + c.args, dir);
+        INFO(c.args);
+        CHECK(r.status == 2);
+        CHECK(first_line(r.err) == std::string("kerf: error: ") + c.error);
+    }
+}
+
+TEST_CASE("the default render anti-aliases edges; --aa off and --spp 1 do not") {
+    auto dir = test_dir("sampling_default");
+    write_file(dir / "s.sdl", "camera(position = [0, -6, 2], look_at = [0, 0, 0]);\nsphere(1);\n");
+    const std::string d = "'" + dir.string() + "/";
+    const auto on = run_kerf("render " + d + "s.sdl' -o " + d + "on.ppm' -W 64 -H 48 --stats", dir);
+    const auto off = run_kerf("render " + d + "s.sdl' -o " + d + "off.ppm' -W 64 -H 48 --stats --aa off", dir);
+    const auto one = run_kerf("render " + d + "s.sdl' -o " + d + "one.ppm' -W 64 -H 48 --spp 1", dir);
+    REQUIRE(on.status == 0);
+    REQUIRE(off.status == 0);
+    REQUIRE(one.status == 0);
+    CHECK(on.err.find("anti-aliasing: ") != std::string::npos);
+    CHECK(off.err.find("anti-aliasing: ") == std::string::npos);
+    const auto read = [&](const char* name) {
+        std::ifstream f(dir / name, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(f), {});
+    };
+    CHECK(read("off.ppm") == read("one.ppm"));
+    CHECK(read("on.ppm") != read("off.ppm"));
+}
