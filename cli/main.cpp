@@ -1,7 +1,9 @@
 // kerf: check, dump or render a .sdl scene. Everything here is argument
 // handling, reporting and exit codes (docs/spec.md §7–§8); the work is library calls.
+#include <csignal>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -43,6 +45,17 @@ void print_stats(const render::RenderStats& s, const render::Image& img) {
                      static_cast<unsigned long long>(s.refined_pixels), img.width * img.height);
 }
 
+// A scene piped in (editors preview unsaved buffers): named <stdin> in
+// diagnostics; includes resolve against `base` (or the working folder) as
+// if the file lived there.
+std::shared_ptr<const SourceFile> stdin_source(const std::string& base) {
+    auto read = read_source_file("/dev/stdin");  // bounded like any scene file
+    auto file = std::make_shared<SourceFile>();
+    file->path = base.empty() ? "<stdin>" : (std::filesystem::path(base) / "<stdin>").string();
+    file->text = read->text;
+    return file;
+}
+
 int run(const cli::Options& o) {
     if (o.command == cli::Command::Render) {
         try {
@@ -54,7 +67,7 @@ int run(const cli::Options& o) {
             return kRenderFailed;
         }
     }
-    EvalResult evaluated = evaluate_file(o.scene, o.eval);
+    EvalResult evaluated = o.scene == "-" ? evaluate_source(stdin_source(o.base), o.eval) : evaluate_file(o.scene, o.eval);
     print_warnings(evaluated.warnings);
     csg::Scene scene = lower_to_csg(evaluated.graph);
     if (o.command == cli::Command::Check) return kOk;
@@ -101,6 +114,9 @@ int main(int argc, char** argv) {
         return kOk;
     }
     cli::cap_memory_to_physical();
+    // -o -: a reader that goes away is a failed write (exit 3, "Broken
+    // pipe"), not a signal.
+    if (options.output == "-") std::signal(SIGPIPE, SIG_IGN);
     try {
         return run(options);
     } catch (const DefineError& e) {  // a broken -D value is a bad command line

@@ -55,7 +55,9 @@ const char* usage_text() {
            "                        [--aa auto|off] [--aa-samples 16] [--aa-threshold 0.05] [--spp N]\n"
            "                        [--preview] [--aov depth|normal|hits] [--stats]\n"
            "                        [-D name=value ...] [-I dir ...] [--crop x0,y0,x1,y1]\n"
-           "                        [--seed N] [--precision double|float]\n"
+           "                        [--seed N] [--precision double|float] [--base DIR]\n"
+           "    SCENE '-' reads standard input (includes resolve against --base DIR or the\n"
+           "    working folder); -o - writes the PNG to standard output\n"
            "  kerf check  SCENE.sdl   parse, evaluate and lower; print diagnostics only\n"
            "  kerf dump   SCENE.sdl   print the lowered, flattened CSG tree\n"
            "limits (docs/spec.md §8): --max-call-depth N --max-nesting N --max-iterations N\n"
@@ -122,6 +124,7 @@ Options parse_options(const std::vector<std::string>& args) {
             else throw UsageError("--precision expects double or float, got '" + v + "'");
         } else if (a == "-D") parse_define(value(), o);
         else if (a.size() > 2 && a.rfind("-D", 0) == 0) parse_define(a.substr(2), o);
+        else if (a == "--base") o.base = value();
         else if (a == "-I") o.eval.include_dirs.push_back(value());
         else if (a.size() > 2 && a.rfind("-I", 0) == 0) o.eval.include_dirs.push_back(a.substr(2));
         else if (a == "--max-call-depth") o.eval.limits.call_depth = parse_int<std::uint64_t>(a, value(), 1, 1'000'000);
@@ -152,6 +155,10 @@ Options parse_options(const std::vector<std::string>& args) {
     if (o.render.crop && ((*o.render.crop)[2] > o.render.width || (*o.render.crop)[3] > o.render.height))
         throw UsageError("--crop rectangle lies outside the " + std::to_string(o.render.width) + "x" +
                          std::to_string(o.render.height) + " image");
+    if (!o.base.empty() && o.scene != "-")
+        throw UsageError("--base applies to a scene read from standard input ('-'), not to " + o.scene);
+    if (o.output.empty() && o.scene == "-" && o.command == Command::Render)
+        throw UsageError("a scene from standard input needs -o OUT (-o - writes the PNG to standard output)");
     if (o.output.empty()) {
         std::string base = o.scene;
         std::size_t slash = base.find_last_of('/');

@@ -16,8 +16,9 @@ enum class Command { Render, Check, Dump, Help, Version };
 // line never mirrors what the libraries already define.
 struct Options {
     Command command = Command::Help;
-    std::string scene;
-    std::string output;  // after parsing: SCENE.png beside the scene unless -o
+    std::string scene;   // "-": standard input
+    std::string base;    // --base: folder that includes of a scene from standard input resolve against
+    std::string output;  // after parsing: SCENE.png beside the scene unless -o; "-": PNG to standard output
     bool stats = false;
     EvalOptions eval;
     render::RenderOptions render;

@@ -14,7 +14,10 @@
 #include <system_error>
 #include <vector>
 
+#include <cerrno>
+#include <cstring>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -116,9 +119,24 @@ struct FileSink {
     }
 };
 
+// `-o -`: the encoded file to standard output, every write checked (a
+// closed pipe or a full disk is an error, not a short image).
+std::string write_stdout(const void* data, std::size_t size) {
+    const char* p = static_cast<const char*>(data);
+    while (size > 0) {
+        const ssize_t n = ::write(STDOUT_FILENO, p, size);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) return std::strerror(n < 0 ? errno : EIO);
+        p += n;
+        size -= std::size_t(n);
+    }
+    return {};
+}
+
 }  // namespace
 
 void check_output_path(const std::string& path, int width, int height, const std::vector<std::string>& inputs) {
+    if (path == "-") return;  // standard output, PNG
     const fs::path target(path);
     const std::string ext = target.extension().string();
     if (lower_extension(target) != ".png" && !oiio_module().can_write(path.c_str()))
@@ -140,7 +158,7 @@ void check_output_path(const std::string& path, int width, int height, const std
         throw ImageWriteError("cannot write " + path + ": " + why);
 }
 
-bool is_8bit_output(const std::string& path) { return !is_float_format(lower_extension(fs::path(path))); }
+bool is_8bit_output(const std::string& path) { return path == "-" || !is_float_format(lower_extension(fs::path(path))); }
 
 void write_image(const Image& image, const std::string& path) {
     const std::size_t size = std::size_t(image.width) * image.height * image.channels;
@@ -150,7 +168,8 @@ void write_image(const Image& image, const std::string& path) {
                   : image.pixels.size() != size))
         throw ImageWriteError("cannot write " + path + ": the image is empty or inconsistent");
     const fs::path target(path);
-    const std::string ext = lower_extension(target);
+    const bool to_stdout = path == "-";
+    const std::string ext = to_stdout ? ".png" : lower_extension(target);
     const bool as_float = is_float_format(ext);
     if (as_float && as_bytes)
         throw ImageWriteError("cannot write " + path + ": the image was rendered in 8 bits, the format holds floats");
@@ -164,7 +183,8 @@ void write_image(const Image& image, const std::string& path) {
     if (ext == ".png") {
         std::vector<unsigned char> file;
         message = encode_png(file, bytes, image.width, image.height, image.channels, srgb);
-        if (message.empty()) message = replace_file(path, file.data(), file.size());
+        if (message.empty())
+            message = to_stdout ? write_stdout(file.data(), file.size()) : replace_file(path, file.data(), file.size());
     } else {
         const OiioModule& oiio = oiio_module();
         char error[512] = "";
