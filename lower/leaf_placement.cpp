@@ -60,13 +60,24 @@ void place_leaf(csg::Leaf& leaf, const csg::Affine& wfo, const std::vector<glm::
     // Normals map by the inverse transpose, which keeps them outward under
     // mirrors too: for an outward step v (n·v > 0), (L⁻ᵀn)·(L v) = n·v > 0.
     leaf.normal_to_world = glm::transpose(leaf.object_from_world.linear);
-    if (leaf.kind == csg::PrimKind::Mesh)
+    if (leaf.kind == csg::PrimKind::Mesh || leaf.kind == csg::PrimKind::Prism)
         leaf.bounds = mesh_points ? mesh_bounds(*mesh_points, wfo) : csg::Aabb{};
     else if (leaf.kind == csg::PrimKind::Plane)
         leaf.bounds = clip_by_halfspace(csg::Aabb::everything(), world_halfspace(leaf));
     else
         leaf.bounds = primitive_bounds(leaf.kind, leaf.p, wfo);
     check_range(leaf.bounds, loc);
+}
+
+std::vector<glm::dvec3> prism_corners(const csg::Polygon2& poly, double z0, double z1) {
+    std::vector<glm::dvec3> out;
+    out.reserve(4 * poly.edges.size());
+    for (const glm::dvec4& e : poly.edges)
+        for (double z : {z0, z1}) {
+            out.emplace_back(e.x, e.y, z);
+            out.emplace_back(e.z, e.w, z);
+        }
+    return out;
 }
 
 void check_range(const csg::Aabb& box, const SourceLoc& loc) {
