@@ -98,6 +98,7 @@ int intersect_prism(const Polygon2& poly, const double* p, const glm::vec<3, T>&
     End<T> before{-inf, kPartNone, 0}, after{inf, kPartNone, 0};
     bool before_plus = false, after_plus = false;
     int k = 0;
+    const T inv_dd = T(1) / (d.x * d.x + d.y * d.y);
     for (std::uint32_t i = 0; i < poly.edges.size(); ++i) {
         const glm::dvec4& e = poly.edges[i];
         const T ax = T(e.x) - c.x, ay = T(e.y) - c.y, bx = T(e.z) - c.x, by = T(e.w) - c.y;
@@ -109,10 +110,9 @@ int intersect_prism(const Polygon2& poly, const double* p, const glm::vec<3, T>&
         // stays between the end points' projections even for an edge
         // almost along the ray, where a line–line division would be
         // ill-conditioned (or 0/0).
-        const T dd = d.x * d.x + d.y * d.y;
-        const T pa_ = (ax * d.x + ay * d.y) / dd, pb_ = (bx * d.x + by * d.y) / dd;
+        const T pa_ = ax * d.x + ay * d.y, pb_ = bx * d.x + by * d.y;  // projections times |d_xy|²
         const T f = sa_ / (sa_ - sb_);
-        const T s = pa_ + f * (pb_ - pa_);
+        const T s = (pa_ + f * (pb_ - pa_)) * inv_dd;
         const bool plus = sb_ > sa_;  // cross(d, edge) > 0
         if (s < lo) {
             inside = !inside;

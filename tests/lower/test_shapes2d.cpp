@@ -114,3 +114,18 @@ TEST_CASE("random extruded 2D booleans agree with point membership along rays") 
     // A ray grazing an edge within tol can disagree; they are rare.
     CHECK(bad <= rays / 100);
 }
+
+TEST_CASE("2D rules as OpenSCAD 2021.01 applies them") {
+    // openscad -o c.svg of this polygon gives the two outer strips only:
+    // the paths' overlap 2 < x < 4 is a hole (even-odd).
+    const csg::Scene overlap = scene_of(
+        "linear_extrude(1) polygon([[0,0],[4,0],[4,4],[0,4],[2,0],[6,0],[6,4],[2,4]], paths=[[0,1,2,3],[4,5,6,7]]);");
+    CHECK(csg::contains(overlap, {1, 2, 0.5}));
+    CHECK_FALSE(csg::contains(overlap, {3, 2, 0.5}));
+    CHECK(csg::contains(overlap, {5, 2, 0.5}));
+    // translate([0, 0, 5]) square(2) exports as the square at the origin: z is ignored.
+    const csg::Scene lifted = scene_of("linear_extrude(1) translate([1, 0, 5]) square(2);");
+    CHECK(lifted.bounds().lo.z == 0);
+    CHECK(lifted.bounds().hi.z == 1);
+    CHECK(lifted.bounds().lo.x == 1);
+}
