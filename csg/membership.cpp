@@ -50,14 +50,16 @@ bool contains(const Leaf& leaf, const glm::dvec3& x) {
 
 // Even-odd point in polygon the textbook way (a ray towards +x from the
 // point, an edge counted when its end points lie on either side of the
-// point's y, half-open) and strictly inside the slab.
+// point's y, half-open) on the section at the point's z, strictly inside the slab.
 bool contains_prism(const Polygon2& poly, const double* c, const glm::dvec3& x) {
     if (!(c[0] < x.z && x.z < c[1])) return false;
+    const double k = 1 + c[2] * (x.z - c[0]) / (c[1] - c[0]);  // the section's scale at this z
+    const double px = x.x / k, py = x.y / k;
     bool odd = false;
     for (const glm::dvec4& e : poly.edges) {
-        if ((e.y > x.y) == (e.w > x.y)) continue;
-        const double xc = e.x + (x.y - e.y) * (e.z - e.x) / (e.w - e.y);
-        if (xc > x.x) odd = !odd;
+        if ((e.y > py) == (e.w > py)) continue;
+        const double xc = e.x + (py - e.y) * (e.z - e.x) / (e.w - e.y);
+        if (xc > px) odd = !odd;
     }
     return odd;
 }

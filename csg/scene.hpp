@@ -55,7 +55,8 @@ enum class PrimKind : std::uint8_t {
     Paraboloid,   // p[0] = h, p[1] = r: z >= h(x²+y²)/r², z <= h
     Hyperboloid,  // p[0] = h, p[1] = r (radius at z = ±h/2), p[2] = waist (radius at z = 0)
     Mesh,         // graph: index into SceneGraph::meshes; Leaf: Leaf::mesh
-    Prism,        // p[0] = z0, p[1] = z1 (> z0): a polygon set (even-odd) times the slab z0 < z < z1;
+    Prism,        // p[0] = z0, p[1] = z1 (> z0): a polygon set (even-odd) times the slab z0 < z < z1,
+                  //   the section at z scaled by 1 + p[2]·(z − z0)/(z1 − z0) (p[2] > −1; 0: straight);
                   //   graph: index into SceneGraph::polygons; Leaf: Leaf::polygon
 };
 

@@ -127,7 +127,7 @@ private:
             if (gn.index >= g_.polygons.size())
                 throw std::invalid_argument("lower_to_csg: malformed scene graph (bad polygon index)");
             leaf.polygon = gn.index;
-            corners = prism_corners(g_.polygons[gn.index], gn.p[0], gn.p[1]);
+            corners = prism_corners(g_.polygons[gn.index], gn.p);
             points = &corners;
         }
         place_leaf(leaf, xf, points, gn.loc);

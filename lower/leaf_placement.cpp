@@ -69,13 +69,14 @@ void place_leaf(csg::Leaf& leaf, const csg::Affine& wfo, const std::vector<glm::
     check_range(leaf.bounds, loc);
 }
 
-std::vector<glm::dvec3> prism_corners(const csg::Polygon2& poly, double z0, double z1) {
+std::vector<glm::dvec3> prism_corners(const csg::Polygon2& poly, const double* p) {
     std::vector<glm::dvec3> out;
     out.reserve(4 * poly.edges.size());
     for (const glm::dvec4& e : poly.edges)
-        for (double z : {z0, z1}) {
-            out.emplace_back(e.x, e.y, z);
-            out.emplace_back(e.z, e.w, z);
+        for (int cap = 0; cap < 2; ++cap) {
+            const double k = cap ? 1 + p[2] : 1;  // a tapered section's scale at the top
+            out.emplace_back(k * e.x, k * e.y, p[cap]);
+            out.emplace_back(k * e.z, k * e.w, p[cap]);
         }
     return out;
 }

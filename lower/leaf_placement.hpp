@@ -16,8 +16,8 @@ namespace kerf {
 void place_leaf(csg::Leaf& leaf, const csg::Affine& world_from_object,
                 const std::vector<glm::dvec3>* mesh_points, const SourceLoc& loc);
 
-// The vertices of a prism's section on both caps.
-std::vector<glm::dvec3> prism_corners(const csg::Polygon2& poly, double z0, double z1);
+// The vertices of a prism's section on both caps (parameters p: the top one scaled by 1 + p[2]).
+std::vector<glm::dvec3> prism_corners(const csg::Polygon2& poly, const double* p);
 
 // A SourceError at `loc` unless the box's finite coordinates lie within
 // ±csg::kRenderableRange. (A tiny solid is fine: it is small in the picture;

@@ -96,18 +96,62 @@ void polygon(ModuleCall& c) {
     mark_flat(c);
 }
 
+// linear_extrude(scale = s) of a 2D subtree on the unit slab: the section at
+// z is (1 + (s − 1)·z) times the shape, a map that commutes with the 2D
+// booleans and, through each 2D transform x -> L·x + c, becomes
+// x -> L·x + c + (s − 1)·z·c (a shear in z, still affine: composing such
+// maps gives the map of the composition). So every transform gets that
+// shear and every leaf its tapered form: a circle a frustum, a polygon a
+// tapered prism, a square a tapered prism of its four corners. Rewrites
+// the subtree in place (its nodes belong to this extrusion alone).
+void taper(graph::SceneGraph& g, std::uint32_t root, double s) {
+    std::vector<std::uint32_t> todo{root};
+    while (!todo.empty()) {
+        graph::Node& n = g.nodes[todo.back()];
+        todo.pop_back();
+        if (n.kind == graph::NodeKind::Primitive) {
+            if (n.prim == P::Cylinder) {
+                n.p[3] = n.p[2] * s;
+            } else if (n.prim == P::Box) {
+                csg::Polygon2 poly;
+                const double x0 = n.p[0], y0 = n.p[1], x1 = n.p[3], y1 = n.p[4];
+                poly.edges = {{x0, y0, x1, y0}, {x1, y0, x1, y1}, {x1, y1, x0, y1}, {x0, y1, x0, y0}};
+                poly.lo = {x0, y0};
+                poly.hi = {x1, y1};
+                g.polygons.push_back(std::move(poly));
+                n.prim = P::Prism;
+                n.index = static_cast<std::uint32_t>(g.polygons.size() - 1);
+                n.p[0] = 0, n.p[1] = 1, n.p[2] = s - 1;
+                n.p[3] = n.p[4] = n.p[5] = 0;
+            } else if (n.prim == P::Prism) {
+                n.p[2] = s - 1;
+            }
+            continue;
+        }
+        if (n.kind == graph::NodeKind::Transform) {
+            glm::dmat4& m = g.matrices[n.index];
+            m[2][0] = (s - 1) * m[3][0];
+            m[2][1] = (s - 1) * m[3][1];
+        }
+        for (std::uint32_t k = 0; k < n.child_count; ++k) todo.push_back(g.child_refs[n.first_child + k]);
+    }
+}
+
 void linear_extrude(ModuleCall& c) {
     const Args& a = c.args;
     const double h = arg_positive(a, 0, "height", 100);
     const bool center = arg_bool(a, 1, "center", false);
     if (arg_number(a, 3, "twist", 0) != 0) arg_error(a, "twist is not implemented yet (only twist = 0)");
     if (a.has(4)) arg_positive(a, 4, "slices", 1);  // accepted: kerf extrudes exactly, not in slices
+    double top = 1;  // the top section's scale
     if (a.has(5)) {
         const Value& s = a[5];
-        const bool one = s.is_number() ? s.as_number() == 1
-                                       : s.is_vector(2) && s.as_list()[0].as_number() == 1 && s.as_list()[1].as_number() == 1;
         if (!s.is_number() && !s.is_vector(2)) arg_error(a, "scale must be a number or [sx, sy], got " + to_repr(s));
-        if (!one) arg_error(a, "scale is not implemented yet (only scale = 1)");
+        top = s.is_number() ? s.as_number() : s.as_list()[0].as_number();
+        if (s.is_vector(2) && s.as_list()[1].as_number() != top)
+            arg_error(a, "a scale that differs in x and y is not implemented yet, got " + to_repr(s));
+        if (!std::isfinite(top) || top < 0) arg_error(a, "scale must be a finite number >= 0, got " + to_repr(s));
+        if (top == 0) arg_error(a, "scale = 0 (a pointed top) is not implemented yet");
     }
     GraphBuilder& g = c.graph();
     const std::size_t mark = g.mark();
@@ -116,6 +160,8 @@ void linear_extrude(ModuleCall& c) {
     for (std::size_t i = mark; i < g.pending.size(); ++i)
         if (!g.graph.nodes[g.pending[i]].flat)
             throw SourceError(g.graph.nodes[g.pending[i]].loc, "linear_extrude: extrudes 2D shapes, not 3D solids");
+    if (top != 1)
+        for (std::size_t i = mark; i < g.pending.size(); ++i) taper(g.graph, g.pending[i], top);
     const double z0 = center ? -h / 2 : 0;
     g.extrude(mark, z0, z0 + h, c.st.loc);
 }

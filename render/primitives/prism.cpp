@@ -47,11 +47,9 @@ void emit(PrismSpan<T>* out, int& n, T tc, const End<T>& a, const End<T>& b) {
     out[n++] = PrismSpan<T>{Span<T>{t0, t1, a.part, b.part}, a.edge, b.edge};
 }
 
-}  // namespace
-
 template <typename T>
-int intersect_prism(const Polygon2& poly, const double* p, const glm::vec<3, T>& o, const glm::vec<3, T>& d,
-                    PrismSpan<T>* out, PrismCrossing<T>* scratch, T wa, T wb) {
+int straight_prism(const Polygon2& poly, const double* p, const glm::vec<3, T>& o, const glm::vec<3, T>& d,
+                   PrismSpan<T>* out, PrismCrossing<T>* scratch, T wa, T wb) {
     constexpr T inf = std::numeric_limits<T>::infinity();
     const glm::dvec2 mid = 0.5 * (poly.lo + poly.hi);
     const glm::vec<3, T> centre(T(mid.x), T(mid.y), T(0.5 * (p[0] + p[1])));
@@ -143,12 +141,79 @@ int intersect_prism(const Polygon2& poly, const double* p, const glm::vec<3, T>&
     return n;
 }
 
-glm::dvec3 normal_prism(const Polygon2& poly, std::uint8_t part, std::uint32_t edge) {
+// A tapered prism (p[2] = g ≠ 0: the section at z is k(z) = 1 + g·(z − z0)/h
+// times the polygon) is the straight prism of height h / (1 + g) seen
+// through the projective map P(x, y, z) = (x, y, z0 + (z − z0)) / k(z)
+// (the z0 offset aside), which maps lines to lines and k > 0 keeps the slab
+// in one piece. So the chord of the slab is mapped, the straight prism
+// solved on its image with parameter u in [0, 1], and each crossing mapped
+// back to the ray's t (the map of u to the chord's λ is a Möbius one);
+// caps keep their exact slab t.
+template <typename T>
+int tapered_prism(const Polygon2& poly, const double* p, const glm::vec<3, T>& o, const glm::vec<3, T>& d,
+                  PrismSpan<T>* out, PrismCrossing<T>* scratch) {
+    const T z0 = T(p[0]), z1 = T(p[1]), g = T(p[2]), h = T(p[1] - p[0]);
+    auto k_of = [&](T z) { return T(1) + g * (z - z0) / h; };
+    auto warp = [&](const glm::vec<3, T>& x, T k) { return glm::vec<3, T>(x.x / k, x.y / k, z0 + (x.z - z0) / k); };
+    const double q[6] = {p[0], p[0] + (p[1] - p[0]) / (1 + p[2]), 0, 0, 0, 0};
+    if (d.z == T(0)) {
+        // Parallel to the caps: one section all along, the straight prism scaled by k.
+        if (!(z0 < o.z && o.z < z1)) return 0;
+        const T k = k_of(o.z);
+        return straight_prism(poly, q, warp(o, k), d / k, out, scratch, -std::numeric_limits<T>::infinity(),
+                              std::numeric_limits<T>::infinity());
+    }
+    T ta = (z0 - o.z) / d.z, tb = (z1 - o.z) / d.z;
+    if (ta > tb) std::swap(ta, tb);
+    if (!(ta < tb)) return 0;
+    const glm::vec<3, T> A = o + ta * d, B = o + tb * d;
+    const T kA = k_of(d.z > T(0) ? z0 : z1), kB = k_of(d.z > T(0) ? z1 : z0);
+    glm::vec<3, T> Ap = warp(A, kA), Bp = warp(B, kB);
+    Ap.z = T(d.z > T(0) ? q[0] : q[1]);  // the chord's ends lie on the caps
+    Bp.z = T(d.z > T(0) ? q[1] : q[0]);
+    const int n = straight_prism(poly, q, Ap, Bp - Ap, out, scratch, -std::numeric_limits<T>::infinity(),
+                                 std::numeric_limits<T>::infinity());
+    int m = 0;
+    for (int i = 0; i < n; ++i) {
+        PrismSpan<T> s = out[i];
+        auto back = [&](T u, std::uint8_t part) {
+            if (part == kPartBottom || part == kPartTop) return (part == kPartBottom) == (d.z > T(0)) ? ta : tb;
+            const T lambda = u * kA / (kB + u * (kA - kB));
+            return ta + lambda * (tb - ta);
+        };
+        s.s.t0 = back(s.s.t0, s.s.part0);
+        s.s.t1 = back(s.s.t1, s.s.part1);
+        if (!(s.s.t0 < s.s.t1)) continue;
+        if (m > 0 && !(out[m - 1].s.t1 < s.s.t0)) {
+            out[m - 1].s.t1 = s.s.t1;
+            out[m - 1].s.part1 = s.s.part1;
+            out[m - 1].edge1 = s.edge1;
+            continue;
+        }
+        out[m++] = s;
+    }
+    return m;
+}
+
+}  // namespace
+
+template <typename T>
+int intersect_prism(const Polygon2& poly, const double* p, const glm::vec<3, T>& o, const glm::vec<3, T>& d,
+                    PrismSpan<T>* out, PrismCrossing<T>* scratch, T wa, T wb) {
+    if (p[2] != 0) return tapered_prism(poly, p, o, d, out, scratch);
+    return straight_prism(poly, p, o, d, out, scratch, wa, wb);
+}
+
+glm::dvec3 normal_prism(const Polygon2& poly, const double* p, std::uint8_t part, std::uint32_t edge) {
     if (part == kPartBottom) return {0, 0, -1};
     if (part == kPartTop) return {0, 0, 1};
     if (edge >= poly.edges.size()) return {0, 0, 1};
     const glm::dvec4& e = poly.edges[edge];
-    const glm::dvec3 n(e.w - e.y, -(e.z - e.x), 0);
+    const double ex = e.z - e.x, ey = e.w - e.y;
+    // The side through the edge at z0 and its copy scaled by 1 + g at z1:
+    // normal to the edge and to the generator from a = (e.x, e.y) to (1 + g)·a.
+    const double nz = -p[2] * (e.x * ey - e.y * ex) / (p[1] - p[0]);
+    const glm::dvec3 n(ey, -ex, nz);
     return part == kPartEdgeFlipped ? -n : n;
 }
 

@@ -1,5 +1,6 @@
 // The prism leaf (PrimKind::Prism): a polygon set filled by the even-odd
-// rule (csg::Polygon2) times the slab z0 < z < z1. Unlike the other
+// rule (csg::Polygon2) times the slab z0 < z < z1, its section scaled by
+// 1 + p[2]·(z − z0)/(z1 − z0) (p[2] = 0: straight; linear_extrude's scale − 1). Unlike the other
 // primitives it has any number of spans along a line (a concave section),
 // so it has its own entry point with caller-provided buffers instead of
 // intersect_leaf's two spans. Its side part is one polygon edge, named by
@@ -45,7 +46,8 @@ int intersect_prism(const Polygon2& poly, const double* p, const glm::vec<3, T>&
                     PrismSpan<T>* out, PrismCrossing<T>* scratch, T wa = -std::numeric_limits<T>::infinity(),
                     T wb = std::numeric_limits<T>::infinity());
 
-// Outward object-space normal of surface `part` (edge: `edge`).
-glm::dvec3 normal_prism(const Polygon2& poly, std::uint8_t part, std::uint32_t edge);
+// Outward object-space normal of surface `part` (edge: `edge`) of the prism
+// with parameters p.
+glm::dvec3 normal_prism(const Polygon2& poly, const double* p, std::uint8_t part, std::uint32_t edge);
 
 }  // namespace kerf::csg

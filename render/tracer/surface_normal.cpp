@@ -11,7 +11,7 @@ glm::dvec3 CsgTracer::normal(const TraceHit& hit, const glm::dvec3& world_point)
     const csg::Leaf& leaf = impl_->scene.leaves[hit.surface.leaf];
     const glm::dvec3 n_obj =
         leaf.kind == csg::PrimKind::Mesh    ? triangle_normal(impl_->scene.meshes[leaf.mesh], hit.surface.prim)
-        : leaf.kind == csg::PrimKind::Prism ? csg::normal_prism(impl_->scene.polygons[leaf.polygon], hit.surface.part,
+        : leaf.kind == csg::PrimKind::Prism ? csg::normal_prism(impl_->scene.polygons[leaf.polygon], leaf.p, hit.surface.part,
                                                                 hit.surface.prim)
                                             : csg::object_normal(leaf, leaf.object_from_world.point(world_point),
                                                                  hit.surface.part);

@@ -81,8 +81,9 @@ TEST_CASE("random extruded 2D booleans agree with point membership along rays") 
     const char* ops[3] = {"union", "intersection", "difference"};
     int rays = 0, bad = 0;
     for (int scene = 0; scene < 12; ++scene) {
-        std::string text = "linear_extrude(height = " + std::to_string(0.5 + std::abs(u(rng))) + ", center = true) " +
-                           ops[scene % 3] + "() {\n";
+        const char* scales[4] = {"1", "0.6", "1.5", "0.25"};
+        std::string text = "linear_extrude(height = " + std::to_string(0.5 + std::abs(u(rng))) +
+                           ", center = true, scale = " + scales[scene % 4] + ") " + ops[scene % 3] + "() {\n";
         for (int k = 0; k < 4; ++k) text += shape(scene + k) + "\n";
         text += "}\n";
         INFO(text);
@@ -128,4 +129,20 @@ TEST_CASE("2D rules as OpenSCAD 2021.01 applies them") {
     CHECK(lifted.bounds().lo.z == 0);
     CHECK(lifted.bounds().hi.z == 1);
     CHECK(lifted.bounds().lo.x == 1);
+}
+
+TEST_CASE("linear_extrude with a uniform scale: a circle becomes the frustum, a translated square a slanted taper") {
+    same_depth(depth_of("linear_extrude(height = 2, scale = 0.4) circle(r = 1.2);"),
+               depth_of("cylinder(h = 2, r1 = 1.2, r2 = 0.48);"), 1e-12);
+    // OpenSCAD scales each section about the origin: translate([2, 0]) square(1)
+    // is [2, 3] x [0, 1] at the bottom and [1, 1.5] x [0, 0.5] at the top (scale 0.5).
+    const csg::Scene s = scene_of("linear_extrude(height = 4, scale = [0.5, 0.5]) translate([2, 0]) square(1);");
+    CHECK(csg::contains(s, {2.9, 0.9, 0.01}));
+    CHECK(csg::contains(s, {1.45, 0.45, 3.99}));
+    CHECK_FALSE(csg::contains(s, {1.55, 0.25, 3.99}));
+    CHECK_FALSE(csg::contains(s, {2.9, 0.9, 3.0}));  // at z = 3 the section is [1.25, 1.875] x [0, 0.625]
+    CHECK(csg::contains(s, {1.8, 0.6, 3.0}));
+    CHECK_FALSE(csg::contains(s, {1.9, 0.3, 3.0}));
+    CHECK(s.bounds().hi.x == Approx(3));
+    CHECK(s.bounds().lo.x == Approx(1));
 }

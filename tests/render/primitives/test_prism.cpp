@@ -91,18 +91,25 @@ double seg_distance(const glm::dvec4& e, dvec2 p) {
 
 // Distance from p to the prism's surface, by brute force (no ray code):
 // the sides are the edges times [z0, z1], the caps the section at z0, z1.
+// A tapered prism (c[2] ≠ 0) is measured in the section through p (its
+// edges scaled by k(z)): an upper bound of the distance to a slanted side,
+// within 1/cos(slope) of it, which the bands below allow for.
 double surface_gap(const Section& s, const double* c, const dvec3& p) {
+    const double zc = std::clamp(p.z, c[0], c[1]);
+    const double k = 1 + c[2] * (zc - c[0]) / (c[1] - c[0]);
     double edge = 1e300;
-    for (const glm::dvec4& e : s.poly.edges) edge = std::min(edge, seg_distance(e, {p.x, p.y}));
+    for (const glm::dvec4& e : s.poly.edges) edge = std::min(edge, seg_distance(k * e, {p.x, p.y}));
     const double dz = std::max({0.0, c[0] - p.z, p.z - c[1]});
-    const bool in_xy = csg::contains_prism(s.poly, c, {p.x, p.y, 0.5 * (c[0] + c[1])});
+    // Is (x, y) in the section at zc? Asked of the section at mid height, rescaled.
+    const double zm = 0.5 * (c[0] + c[1]), km = 1 + c[2] * (zm - c[0]) / (c[1] - c[0]);
+    const bool in_xy = csg::contains_prism(s.poly, c, {p.x * km / k, p.y * km / k, zm});
     const double cap = in_xy ? std::min(std::abs(p.z - c[0]), std::abs(p.z - c[1])) : 1e300;
     return std::min(std::hypot(edge, dz), cap);
 }
 
 template <typename T>
-void check_rays(const Section& s, double scale, std::mt19937_64& rng, int rays) {
-    const double c[6] = {-0.3 * scale, 0.4 * scale, 0, 0, 0, 0};
+void check_rays(const Section& s, double scale, std::mt19937_64& rng, int rays, double taper = 0) {
+    const double c[6] = {-0.3 * scale, 0.4 * scale, taper, 0, 0, 0};
     std::uniform_real_distribution<double> u(-1, 1);
     std::vector<csg::PrismSpan<T>> out(csg::prism_span_room(s.poly.edges.size()));
     std::vector<csg::PrismCrossing<T>> scratch(s.poly.edges.size());
@@ -128,7 +135,7 @@ void check_rays(const Section& s, double scale, std::mt19937_64& rng, int rays) 
         const int n = csg::intersect_prism<T>(s.poly, c, glm::vec<3, T>(o), glm::vec<3, T>(d), out.data(),
                                               scratch.data());
         REQUIRE(n <= int(out.size()));
-        const double tol = tol_k * 8 * scale;  // world length; |o|, |t·d| are a few times scale
+        const double tol = tol_k * 8 * scale * (1 + std::abs(taper));  // world length; |o|, |t·d| are a few times scale
         std::vector<double> ends;
         for (int i = 0; i < n; ++i) {
             INFO("span " << i << " of " << n << ": " << out[i].s.t0 << " .. " << out[i].s.t1 << " parts "
@@ -145,7 +152,7 @@ void check_rays(const Section& s, double scale, std::mt19937_64& rng, int rays) 
         for (int k = 0; k <= 400; ++k) {
             const double t = -1.0 + 3.0 * k / 400.0;
             const dvec3 p = o + t * d;
-            if (surface_gap(s, c, p) <= 4 * tol) continue;
+            if (surface_gap(s, c, p) <= 8 * tol) continue;  // 8: the in-section distance of a slanted side
             bool near_end = false;
             for (double e : ends) near_end = near_end || std::abs(e - t) * tlen <= 4 * tol;
             if (near_end) continue;
@@ -166,6 +173,20 @@ TEMPLATE_TEST_CASE("prism spans agree with even-odd membership", "[prism]", doub
             INFO("scale " << scale << " kind " << kind);
             const Section s = make_section(rng, kind, scale);
             check_rays<TestType>(s, scale, rng, 300);
+        }
+    }
+}
+
+TEMPLATE_TEST_CASE("tapered prism spans agree with even-odd membership of the scaled section", "[prism]", double,
+                   float) {
+    std::mt19937_64 rng(16);
+    for (double taper : {-0.5, 1.0, -0.9, 3.0}) {
+        for (double scale : {1.0, 1e-6, 1e6}) {
+            for (int kind = 0; kind < 5; ++kind) {
+                INFO("taper " << taper << " scale " << scale << " kind " << kind);
+                const Section s = make_section(rng, kind, scale);
+                check_rays<TestType>(s, scale, rng, 150, taper);
+            }
         }
     }
 }
@@ -208,8 +229,8 @@ TEST_CASE("prism normals face out of the filled side", "[prism]") {
         const dvec3 o(3 * u(rng), 3 * u(rng), u(rng)), d = dvec3(0.5 * u(rng), 0.5 * u(rng), 0.2 * u(rng)) - o;
         const int n = csg::intersect_prism<double>(s.poly, c, o, d, out.data(), scratch.data());
         for (int i = 0; i < n; ++i) {
-            const dvec3 n0 = csg::normal_prism(s.poly, out[i].s.part0, out[i].edge0);
-            const dvec3 n1 = csg::normal_prism(s.poly, out[i].s.part1, out[i].edge1);
+            const dvec3 n0 = csg::normal_prism(s.poly, c, out[i].s.part0, out[i].edge0);
+            const dvec3 n1 = csg::normal_prism(s.poly, c, out[i].s.part1, out[i].edge1);
             // Stepping outward from an entry goes back along the ray, from an exit forward.
             CHECK(glm::dot(n0, d) < 0);
             CHECK(glm::dot(n1, d) > 0);
