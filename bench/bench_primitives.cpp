@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "render/primitives/primitives.hpp"
+#include "render/primitives/prism.hpp"
 
 namespace {
 
@@ -82,6 +83,77 @@ void run(benchmark::State& state, Leaf leaf, RaySet rays) {
         i = (i + 1) & mask;
     }
 }
+
+// Prism leaves (intersect_prism): a regular n-gon section of circumradius
+// 0.5 times 0 < z < 1, with n = 4 (the box's shape), 32 and 1000 edges, and
+// a 1000-edge star (a gear profile's worth of crossings per ray).
+kerf::csg::Polygon2 ngon(int n, bool star) {
+    kerf::csg::Polygon2 p;
+    std::vector<glm::dvec2> v;
+    for (int i = 0; i < n; ++i) {
+        const double a = 2 * M_PI * (i + 0.5) / n, r = star && i % 2 ? 0.4 : 0.5;
+        v.emplace_back(r * std::cos(a), r * std::sin(a));
+    }
+    for (int i = 0; i < n; ++i) p.edges.emplace_back(v[i].x, v[i].y, v[(i + 1) % n].x, v[(i + 1) % n].y);
+    p.lo = glm::dvec2(-0.5);
+    p.hi = glm::dvec2(0.5);
+    return p;
+}
+
+template <typename T>
+void run_prism(benchmark::State& state, kerf::csg::Polygon2 poly, RaySet rays) {
+    using V = glm::vec<3, T>;
+    std::vector<V> o(rays.o.begin(), rays.o.end()), d(rays.d.begin(), rays.d.end());
+    const double p[6] = {0, 1, 0, 0, 0, 0};
+    std::vector<kerf::csg::PrismSpan<T>> spans(kerf::csg::prism_span_room(poly.edges.size()));
+    std::vector<kerf::csg::PrismCrossing<T>> scratch(poly.edges.size());
+    const std::size_t mask = o.size() - 1;
+    std::size_t i = 0;
+    for (auto _ : state) {
+        const int n = kerf::csg::intersect_prism<T>(poly, p, o[i], d[i], spans.data(), scratch.data());
+        benchmark::DoNotOptimize(n);
+        benchmark::DoNotOptimize(spans.data());
+        i = (i + 1) & mask;
+    }
+}
+
+const bool prisms_registered = [] {
+    std::uint64_t seed = 100;
+    const Shape around{"prism", PrimKind::Box, {-0.5, -0.5, 0, 0.5, 0.5, 1}, dvec3(0, 0, 0.5), 0.87};
+    struct Case { const char* name; int n; bool star; };
+    for (const Case c : {Case{"prism4", 4, false}, Case{"prism32", 32, false}, Case{"prism1000", 1000, false},
+                         Case{"prism1000_star", 1000, true}}) {
+        const kerf::csg::Polygon2 poly = ngon(c.n, c.star);
+        // Hit or miss by the prism itself: rays are drawn around its box and sorted by intersect_prism.
+        Leaf box;
+        box.kind = PrimKind::Box;
+        for (int k = 0; k < 6; ++k) box.p[k] = around.p[k];
+        for (bool hit : {true, false}) {
+            RaySet all = make_rays(box, around, true, seed), more = make_rays(box, around, false, seed + 1);
+            all.o.insert(all.o.end(), more.o.begin(), more.o.end());
+            all.d.insert(all.d.end(), more.d.begin(), more.d.end());
+            seed += 2;
+            const double p[6] = {0, 1, 0, 0, 0, 0};
+            std::vector<kerf::csg::PrismSpan<double>> sp(kerf::csg::prism_span_room(poly.edges.size()));
+            std::vector<kerf::csg::PrismCrossing<double>> sc(poly.edges.size());
+            RaySet rays;
+            for (std::size_t k = 0; k < all.o.size() && rays.o.size() < 1024; ++k)
+                if ((kerf::csg::intersect_prism<double>(poly, p, all.o[k], all.d[k], sp.data(), sc.data()) > 0) == hit) {
+                    rays.o.push_back(all.o[k]);
+                    rays.d.push_back(all.d[k]);
+                }
+            while (!rays.o.empty() && rays.o.size() < 1024) {  // power of two for the index mask
+                rays.o.push_back(rays.o[rays.o.size() % 512]);
+                rays.d.push_back(rays.d[rays.d.size() % 512]);
+            }
+            if (rays.o.size() != 1024) continue;
+            const std::string base = std::string(c.name) + (hit ? "/hit" : "/miss");
+            benchmark::RegisterBenchmark((base + "/float").c_str(), run_prism<float>, poly, rays);
+            benchmark::RegisterBenchmark((base + "/double").c_str(), run_prism<double>, poly, rays);
+        }
+    }
+    return true;
+}();
 
 const bool registered = [] {
     std::uint64_t seed = 1;

@@ -88,6 +88,11 @@ void leaf_shape(std::string& out, const Leaf& l) {
             field(out, "h", p[0]); field(out, "r", p[1]); field(out, "waist", p[2]);
             break;
         case PrimKind::Mesh: out += "mesh mesh=" + std::to_string(l.mesh); break;
+        case PrimKind::Prism:
+            out += "prism polygon=" + std::to_string(l.polygon);
+            field(out, "z0", p[0]); field(out, "z1", p[1]);
+            if (p[2] != 0) field(out, "top_scale", 1 + p[2]);
+            break;
     }
 }
 

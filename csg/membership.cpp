@@ -42,9 +42,26 @@ bool contains(const Leaf& leaf, const glm::dvec3& x) {
             const double rho = radial(x);
             return std::abs(x.z) < 0.5 * c[0] && rho * rho < hyper_radius2(c, x.z);
         }
-        case PrimKind::Mesh: return false;
+        case PrimKind::Mesh:
+        case PrimKind::Prism: return false;  // need their data: contains(Scene, ...), contains_prism
     }
     return false;
+}
+
+// Even-odd point in polygon the textbook way (a ray towards +x from the
+// point, an edge counted when its end points lie on either side of the
+// point's y, half-open) on the section at the point's z, strictly inside the slab.
+bool contains_prism(const Polygon2& poly, const double* c, const glm::dvec3& x) {
+    if (!(c[0] < x.z && x.z < c[1])) return false;
+    const double k = 1 + c[2] * (x.z - c[0]) / (c[1] - c[0]);  // the section's scale at this z
+    const double px = x.x / k, py = x.y / k;
+    bool odd = false;
+    for (const glm::dvec4& e : poly.edges) {
+        if ((e.y > py) == (e.w > py)) continue;
+        const double xc = e.x + (py - e.y) * (e.z - e.x) / (e.w - e.y);
+        if (xc > px) odd = !odd;
+    }
+    return odd;
 }
 
 double surface_distance(const Leaf& leaf, const glm::dvec3& x) {
@@ -83,7 +100,8 @@ double surface_distance(const Leaf& leaf, const glm::dvec3& x) {
             const double side = g > 0 ? f / g : (f == 0 ? 0.0 : std::copysign(std::sqrt(std::abs(f)), f));
             return std::max(side, std::abs(x.z) - half);
         }
-        case PrimKind::Mesh: break;
+        case PrimKind::Mesh:
+        case PrimKind::Prism: break;
     }
     return std::numeric_limits<double>::infinity();
 }
@@ -95,6 +113,9 @@ bool node_contains(const Scene& s, std::uint32_t node, const glm::dvec3& p) {
     switch (n.op) {
         case Op::Leaf: {
             const Leaf& l = s.leaves[n.first];
+            if (l.kind == PrimKind::Prism)
+                return l.polygon < s.polygons.size() &&
+                       contains_prism(s.polygons[l.polygon], l.p, l.object_from_world.point(p));
             return contains(l, l.object_from_world.point(p));
         }
         case Op::Union:

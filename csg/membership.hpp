@@ -13,6 +13,9 @@ namespace kerf::csg {
 // always false (they have no analytic inequality).
 bool contains(const Leaf& leaf, const glm::dvec3& p_object);
 
+// Prism leaves (PrimKind::Prism, parameters c) over section `poly`.
+bool contains_prism(const Polygon2& poly, const double* c, const glm::dvec3& p_object);
+
 // True when the world point p is strictly inside the scene's solid: each
 // node's defining rule applied to its children (union: any; intersection:
 // all, and at least one child; difference: the minuend and no subtrahend).

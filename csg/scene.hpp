@@ -55,12 +55,25 @@ enum class PrimKind : std::uint8_t {
     Paraboloid,   // p[0] = h, p[1] = r: z >= h(x²+y²)/r², z <= h
     Hyperboloid,  // p[0] = h, p[1] = r (radius at z = ±h/2), p[2] = waist (radius at z = 0)
     Mesh,         // graph: index into SceneGraph::meshes; Leaf: Leaf::mesh
+    Prism,        // p[0] = z0, p[1] = z1 (> z0): a polygon set (even-odd) times the slab z0 < z < z1,
+                  //   the section at z scaled by 1 + p[2]·(z − z0)/(z1 − z0) (p[2] > −1; 0: straight);
+                  //   graph: index into SceneGraph::polygons; Leaf: Leaf::polygon
+};
+
+// A 2D polygon set filled by the even-odd rule (docs/spec.md §10: OpenSCAD's
+// rule for paths, holes, self-intersecting and overlapping paths): a point
+// is inside when a ray from it crosses the closed paths an odd number of
+// times. Stored as its edges; a path's closing edge is one of them.
+struct Polygon2 {
+    std::vector<glm::dvec4> edges;  // (x0, y0, x1, y1), one per path edge
+    glm::dvec2 lo{0}, hi{0};        // the box of the vertices
 };
 
 struct Leaf {
     PrimKind kind = PrimKind::Sphere;
     std::uint32_t material = 0;
     std::uint32_t mesh = kNone;        // Mesh only
+    std::uint32_t polygon = kNone;     // Prism only: into Scene::polygons
     std::uint32_t source = kNone;      // into Scene::sources
     double p[6] = {0, 0, 0, 0, 0, 0};  // shape parameters, object space
     Affine object_from_world;          // world point -> object point
@@ -128,6 +141,7 @@ struct Scene {
 
     std::vector<Material> materials;      // at least one (the default light grey)
     std::vector<Mesh> meshes;
+    std::vector<Polygon2> polygons;       // Prism leaves' sections, each stored once
     Camera camera;                        // always resolved (docs/spec.md §6 defaults applied)
     std::vector<Light> lights;            // always resolved (defaults applied)
     glm::dvec3 background{0.2, 0.2, 0.2};

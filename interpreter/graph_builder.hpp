@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "grammar/source.hpp"
 #include "interpreter/scene_graph.hpp"
 
 namespace kerf::eval {
@@ -41,10 +42,21 @@ public:
     void push(std::uint32_t id) { pending.push_back(id); }
 
     // One node of `kind` whose children are pending[mark..]; replaces them.
+    // It is 2D when its children are; 2D and 3D children together are an
+    // error at the first child of the other kind (docs/spec.md §10).
     std::uint32_t make_node(std::size_t mark, graph::NodeKind kind, const SourceLoc& loc, std::uint32_t index = 0) {
         graph::Node n;
         n.kind = kind;
         n.index = index;
+        if (pending.size() > mark) {
+            n.flat = graph.nodes[pending[mark]].flat;
+            for (std::size_t i = mark + 1; i < pending.size(); ++i) {
+                const graph::Node& c = graph.nodes[pending[i]];
+                if (c.flat != n.flat)
+                    throw SourceError(c.loc, c.flat ? "a 2D shape cannot be combined with 3D solids in one operation"
+                                                    : "a 3D solid cannot be combined with 2D shapes in one operation");
+            }
+        }
         n.first_child = static_cast<std::uint32_t>(graph.child_refs.size());
         n.child_count = static_cast<std::uint32_t>(pending.size() - mark);
         n.loc = loc;
@@ -62,6 +74,22 @@ public:
     // their union for several.
     void group(std::size_t mark, const SourceLoc& loc) {
         if (pending.size() - mark > 1) make_node(mark, graph::NodeKind::Union, loc);
+    }
+
+    // True when pending[mark..] (a block's result) is 2D.
+    bool flat_since(std::size_t mark) const { return pending.size() > mark && graph.nodes[pending[mark]].flat; }
+
+    // The 2D shapes pending[mark..] extruded to z0 < z < z1: the unit slab
+    // they are carried on, mapped in z (scene_graph.hpp, Node::flat).
+    void extrude(std::size_t mark, double z0, double z1, const SourceLoc& loc) {
+        if (pending.size() == mark) return;
+        group(mark, loc);
+        glm::dmat4 m(1.0);
+        m[2][2] = z1 - z0;
+        m[3][2] = z0;
+        add_matrix(m);
+        make_node(mark, graph::NodeKind::Transform, loc, static_cast<std::uint32_t>(graph.matrices.size() - 1));
+        graph.nodes[pending.back()].flat = false;
     }
 
     // A transform or appearance over pending[mark..] (grouped first); nothing

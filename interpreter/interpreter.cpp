@@ -83,6 +83,12 @@ graph::SceneGraph Evaluator::run(ast::Program program) {
         out_.pending.assign(1, static_cast<std::uint32_t>(root_override_));
     }
     out_.graph.root = out_.make_node(0, graph::NodeKind::Union, top);
+    if (out_.graph.nodes[out_.graph.root].flat) {
+        // A 2D model is shown as a plate 1 thick on z = 0, as OpenSCAD's
+        // preview draws 2D shapes (docs/spec.md §10).
+        out_.extrude(0, -0.5, 0.5, top);
+        out_.graph.root = out_.make_node(0, graph::NodeKind::Union, top);
+    }
     out_.pending.clear();
     return std::move(out_.graph);
 }

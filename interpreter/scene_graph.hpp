@@ -37,6 +37,11 @@ struct Node {
                                        // Transform: into matrices; Appearance: into materials
     double p[6] = {0, 0, 0, 0, 0, 0};  // Primitive parameters (csg::PrimKind says which)
     SourceLoc loc;                     // the statement that produced the node
+    // A 2D shape (docs/spec.md §10), carried as its extrusion over the unit
+    // slab 0 < z < 1: square a Box, circle a Cylinder, polygon a Prism; 2D
+    // transforms keep z, so every extrusion without twist or scale is a z
+    // map of it (docs/lowering.md, "2D shapes").
+    bool flat = false;
 };
 
 struct PolygonMesh {  // as written: polygon faces; lowering triangulates into csg::Mesh
@@ -51,6 +56,7 @@ struct SceneGraph {
     std::vector<glm::dmat4> matrices;        // Transform: world_from_child (affine)
     std::vector<csg::Material> materials;
     std::vector<PolygonMesh> meshes;
+    std::vector<csg::Polygon2> polygons;     // Prism: polygon sections
     std::uint32_t root = 0;                  // a Union node (implicit top-level union)
 
     std::optional<csg::Camera> camera;            // none: lowering applies docs/spec.md §6 defaults

@@ -122,6 +122,14 @@ private:
             leaf.mesh = gn.index;
             points = &g_.meshes[gn.index].points;
         }
+        std::vector<glm::dvec3> corners;
+        if (gn.prim == csg::PrimKind::Prism) {
+            if (gn.index >= g_.polygons.size())
+                throw std::invalid_argument("lower_to_csg: malformed scene graph (bad polygon index)");
+            leaf.polygon = gn.index;
+            corners = prism_corners(g_.polygons[gn.index], gn.p);
+            points = &corners;
+        }
         place_leaf(leaf, xf, points, gn.loc);
         if (leaf.bounds.empty()) {  // e.g. a mesh without points
             leaves.pop_back();

@@ -24,6 +24,7 @@ public:
         s_.materials.push_back(csg::Material{});  // 0: the default light grey
         material_map_.assign(g_.materials.size(), kNone);
         mesh_map_.assign(g_.meshes.size(), kNone);
+        polygon_map_.assign(g_.polygons.size(), kNone);
         if (root != kNone) {
             csg::reserve_huge(s_.nodes, t_.nodes.size());
             csg::reserve_huge(s_.children, t_.nodes.size());
@@ -92,7 +93,7 @@ private:
     const graph::SceneGraph& g_;
     const FlatTree& t_;
     csg::Scene& s_;
-    std::vector<std::uint32_t> material_map_, mesh_map_;
+    std::vector<std::uint32_t> material_map_, mesh_map_, polygon_map_;
     std::unordered_map<const SourceFile*, std::uint32_t> file_by_ptr_;
     std::unordered_map<std::string, std::uint32_t> file_by_path_;
     struct SourceKey {
@@ -111,6 +112,7 @@ private:
     void resolve(csg::Leaf& leaf) {
         leaf.material = material(leaf.material);
         if (leaf.mesh != kNone) leaf.mesh = mesh(leaf.mesh);
+        if (leaf.polygon != kNone) leaf.polygon = polygon(leaf.polygon);
         leaf.source = source(g_.nodes[leaf.source].loc);
     }
 
@@ -129,6 +131,14 @@ private:
             s_.meshes.push_back(lower_mesh(g_.meshes[gm]));
         }
         return mesh_map_[gm];
+    }
+
+    std::uint32_t polygon(std::uint32_t gp) {
+        if (polygon_map_[gp] == kNone) {  // stored once, however many leaves extrude it
+            polygon_map_[gp] = static_cast<std::uint32_t>(s_.polygons.size());
+            s_.polygons.push_back(g_.polygons[gp]);
+        }
+        return polygon_map_[gp];
     }
 
     std::uint32_t file(const SourceFile* f) {

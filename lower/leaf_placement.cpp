@@ -60,13 +60,25 @@ void place_leaf(csg::Leaf& leaf, const csg::Affine& wfo, const std::vector<glm::
     // Normals map by the inverse transpose, which keeps them outward under
     // mirrors too: for an outward step v (n·v > 0), (L⁻ᵀn)·(L v) = n·v > 0.
     leaf.normal_to_world = glm::transpose(leaf.object_from_world.linear);
-    if (leaf.kind == csg::PrimKind::Mesh)
+    if (leaf.kind == csg::PrimKind::Mesh || leaf.kind == csg::PrimKind::Prism)
         leaf.bounds = mesh_points ? mesh_bounds(*mesh_points, wfo) : csg::Aabb{};
     else if (leaf.kind == csg::PrimKind::Plane)
         leaf.bounds = clip_by_halfspace(csg::Aabb::everything(), world_halfspace(leaf));
     else
         leaf.bounds = primitive_bounds(leaf.kind, leaf.p, wfo);
     check_range(leaf.bounds, loc);
+}
+
+std::vector<glm::dvec3> prism_corners(const csg::Polygon2& poly, const double* p) {
+    std::vector<glm::dvec3> out;
+    out.reserve(4 * poly.edges.size());
+    for (const glm::dvec4& e : poly.edges)
+        for (int cap = 0; cap < 2; ++cap) {
+            const double k = cap ? 1 + p[2] : 1;  // a tapered section's scale at the top
+            out.emplace_back(k * e.x, k * e.y, p[cap]);
+            out.emplace_back(k * e.z, k * e.w, p[cap]);
+        }
+    return out;
 }
 
 void check_range(const csg::Aabb& box, const SourceLoc& loc) {

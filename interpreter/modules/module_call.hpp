@@ -56,12 +56,13 @@ struct ModuleEntry {
     void (*handler)(ModuleCall&);
 };
 
-// The entries of each group (solids.cpp, transforms.cpp, appearance.cpp,
+// The entries of each group (solids.cpp, shapes2d.cpp, transforms.cpp, appearance.cpp,
 // setup.cpp); table.cpp merges them into one sorted table.
 std::span<const ModuleEntry> solid_modules();
 std::span<const ModuleEntry> transform_modules();
 std::span<const ModuleEntry> appearance_modules();
 std::span<const ModuleEntry> setup_modules();
+std::span<const ModuleEntry> shape2d_modules();  // shapes2d.cpp
 
 // The built-in module called `name`, or null.
 const ModuleEntry* find_module(std::string_view name);

@@ -83,12 +83,26 @@ void plain_union(ModuleCall& c) {
     c.graph().group(mark, c.st.loc);
 }
 
+// A transform of 2D shapes uses only its action in the plane, as
+// OpenSCAD's does (x, y rows and the x, y translation), so z stays the
+// unit slab the shapes are carried on (docs/spec.md §10).
+glm::dmat4 planar(const Args& a, const glm::dmat4& m) {
+    glm::dmat4 p(1.0);
+    p[0][0] = m[0][0]; p[0][1] = m[0][1];
+    p[1][0] = m[1][0]; p[1][1] = m[1][1];
+    p[3][0] = m[3][0]; p[3][1] = m[3][1];
+    if (!(p[0][0] * p[1][1] - p[0][1] * p[1][0] != 0))
+        arg_error(a, "the transform flattens the 2D shape to a line (its action in the XY plane is singular)");
+    return p;
+}
+
 // The children under world_from_child `m`; nothing when they make no solid.
-void transformed(ModuleCall& c, const glm::dmat4& m) {
+void transformed(ModuleCall& c, glm::dmat4 m) {
     GraphBuilder& g = c.graph();
     std::size_t mark = g.mark();
     c.children();
     if (g.mark() == mark) return;
+    if (g.flat_since(mark)) m = planar(c.args, m);
     g.add_matrix(m);
     g.wrap(mark, NK::Transform, static_cast<std::uint32_t>(g.graph.matrices.size() - 1), c.st.loc);
 }

@@ -2,16 +2,19 @@
 // span end names the leaf surface (and mesh triangle) and whether the CSG
 // flipped it (a subtrahend's surface faces into the minuend).
 #include "render/primitives/primitives.hpp"
+#include "render/primitives/prism.hpp"
 #include "render/tracer/build.hpp"
 
 namespace kerf::render {
 
 glm::dvec3 CsgTracer::normal(const TraceHit& hit, const glm::dvec3& world_point) const {
     const csg::Leaf& leaf = impl_->scene.leaves[hit.surface.leaf];
-    const glm::dvec3 n_obj = leaf.kind == csg::PrimKind::Mesh
-                                 ? triangle_normal(impl_->scene.meshes[leaf.mesh], hit.surface.prim)
-                                 : csg::object_normal(leaf, leaf.object_from_world.point(world_point),
-                                                      hit.surface.part);
+    const glm::dvec3 n_obj =
+        leaf.kind == csg::PrimKind::Mesh    ? triangle_normal(impl_->scene.meshes[leaf.mesh], hit.surface.prim)
+        : leaf.kind == csg::PrimKind::Prism ? csg::normal_prism(impl_->scene.polygons[leaf.polygon], leaf.p, hit.surface.part,
+                                                                hit.surface.prim)
+                                            : csg::object_normal(leaf, leaf.object_from_world.point(world_point),
+                                                                 hit.surface.part);
     glm::dvec3 n = leaf.normal_to_world * n_obj;
     const double len = glm::length(n);
     n = len > 0 ? n / len : glm::dvec3(0, 0, 1);

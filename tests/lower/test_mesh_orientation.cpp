@@ -10,6 +10,7 @@
 #include "interpreter/interpreter.hpp"
 #include "lower/lower.hpp"
 #include "render/render.hpp"
+#include "tests/lower/script_scene.hpp"
 
 using namespace kerf;
 
@@ -51,16 +52,7 @@ std::string polyhedron(bool (&flip)[6]) {
 }
 
 void same_depth(const render::Image& got, const render::Image& want) {
-    REQUIRE(got.pixels.size() == want.pixels.size());
-    std::size_t hits = 0;
-    for (std::size_t i = 0; i < want.pixels.size(); ++i) {
-        INFO("pixel " << i);
-        REQUIRE(std::isfinite(got.pixels[i]) == std::isfinite(want.pixels[i]));
-        if (!std::isfinite(want.pixels[i])) continue;
-        ++hits;
-        CHECK(got.pixels[i] == Approx(want.pixels[i]).epsilon(1e-5));  // mesh data is float
-    }
-    CHECK(hits > 200);
+    test::same_depth(got, want, 1e-5);  // mesh data is float
 }
 
 }  // namespace

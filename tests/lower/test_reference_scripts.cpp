@@ -2,11 +2,13 @@
 // parser and evaluator, lower to the expected flattened shapes.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <string>
 
 #include "interpreter/interpreter.hpp"
 #include "lower/lower.hpp"
 #include "csg/dump.hpp"
+#include "csg/membership.hpp"
 #include "tests/lower/scene_checks.hpp"
 
 using namespace kerf;
@@ -106,4 +108,22 @@ TEST_CASE("every example has its own camera and lights, and dumps") {
         const std::string text = csg::dump_scene(s);
         CHECK(text.find(std::string("examples/") + name) != std::string::npos);
     }
+}
+
+TEST_CASE("examples/gear.sdl: teeth, bore, keyway and lightening holes where the profile puts them") {
+    const csg::Scene s = lower_example("gear.sdl");
+    test::check_structure(s);
+    auto at = [](double r, double deg, double z) {
+        const double a = deg * M_PI / 180;
+        return glm::dvec3(r * std::cos(a), r * std::sin(a), z);
+    };
+    const double tooth = 360.0 * 0.3 / 24, gap = 360.0 * 0.8 / 24;  // middle of tooth 0 and of the gap after it
+    CHECK(csg::contains(s, at(10.3, tooth, 2)));      // a tooth near its tip
+    CHECK_FALSE(csg::contains(s, at(10.3, gap, 2)));  // between two teeth
+    CHECK(csg::contains(s, at(8.5, gap, 2)));         // below the root circle
+    CHECK_FALSE(csg::contains(s, at(2.9, 90, 2)));    // the bore
+    CHECK_FALSE(csg::contains(s, {3.5, 0, 2}));       // the keyway
+    CHECK(csg::contains(s, at(4, 30, 2)));             // the web between the holes
+    CHECK_FALSE(csg::contains(s, at(6, 60, 2)));       // a lightening hole
+    CHECK_FALSE(csg::contains(s, at(8.5, gap, 4.01))); // above the top
 }

@@ -7,21 +7,10 @@
 #include <string>
 
 #include "csg/membership.hpp"
-#include "interpreter/interpreter.hpp"
-#include "lower/lower.hpp"
+#include "tests/lower/script_scene.hpp"
 
 using namespace kerf;
-
-namespace {
-
-csg::Scene lowered(const std::string& text) {
-    auto f = std::make_shared<SourceFile>();
-    f->path = "test.sdl";
-    f->text = text;
-    return lower_to_csg(evaluate_source(f).graph);
-}
-
-}  // namespace
+using kerf::test::lowered;
 
 TEST_CASE("regular_prism is the regular n-gon prism: inside at its corners, outside beyond its flats") {
     for (int n : {3, 5, 6, 8}) {

@@ -1,0 +1,53 @@
+// The prism leaf (PrimKind::Prism): a polygon set filled by the even-odd
+// rule (csg::Polygon2) times the slab z0 < z < z1, its section scaled by
+// 1 + p[2]·(z − z0)/(z1 − z0) (p[2] = 0: straight; linear_extrude's scale − 1). Unlike the other
+// primitives it has any number of spans along a line (a concave section),
+// so it has its own entry point with caller-provided buffers instead of
+// intersect_leaf's two spans. Its side part is one polygon edge, named by
+// the span end's edge index.
+#pragma once
+#include <cstdint>
+#include <limits>
+
+#include <glm/glm.hpp>
+
+#include "csg/scene.hpp"
+#include "render/primitives/primitives.hpp"
+
+namespace kerf::csg {
+
+// Side parts: the outward normal is +perp(edge) = (ey, -ex, 0) or its negation
+// (even-odd filling gives an edge no orientation of its own).
+constexpr std::uint8_t kPartEdge = 0;
+constexpr std::uint8_t kPartEdgeFlipped = 3;
+
+template <typename T>
+struct PrismSpan {
+    Span<T> s;
+    std::uint32_t edge0, edge1;  // side parts: the edge hit at each end
+};
+
+template <typename T>
+struct PrismCrossing {
+    T s;                // along the ray, relative to its shift (prism.cpp)
+    std::uint32_t edge;
+    bool plus;          // cross(d_xy, edge) > 0
+};
+
+// Room intersect_prism needs: spans and crossings for a section of n edges.
+inline std::size_t prism_span_room(std::size_t edges) { return edges / 2 + 2; }
+
+// Sorted, disjoint spans of positive length of o + t·d inside the prism,
+// each end exact (caps, edges); the window [wa, wb] only limits which
+// crossings are sorted: spans not overlapping it may be left out. `out`
+// holds prism_span_room(edges) spans, `scratch` edges crossings.
+template <typename T>
+int intersect_prism(const Polygon2& poly, const double* p, const glm::vec<3, T>& o, const glm::vec<3, T>& d,
+                    PrismSpan<T>* out, PrismCrossing<T>* scratch, T wa = -std::numeric_limits<T>::infinity(),
+                    T wb = std::numeric_limits<T>::infinity());
+
+// Outward object-space normal of surface `part` (edge: `edge`) of the prism
+// with parameters p.
+glm::dvec3 normal_prism(const Polygon2& poly, const double* p, std::uint8_t part, std::uint32_t edge);
+
+}  // namespace kerf::csg

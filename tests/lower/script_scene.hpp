@@ -1,0 +1,37 @@
+// Shared by the lower tests that start from script text: the lowered scene
+// of a script, and a pixel-by-pixel comparison of two depth AOVs.
+#pragma once
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include "interpreter/interpreter.hpp"
+#include "lower/lower.hpp"
+#include "render/image/image.hpp"
+
+namespace kerf::test {
+
+inline csg::Scene lowered(const std::string& text) {
+    auto f = std::make_shared<SourceFile>();
+    f->path = "test.sdl";
+    f->text = text;
+    return lower_to_csg(evaluate_source(f).graph);
+}
+
+// Hit where `want` hits, at the same depth within `rel`; enough hits to mean something.
+inline void same_depth(const render::Image& got, const render::Image& want, double rel, std::size_t min_hits = 200) {
+    REQUIRE(got.pixels.size() == want.pixels.size());
+    std::size_t hits = 0;
+    for (std::size_t i = 0; i < want.pixels.size(); ++i) {
+        INFO("pixel " << i);
+        REQUIRE(std::isfinite(got.pixels[i]) == std::isfinite(want.pixels[i]));
+        if (!std::isfinite(want.pixels[i])) continue;
+        ++hits;
+        CHECK(got.pixels[i] == Approx(want.pixels[i]).epsilon(rel));
+    }
+    CHECK(hits > min_hits);
+}
+
+}  // namespace kerf::test
