@@ -65,7 +65,7 @@ std::shared_ptr<const SourceFile> read_source_file(const std::string& path) {
     return file;
 }
 
-ast::Program parse_program(std::shared_ptr<const SourceFile> file, const ParseLimits& limits) {
+ast::Program parse_program(std::shared_ptr<const SourceFile> file, const ParseOptions& limits) {
     namespace pg = tao::pegtl;
     std::string_view text = file->text;
     // A UTF-8 byte order mark is not part of the script (columns start after it).

@@ -45,8 +45,9 @@ const ast::Program& Loader::load(const std::string& path, const SourceLoc& loc) 
     } catch (const IoError& e) {
         throw SourceError(loc, e.what());
     }
-    ParseLimits pl;
+    ParseOptions pl;
     pl.max_nesting = opt_.limits.nesting;
+    pl.openscad = opt_.dialect == Dialect::Lenient;
     const ast::Program& p = keep(parse_program(std::move(file), pl));
     cache_[path] = &p;
     return p;

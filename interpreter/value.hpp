@@ -11,7 +11,18 @@
 #include <variant>
 #include <vector>
 
+#include "grammar/source.hpp"
+
 namespace kerf {
+
+// An error that OpenSCAD's rules turn into undef and a warning with the
+// same message (docs/openscad.md): a built-in function given the wrong
+// types, an operator that does not apply to its operands. Strict runs
+// report it as any other error; limits are never SoftErrors.
+class SoftError : public SourceError {
+public:
+    using SourceError::SourceError;
+};
 
 class Value;
 using ValueList = std::vector<Value>;

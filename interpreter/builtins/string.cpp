@@ -49,7 +49,7 @@ Value str_fn(std::span<const Value> args, const BuiltinContext& ctx) {
     for (const Value& a : args) {
         total += text_length(a, false, cap);
         if (total > cap)
-            fail(ctx, "str: string length limit " + std::to_string(cap) + " exceeded");
+            throw SourceError(ctx.loc, "str: string length limit " + std::to_string(cap) + " exceeded");
     }
     std::string out;
     out.reserve(total);

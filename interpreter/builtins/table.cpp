@@ -9,7 +9,7 @@
 namespace kerf {
 namespace builtin {
 
-void fail(const BuiltinContext& ctx, std::string message) { throw SourceError(ctx.loc, std::move(message)); }
+void fail(const BuiltinContext& ctx, std::string message) { throw SoftError(ctx.loc, std::move(message)); }
 
 std::string describe(const Value& v) {
     switch (v.type()) {

@@ -16,17 +16,27 @@ Args match_args(Evaluator& ev, const ModuleEntry& e, const ast::Stmt& st, Scope&
     for (const ast::Binding& b : st.args) {
         std::size_t i = n;
         if (b.name.empty()) {
-            if (positional >= n)
+            if (positional >= n) {
+                if (ev.lenient()) {  // OpenSCAD's warnings, the argument dropped
+                    ev.warn(b.loc, "Too many unnamed arguments supplied");
+                    continue;
+                }
                 throw SourceError(b.loc, std::string("too many arguments for '") + e.name + "' (takes " +
                                              std::to_string(n) + ")");
+            }
             i = positional++;
         } else {
             if (b.name[0] == '$') continue;  // $fn, $fa, $fs...: accepted and ignored
             for (std::size_t j = 0; j < n; ++j)
                 if (b.name == e.params[j]) i = j;
+            if (i == n && ev.lenient()) {
+                ev.warn(b.loc, "variable " + b.name + " not specified as parameter");
+                continue;
+            }
             if (i == n) throw SourceError(b.loc, "unknown argument '" + b.name + "' for '" + e.name + "'");
         }
-        if (a.given[i])
+        if (a.given[i] && ev.lenient()) ev.warn(b.loc, std::string("argument ") + e.params[i] + " supplied more than once");
+        else if (a.given[i])
             throw SourceError(b.loc, std::string("argument '") + e.params[i] + "' given twice to '" + e.name + "'");
         a.given[i] = true;
         a.values[i] = b.value ? ev.eval(*b.value, s) : Value();
