@@ -36,7 +36,7 @@ while IFS= read -r f; do
   first=$(grep -m1 -E ': error: |^kerf: error' <<<"$out")
   [[ -z "$first" ]] && first="exit $rc: $(head -n1 <<<"$out")"
   tag=""
-  if grep -qE "unknown module '($two_d)'" <<<"$first"; then
+  if grep -qE "'($two_d)' \(.*\) is not implemented" <<<"$first"; then
     tag=" [2D]"
     two_d_fail=$((two_d_fail + 1))
   fi

@@ -20,9 +20,7 @@ std::uint64_t text_length(const Value& v, bool quoted, std::uint64_t cap) {
         case ValueType::String: {
             const std::string& s = v.as_string();
             if (!quoted) return s.size();
-            std::uint64_t n = s.size() + 2;
-            for (char c : s) n += (c == '"' || c == '\\');
-            return n;
+            return s.size() + 2;
         }
         case ValueType::List: {
             const ValueList& items = v.as_list();
