@@ -74,6 +74,7 @@ ast::Program parse_program(std::shared_ptr<const SourceFile> file, const ParseOp
         throw SourceError(locate(file, text, bad), "invalid character");
 
     grammar::Builder builder(file, limits.max_nesting);
+    builder.openscad = limits.openscad;
     pg::memory_input<pg::tracking_mode::eager, pg::eol::lf_crlf> in(text.data(), text.size(), file->path);
     try {
         pg::parse<grammar::program, grammar::action, grammar::control>(in, builder);

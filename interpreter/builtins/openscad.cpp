@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "grammar/literals.hpp"
 #include "interpreter/builtins/support.hpp"
 
 namespace kerf::builtin {
@@ -205,24 +206,6 @@ Value search_fn(std::span<const Value> args, const BuiltinContext& ctx) {
     return Value::list(std::move(m.flat));
 }
 
-void append_utf8(std::string& out, std::uint32_t c) {
-    if (c < 0x80) {
-        out += static_cast<char>(c);
-    } else if (c < 0x800) {
-        out += static_cast<char>(0xC0 | (c >> 6));
-        out += static_cast<char>(0x80 | (c & 0x3F));
-    } else if (c < 0x10000) {
-        out += static_cast<char>(0xE0 | (c >> 12));
-        out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
-        out += static_cast<char>(0x80 | (c & 0x3F));
-    } else {
-        out += static_cast<char>(0xF0 | (c >> 18));
-        out += static_cast<char>(0x80 | ((c >> 12) & 0x3F));
-        out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
-        out += static_cast<char>(0x80 | (c & 0x3F));
-    }
-}
-
 // chr(65, [72, 105]): the characters of valid code points (1 to 0x10FFFF,
 // no surrogates; fractions truncated), lists flattened; anything else adds
 // nothing, as in OpenSCAD.
@@ -236,7 +219,7 @@ void chr_of(const Value& v, std::string& out) {
     if (!(d >= 1 && d < 0x110000)) return;
     const auto c = static_cast<std::uint32_t>(d);
     if (c >= 0xD800 && c <= 0xDFFF) return;
-    append_utf8(out, c);
+    grammar::append_utf8(out, c);
 }
 
 Value chr_fn(std::span<const Value> args, const BuiltinContext&) {

@@ -66,10 +66,32 @@ bool Evaluator::builtin_module(const ast::Stmt& st, Scope& s, bool top_level) {
     if (e->kind == ModuleKind::Setup && !top_level)
         throw SourceError(st.loc, st.name + " is only allowed at the top level");
     Args a = match_args(*this, *e, st, s);
-    if (e->kind != ModuleKind::Operation && !st.body.empty())
-        arg_error(a, e->kind == ModuleKind::Solid ? "a solid takes no children" : "takes no children");
+    if (e->kind != ModuleKind::Operation && !st.body.empty()) {
+        if (!lenient_) arg_error(a, e->kind == ModuleKind::Solid ? "a solid takes no children" : "takes no children");
+        warn(st.loc, std::string("module ") + e->name + "() does not support child modules");  // ignored, as OpenSCAD
+    }
     ModuleCall call(*this, st, s, std::move(a));
-    e->handler(call);
+    if (!lenient_) {
+        e->handler(call);
+        return true;
+    }
+    // The OpenSCAD dialect: an argument OpenSCAD would not stop at (a zero
+    // axis, a zero or negative size, undef) makes an operation the identity
+    // on its children and a solid nothing, with the strict message as the
+    // warning. Limits still stop.
+    const std::size_t mark = out_.mark();
+    try {
+        e->handler(call);
+    } catch (const SoftError& err) {
+        warn(err.diagnostic().loc, err.diagnostic().message + (e->kind == ModuleKind::Operation
+                                                                   ? " (the children are used unchanged)"
+                                                                   : " (nothing is made)"));
+        out_.pending.resize(mark);
+        if (e->kind == ModuleKind::Operation) {
+            eval_block(st.body, s, false);
+            out_.group(mark, st.loc);
+        }
+    }
     return true;
 }
 
