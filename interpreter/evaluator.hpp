@@ -122,6 +122,7 @@ private:
 
     // modules/table.cpp: a built-in module call (false: no such module).
     bool builtin_module(const ast::Stmt& st, Scope& s, bool top_level);
+    bool builtin_module_lenient(const struct ModuleEntry& e, class ModuleCall& call);
 
     // Limits.
     void count_step(const SourceLoc& loc);

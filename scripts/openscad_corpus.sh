@@ -20,6 +20,7 @@ if [[ ! -x "$kerf" ]]; then
   echo "openscad corpus: no kerf binary at $kerf" >&2
   exit 2
 fi
+kerf=$(realpath "$kerf")
 
 two_d='square|circle|polygon|text|linear_extrude|rotate_extrude|projection|offset|import|surface'
 pass=0 total=0 two_d_fail=0
@@ -27,7 +28,7 @@ failures=()
 while IFS= read -r f; do
   total=$((total + 1))
   # Run from the file's folder, as OpenSCAD resolves relative imports.
-  out=$(cd "$(dirname "$f")" && timeout 60 "$OLDPWD/$kerf" check "$(basename "$f")" 2>&1 >/dev/null)
+  out=$(cd "$(dirname "$f")" && timeout 60 "$kerf" check "$(basename "$f")" 2>&1 >/dev/null)
   rc=$?
   if [[ $rc -eq 0 ]]; then
     pass=$((pass + 1))

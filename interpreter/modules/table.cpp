@@ -71,10 +71,16 @@ bool Evaluator::builtin_module(const ast::Stmt& st, Scope& s, bool top_level) {
         warn(st.loc, std::string("module ") + e->name + "() does not support child modules");  // ignored, as OpenSCAD
     }
     ModuleCall call(*this, st, s, std::move(a));
-    if (!lenient_) {
-        e->handler(call);
-        return true;
-    }
+    if (lenient_) return builtin_module_lenient(*e, call);
+    e->handler(call);
+    return true;
+}
+
+// Out of line, so the strict path above stays as small as it was.
+[[gnu::noinline]] bool Evaluator::builtin_module_lenient(const ModuleEntry& entry, ModuleCall& call) {
+    const ModuleEntry* e = &entry;
+    const ast::Stmt& st = call.st;
+    Scope& s = call.scope;
     // The OpenSCAD dialect: an argument OpenSCAD would not stop at (a zero
     // axis, a zero or negative size, undef) makes an operation the identity
     // on its children and a solid nothing, with the strict message as the
