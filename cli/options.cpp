@@ -60,6 +60,8 @@ const char* usage_text() {
            "    working folder); -o - writes the PNG to standard output\n"
            "  kerf check  SCENE.sdl   parse, evaluate and lower; print diagnostics only\n"
            "  kerf dump   SCENE.sdl   print the lowered, flattened CSG tree\n"
+           "dialect: --strict (kerf's rules, the default for .sdl) or --lenient / --openscad\n"
+           "         (OpenSCAD's rules, the default for .scad; docs/openscad.md)\n"
            "limits (docs/spec.md §8): --max-call-depth N --max-nesting N --max-iterations N\n"
            "                  --max-list N --max-primitives N --max-steps N\n"
            "exit status: 0 ok, 1 scene errors, 2 bad command line or unreadable file,\n"
@@ -109,6 +111,10 @@ Options parse_options(const std::vector<std::string>& args) {
         else if (a == "--threads") o.render.threads = parse_int<int>(a, value(), 0, 1024);
         else if (a == "--seed") o.render.seed = parse_int<std::uint64_t>(a, value(), 0, UINT64_MAX);
         else if (a == "--preview") o.render.preview = true;
+        // The dialect (docs/openscad.md): by default `.scad` files follow
+        // OpenSCAD's lenient rules and everything else kerf's strict ones.
+        else if (a == "--openscad" || a == "--lenient") o.eval.dialect = Dialect::Lenient;
+        else if (a == "--strict") o.eval.dialect = Dialect::Strict;
         else if (a == "--stats") o.stats = true;
         else if (a == "--crop") o.render.crop = parse_crop(value());
         else if (a == "--aov") {

@@ -20,6 +20,7 @@ public:
     Builder(std::shared_ptr<const SourceFile> file, std::size_t max_nesting);
 
     NestingCounter nesting;  // used by nest<> rules
+    bool openscad = false;   // ParseOptions::openscad, read by the lexical rules
     // Expression trees may be this many times deeper than source nesting.
     static constexpr std::size_t kChainFactor = 16;
 

@@ -1,5 +1,8 @@
 #include "grammar/literals.hpp"
 
+#include <cstdint>
+#include <string>
+
 #include <charconv>
 #include <limits>
 
@@ -69,6 +72,24 @@ std::optional<double> parse_number(std::string_view text) {
     return value;
 }
 
+void append_utf8(std::string& out, std::uint32_t c) {
+    if (c < 0x80) {
+        out += static_cast<char>(c);
+    } else if (c < 0x800) {
+        out += static_cast<char>(0xC0 | (c >> 6));
+        out += static_cast<char>(0x80 | (c & 0x3F));
+    } else if (c < 0x10000) {
+        out += static_cast<char>(0xE0 | (c >> 12));
+        out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+        out += static_cast<char>(0x80 | (c & 0x3F));
+    } else {
+        out += static_cast<char>(0xF0 | (c >> 18));
+        out += static_cast<char>(0x80 | ((c >> 12) & 0x3F));
+        out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+        out += static_cast<char>(0x80 | (c & 0x3F));
+    }
+}
+
 std::string decode_string(std::string_view literal) {
     std::string out;
     if (literal.size() < 2) return out;
@@ -77,6 +98,14 @@ std::string decode_string(std::string_view literal) {
     for (std::size_t i = 0; i < body.size(); ++i) {
         char c = body[i];
         if (c == '\\' && i + 1 < body.size()) {
+            const char e = body[i + 1];
+            if (e == 'x' || e == 'u' || e == 'U') {  // only in the OpenSCAD dialect (the grammar checked them)
+                const std::size_t n = e == 'x' ? 2 : e == 'u' ? 4 : 6;
+                const auto code = static_cast<std::uint32_t>(std::stoul(std::string(body.substr(i + 2, n)), nullptr, 16));
+                append_utf8(out, e == 'x' && code == 0 ? ' ' : code);  // OpenSCAD: \x00 is a space
+                i += 1 + n;
+                continue;
+            }
             switch (body[++i]) {
                 case 'n': c = '\n'; break;
                 case 't': c = '\t'; break;

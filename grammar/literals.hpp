@@ -2,6 +2,7 @@
 // grammar so it can be tested on its own.
 #pragma once
 #include <optional>
+#include <cstdint>
 #include <string>
 #include <string_view>
 
@@ -14,7 +15,11 @@ namespace kerf::grammar {
 std::optional<double> parse_number(std::string_view text);
 
 // The text of a string literal given with its quotes; the grammar has
-// already rejected escapes other than \" \\ \n \t \r.
+// already rejected escapes other than \" \\ \n \t \r (and, in the
+// OpenSCAD dialect, \xNN \uNNNN \UNNNNNN).
 std::string decode_string(std::string_view literal);
+
+// Appends code point c (below 0x110000) as UTF-8.
+void append_utf8(std::string& out, std::uint32_t c);
 
 }  // namespace kerf::grammar

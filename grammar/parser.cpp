@@ -65,7 +65,7 @@ std::shared_ptr<const SourceFile> read_source_file(const std::string& path) {
     return file;
 }
 
-ast::Program parse_program(std::shared_ptr<const SourceFile> file, const ParseLimits& limits) {
+ast::Program parse_program(std::shared_ptr<const SourceFile> file, const ParseOptions& limits) {
     namespace pg = tao::pegtl;
     std::string_view text = file->text;
     // A UTF-8 byte order mark is not part of the script (columns start after it).
@@ -74,6 +74,7 @@ ast::Program parse_program(std::shared_ptr<const SourceFile> file, const ParseLi
         throw SourceError(locate(file, text, bad), "invalid character");
 
     grammar::Builder builder(file, limits.max_nesting);
+    builder.openscad = limits.openscad;
     pg::memory_input<pg::tracking_mode::eager, pg::eol::lf_crlf> in(text.data(), text.size(), file->path);
     try {
         pg::parse<grammar::program, grammar::action, grammar::control>(in, builder);

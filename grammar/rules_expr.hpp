@@ -25,7 +25,9 @@ struct arg_name : name {};                       // `b` of `b = 2`
 struct named_arg : pg::if_must<pg::seq<pg::at<name, ws, assign_eq>, arg_name, ws, assign_eq>, expr> {};
 struct positional_arg : pg::seq<expr> {};
 struct arg : pg::sor<named_arg, positional_arg> {};
-struct arg_next : pg::sor<pg::at<rparen>, arg> {};
+// OpenSCAD skips an empty argument or list element (`f(1,,2)`, `[8,,"E"]`).
+struct empty_item : pg::seq<openscad_on, pg::at<pg::one<','>>> {};
+struct arg_next : pg::sor<pg::at<rparen>, arg, empty_item> {};
 struct call_args : nest<args_open, pg::opt<arg, pg::star<pg::if_must<comma, arg_next>>>, pg::must<rparen>> {};
 
 // `(i = r, j = s)`: bindings that must be named (for, let).
@@ -48,14 +50,15 @@ struct paren_expr : nest<lparen, pg::must<expr>, pg::must<rparen>> {};
 // Lists and ranges share the opening `[`: the first element decides.
 struct list_open : lbracket {};  // marks where the items start
 struct list_empty : rbracket {};
-struct list_next : pg::sor<pg::at<rbracket>, list_element> {};
+struct list_next : pg::sor<pg::at<rbracket>, list_element, empty_item> {};
 struct list_tail : pg::seq<pg::star<pg::if_must<comma, list_next>>, pg::must<rbracket>> {};
 struct range_end : pg::sor<rbracket, pg::if_must<colon, expr, rbracket>> {};
 struct range_tail : pg::if_must<colon, expr, range_end> {};
 struct list_rest : pg::sor<range_tail, list_tail> {};
 struct generator;
 struct list_body
-    : pg::sor<list_empty, pg::if_must<generator, list_tail>, pg::if_must<expr, list_rest>> {};
+    : pg::sor<list_empty, pg::if_must<generator, list_tail>, pg::if_must<expr, list_rest>,
+              pg::seq<empty_item, list_tail>> {};
 struct list_expr : nest<list_open, pg::must<list_body>> {};
 
 // Generators (list comprehension elements), only inside `[...]`.
@@ -83,7 +86,8 @@ struct ident_expr : pg::seq<ident_name, ws> {};
 
 // Everything that starts with a letter is tried only after a one-byte test.
 struct word_primary : pg::sor<literal_tok, let_expr, echo_expr, assert_expr, call_expr, ident_expr> {};
-struct primary : pg::sor<number_tok, string_tok, paren_expr, list_expr,
+struct primary : pg::sor<pg::seq<pg::at<pg::digit>, pg::at<name>, word_primary>,  // `608_dia` (OpenSCAD)
+                         number_tok, string_tok, paren_expr, list_expr,
                          pg::seq<pg::at<pg::ranges<'a', 'z', 'A', 'Z', '_', '_', '$', '$'>>, word_primary>> {};
 
 // ---- postfix and operators -------------------------------------------------

@@ -7,6 +7,7 @@
 // from the start of the matched input, and a `must<>` failure is reported at
 // the offending byte rather than at the preceding blank space.
 #pragma once
+#include <cctype>
 #include <string_view>
 
 #include <tao/pegtl.hpp>
@@ -35,6 +36,19 @@ struct block_comment {
     }
 };
 
+// True when the parser state (the Builder) asks for OpenSCAD's lexical
+// leniency (ParseOptions::openscad).
+template <typename... States>
+bool openscad_mode(const States&... states) {
+    auto one = [](const auto& s) {
+        if constexpr (requires { s.openscad; }) return bool(s.openscad);
+        else return false;
+    };
+    return (false || ... || one(states));
+}
+
+// Matches nothing, and only in the OpenSCAD dialect: guards its extra
+// alternatives (an empty list element or argument).
 // `"..."` with the escapes `\" \\ \n \t \r`. Decision (docs/spec.md §1 lists only
 // the first four; `\r` is accepted too because OpenSCAD has it): any other
 // escape (`\x41`, `\u263A`, `\q`, ...) is an error at its backslash, in line
@@ -45,9 +59,23 @@ struct string_lit {
     using rule_t = string_lit;
     using subs_t = pg::empty_list;
 
+    // OpenSCAD's `\x41` (0x01-0x7F), `\u263A` and `\U01F600`: the length of
+    // the escape at p (0: not one), accepted in the OpenSCAD dialect only.
+    static std::size_t openscad_escape(const char* p, const char* end) noexcept {
+        auto hex = [&](const char* q, std::size_t n) {
+            for (std::size_t i = 0; i < n; ++i)
+                if (q + i >= end || !std::isxdigit(static_cast<unsigned char>(q[i]))) return false;
+            return true;
+        };
+        if (p[1] == 'x' && p + 2 < end && p[2] >= '0' && p[2] <= '7' && hex(p + 3, 1)) return 4;
+        if (p[1] == 'u' && hex(p + 2, 4)) return 6;
+        if (p[1] == 'U' && hex(p + 2, 6)) return 8;
+        return 0;
+    }
+
     template <pg::apply_mode, pg::rewind_mode, template <typename...> class,
               template <typename...> class, typename Input, typename... States>
-    static bool match(Input& in, States&&...) {
+    static bool match(Input& in, States&&... st) {
         if (in.empty() || in.peek_char() != '"') return false;
         const char* p = in.current() + 1;
         const char* end = in.end();
@@ -55,6 +83,11 @@ struct string_lit {
             if (*p == '\\') {
                 if (p + 1 == end) throw pg::parse_error("unterminated string", in);
                 const char e = p[1];
+                if (openscad_mode(st...)) {  // any other escape: the character, as OpenSCAD's lexer
+                    const std::size_t n = openscad_escape(p, end);
+                    p += n ? n : 2;
+                    continue;
+                }
                 if (e != '"' && e != '\\' && e != 'n' && e != 't' && e != 'r') {
                     in.bump(static_cast<std::size_t>(p - in.current()));
                     throw pg::parse_error("invalid escape sequence in string", in);
@@ -82,21 +115,61 @@ bool is_keyword(std::string_view word) noexcept;
 // same pattern (special variables; `$if` is fine). Hand-written because a
 // name is matched several times per statement (lookaheads for `=` and `(`):
 // one scan and one keyword test by length instead of eleven string compares.
+struct openscad_on {
+    using rule_t = openscad_on;
+    using subs_t = pg::empty_list;
+    template <pg::apply_mode, pg::rewind_mode, template <typename...> class,
+              template <typename...> class, typename Input, typename... States>
+    static bool match(Input&, States&&... st) {
+        return openscad_mode(st...);
+    }
+};
+
 struct name {
     using rule_t = name;
     using subs_t = pg::empty_list;
 
     static bool first(char c) noexcept { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
     static bool other(char c) noexcept { return first(c) || (c >= '0' && c <= '9'); }
+    static bool digit(char c) noexcept { return c >= '0' && c <= '9'; }
+
+    // OpenSCAD's lexer takes the longest token, a number on a tie: `608_dia`
+    // and `8bit` are names, `12`, `1e5` and `1.5` numbers. The length of a
+    // name starting with a digit at p, or 0 when a number is as long.
+    static std::size_t digit_name(const char* p, const char* end) noexcept {
+        const char* q = p;
+        while (q < end && other(*q)) ++q;
+        const char* n = p;
+        while (n < end && digit(*n)) ++n;
+        if (n < end && *n == '.') {
+            ++n;
+            while (n < end && digit(*n)) ++n;
+        }
+        if (n < end && (*n == 'e' || *n == 'E')) {
+            const char* x = n + 1;
+            if (x < end && (*x == '+' || *x == '-')) ++x;
+            if (x < end && digit(*x)) {
+                while (x < end && digit(*x)) ++x;
+                n = x;
+            }
+        }
+        return q > n ? static_cast<std::size_t>(q - p) : 0;
+    }
 
     template <pg::apply_mode, pg::rewind_mode, template <typename...> class,
               template <typename...> class, typename Input, typename... States>
-    static bool match(Input& in, States&&...) {
+    static bool match(Input& in, States&&... st) {
         const char* const begin = in.current();
         const char* const end = in.end();
         const char* p = begin;
         const bool special = p < end && *p == '$';
         if (special) ++p;
+        if (p < end && digit(*p) && openscad_mode(st...)) {
+            const std::size_t n = digit_name(p, end);
+            if (n == 0) return false;
+            in.bump_in_this_line(static_cast<std::size_t>(p - begin) + n);
+            return true;
+        }
         if (p == end || !first(*p)) return false;
         const char* const word = p;
         while (++p < end && other(*p)) {
@@ -141,3 +214,5 @@ template <typename Name>
 struct tao::pegtl::analyze_traits<Name, kerf::grammar::string_lit> : tao::pegtl::analyze_any_traits<> {};
 template <typename Name>
 struct tao::pegtl::analyze_traits<Name, kerf::grammar::name> : tao::pegtl::analyze_any_traits<> {};
+template <typename Name>
+struct tao::pegtl::analyze_traits<Name, kerf::grammar::openscad_on> : tao::pegtl::analyze_opt_traits<> {};

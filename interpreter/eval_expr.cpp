@@ -4,6 +4,7 @@
 
 #include "interpreter/builtins/builtins.hpp"
 #include "interpreter/evaluator.hpp"
+#include "interpreter/openscad_ops.hpp"
 #include "interpreter/operators.hpp"
 
 namespace kerf::eval {
@@ -35,7 +36,10 @@ std::uint64_t Evaluator::iteration_count(Value& v, const SourceLoc& loc) {
     if (v.is_range()) n = v.as_range().size();
     else if (v.is_list()) n = v.as_list().size();
     else if (v.is_string()) n = utf8_length(v.as_string());
-    else throw SourceError(loc, std::string("for: expected a range, a list or a string, got ") + v.type_name());
+    else if (lenient_) {  // OpenSCAD: undef runs no iteration, any other value one
+        n = v.is_undef() ? 0 : 1;
+        v = Value::list(n ? ValueList{v} : ValueList{});
+    } else throw SourceError(loc, std::string("for: expected a range, a list or a string, got ") + v.type_name());
     count_iterations(n, loc);  // before building a list of characters
     if (v.is_string()) {
         // One string per character (UTF-8 code point), as OpenSCAD iterates:
@@ -72,16 +76,25 @@ Value Evaluator::lookup(const ast::Expr& e, Scope& s) {
         if (name == "$fa") return Value(12);
         if (name == "$fs") return Value(2);
         if (name == "$preview") return Value(false);
+        if (lenient_) return unknown_variable(e);
         throw SourceError(e.loc, "undefined name '" + e.text + "'");
     }
     for (Scope* sc = &s; sc; sc = sc->parent) {
         if (VarSlot* v = sc->find_local(name)) {
-            if (!v->ready)
+            if (!v->ready) {
+                if (lenient_) continue;  // OpenSCAD: not bound here yet, so look outside
                 throw SourceError(e.loc, "'" + e.text + "' is used before its definition at " + line_ref(e.loc, *v->loc));
+            }
             return v->value;
         }
     }
+    if (lenient_) return unknown_variable(e);
     throw SourceError(e.loc, "undefined name '" + e.text + "'");
+}
+
+Value Evaluator::unknown_variable(const ast::Expr& e) {
+    warn(e.loc, "Ignoring unknown variable '" + e.text + "'");
+    return Value();
 }
 
 void Evaluator::bind(Scope& s, std::string_view name, Value v, const SourceLoc* loc) {
@@ -97,8 +110,14 @@ void Evaluator::bind_sequential(const std::vector<ast::Binding>& bindings, Scope
     s.vars.reserve(s.vars.size() + bindings.size());
     for (const ast::Binding& b : bindings) {
         if (b.name.empty()) throw SourceError(b.loc, std::string(what) + ": expected name = value");
-        if (VarSlot* prev = s.find_local(b.name))
-            throw SourceError(b.loc, "'" + b.name + "' is already defined at " + line_ref(b.loc, *prev->loc));
+        if (VarSlot* prev = s.find_local(b.name)) {
+            if (!lenient_)
+                throw SourceError(b.loc, "'" + b.name + "' is already defined at " + line_ref(b.loc, *prev->loc));
+            // OpenSCAD keeps the first and evaluates the second only to show it.
+            Value ignored = b.value ? eval(*b.value, s) : Value();
+            warn(b.loc, "Ignoring duplicate variable assignment " + b.name + " = " + to_repr(ignored));
+            continue;
+        }
         Value v = b.value ? eval(*b.value, s) : Value();
         bind(s, b.name, std::move(v), &b.loc);
     }
@@ -167,8 +186,16 @@ Value Evaluator::call_function(const ast::Expr& e, Scope& s) {
         if (!def->value) return Value();
         return eval(*def->value, callee);
     }
-    BuiltinFn fn = find_builtin(name);
-    if (!fn) throw SourceError(e.loc, "undefined function '" + e.text + "'");
+    return call_builtin(e, s);
+}
+
+Value Evaluator::call_builtin(const ast::Expr& e, Scope& s) {
+    BuiltinFn fn = find_builtin(e.text);
+    if (!fn) {
+        if (!lenient_) throw SourceError(e.loc, "undefined function '" + e.text + "'");
+        warn(e.loc, "Ignoring unknown function '" + e.text + "'");
+        return Value();
+    }
     count_step(e.loc);
     Value small[4];
     std::vector<Value> many;
@@ -179,11 +206,25 @@ Value Evaluator::call_function(const ast::Expr& e, Scope& s) {
     }
     for (std::size_t i = 0; i < e.args.size(); ++i) {
         const ast::Binding& a = e.args[i];
-        if (!a.name.empty()) throw SourceError(a.loc, "'" + e.text + "' takes no named arguments");
+        // OpenSCAD takes a built-in's arguments in order, whatever their names.
+        if (!a.name.empty() && !lenient_) throw SourceError(a.loc, "'" + e.text + "' takes no named arguments");
         argv[i] = a.value ? eval(*a.value, s) : Value();
     }
     BuiltinContext ctx{e.loc, opt_.limits.list_elements};
-    return fn(std::span<const Value>(argv, e.args.size()), ctx);
+    if (!lenient_) return fn(std::span<const Value>(argv, e.args.size()), ctx);
+    try {
+        return fn(std::span<const Value>(argv, e.args.size()), ctx);
+    } catch (const SoftError& err) {
+        warn(err.diagnostic().loc, err.diagnostic().message);
+        return Value();
+    }
+}
+
+Value Evaluator::lenient_operator(const ast::Expr& e, const Value& a, const Value* b) {
+    std::string warning;
+    Value v = b ? openscad_binary(e.text, a, *b, warning) : openscad_unary(e.text, a, warning);
+    if (!warning.empty()) warn(e.loc, std::move(warning));
+    return v;
 }
 
 void Evaluator::expand_for(const ast::Expr& e, std::size_t k, Scope& loop, ValueList& out) {
@@ -259,6 +300,7 @@ Value Evaluator::eval(const ast::Expr& e, Scope& s) {
             double v[3];
             for (std::size_t i = 0; i < e.items.size() && i < 3; ++i) {
                 Value x = eval(*e.items[i], s);
+                if (lenient_ && (!x.is_number() || !std::isfinite(x.as_number()))) return Value();  // OpenSCAD: undef
                 if (!x.is_number()) throw SourceError(e.items[i]->loc, std::string("range bound must be a number, got ") + x.type_name());
                 if (!std::isfinite(x.as_number())) throw SourceError(e.items[i]->loc, "range bound must be finite, got " + format_number(x.as_number()));
                 v[i] = x.as_number();
@@ -271,7 +313,12 @@ Value Evaluator::eval(const ast::Expr& e, Scope& s) {
             Value a = eval(*e.items[0], s);
             if (e.text == "!") return Value(!a.truthy());
             OpBudget budget{opt_.limits.list_elements};
-            return unary_op(e.text, a, e.loc, &budget);
+            if (!lenient_) return unary_op(e.text, a, e.loc, &budget);
+            try {
+                return unary_op(e.text, a, e.loc, &budget);
+            } catch (const SoftError&) {
+                return lenient_operator(e, a, nullptr);
+            }
         }
         case K::Binary: {
             if (e.text == "&&") return Value(eval(*e.items[0], s).truthy() && eval(*e.items[1], s).truthy());
@@ -279,18 +326,25 @@ Value Evaluator::eval(const ast::Expr& e, Scope& s) {
             Value a = eval(*e.items[0], s);
             Value b = eval(*e.items[1], s);
             OpBudget budget{opt_.limits.list_elements};
-            return binary_op(e.text, a, b, e.loc, &budget);
+            if (!lenient_) return binary_op(e.text, a, b, e.loc, &budget);
+            try {
+                return binary_op(e.text, a, b, e.loc, &budget);
+            } catch (const SoftError&) {
+                return lenient_operator(e, a, &b);
+            }
         }
         case K::Ternary: return eval(*e.items[eval(*e.items[0], s).truthy() ? 1 : 2], s);
         case K::Index: {
             Value obj = eval(*e.items[0], s);
             Value idx = eval(*e.items[1], s);
+            if (lenient_) return openscad_index(obj, idx);
             return index_value(obj, idx, e.loc);
         }
         case K::Member: {
             Value obj = eval(*e.items[0], s);
             int i = e.text == "x" ? 0 : e.text == "y" ? 1 : e.text == "z" ? 2 : -1;
             if (i < 0) throw SourceError(e.loc, "unknown member '." + e.text + "'");
+            if (lenient_) return openscad_index(obj.is_list() ? obj : Value(), Value(i));
             if (!obj.is_list()) throw SourceError(e.loc, "'." + e.text + "' needs a list, got " + obj.type_name());
             return index_value(obj, Value(i), e.loc);
         }

@@ -10,20 +10,45 @@ namespace kerf::eval {
 
 namespace {
 
+// OpenSCAD's built-in modules that kerf lacks: an error in both dialects
+// (ignoring one, as OpenSCAD ignores an unknown module, would render a
+// different solid with exit 0). Null for any other name.
+const char* unimplemented_openscad_module(std::string_view name) {
+    static constexpr std::pair<std::string_view, const char*> kMissing[] = {
+        {"circle", "a 2D shape"},        {"square", "a 2D shape"},         {"polygon", "a 2D shape"},
+        {"text", "a 2D shape"},          {"offset", "a 2D operation"},     {"projection", "a 2D operation"},
+        {"linear_extrude", "an extrusion"}, {"rotate_extrude", "an extrusion"}, {"surface", "a height map"},
+        {"hull", "a 3D operation"},      {"minkowski", "a 3D operation"},  {"resize", "a 3D operation"},
+        {"intersection_for", "a loop"},
+    };
+    for (const auto& [n, what] : kMissing)
+        if (n == name) return what;
+    return nullptr;
+}
+
 // Names bound twice in one block (by hash: a file may bind 100,000 names).
 class UniqueNames {
 public:
     explicit UniqueNames(std::size_t expected) { first_.reserve(expected); }
-    void check(std::vector<const ast::Stmt*>& seen, const ast::Stmt& st, const char* what) {
-        auto [it, fresh] = first_.emplace(st.name, &st);
-        if (!fresh)
+    // Appends st to seen. A name already there is an error, or, in the
+    // OpenSCAD dialect, st takes the earlier one's place (OpenSCAD's parser
+    // does the same), which is returned.
+    const ast::Stmt* add(std::vector<const ast::Stmt*>& seen, const ast::Stmt& st, const char* what, bool lenient) {
+        auto [it, fresh] = first_.emplace(st.name, seen.size());
+        if (fresh) {
+            seen.push_back(&st);
+            return nullptr;
+        }
+        const ast::Stmt* earlier = seen[it->second];
+        if (!lenient)
             throw SourceError(st.loc, std::string(what) + "'" + st.name + "' is already defined at " +
-                                          line_ref(st.loc, it->second->loc));
-        seen.push_back(&st);
+                                          line_ref(st.loc, earlier->loc));
+        seen[it->second] = &st;
+        return earlier;
     }
 
 private:
-    std::unordered_map<std::string_view, const ast::Stmt*> first_;
+    std::unordered_map<std::string_view, std::size_t> first_;
 };
 
 }  // namespace
@@ -79,16 +104,16 @@ const BlockInfo& Evaluator::prepare(const std::vector<ast::StmtPtr>& stmts) {
     BlockInfo info;
     {
         flatten(stmts, flat);
-        std::vector<const ast::Stmt*> assigned;
         UniqueNames names(flat.size()), functions(0), modules(0);  // three namespaces, as in OpenSCAD
         for (const ast::Stmt* st : flat) {
             switch (st->kind) {
                 case ast::StmtKind::Assign:
-                    names.check(assigned, *st, "");
-                    info.assigns.push_back(st);
+                    if (const ast::Stmt* earlier = names.add(info.assigns, *st, "", lenient_))
+                        warn_overwritten(*earlier, *st);
                     break;
-                case ast::StmtKind::FunctionDef: functions.check(info.functions, *st, "function "); break;
-                case ast::StmtKind::ModuleDef: modules.check(info.modules, *st, "module "); break;
+                // OpenSCAD: a later definition replaces an earlier one, silently.
+                case ast::StmtKind::FunctionDef: functions.add(info.functions, *st, "function ", lenient_); break;
+                case ast::StmtKind::ModuleDef: modules.add(info.modules, *st, "module ", lenient_); break;
                 case ast::StmtKind::Use: info.used.push_back(load_use(*st)); break;
                 case ast::StmtKind::Empty:
                 case ast::StmtKind::Include: break;
@@ -98,6 +123,19 @@ const BlockInfo& Evaluator::prepare(const std::vector<ast::StmtPtr>& stmts) {
     }
     info.needs_scope = !info.assigns.empty() || !info.functions.empty() || !info.modules.empty() || !info.used.empty();
     return blocks_.emplace(&stmts, std::move(info)).first->second;
+}
+
+// OpenSCAD's warning for a binding replaced by a later one: in the main
+// file always, within one other file when the lines differ, and when an
+// included file replaces the main file's; never when the main file (or
+// another file) replaces an included file's, the usual configuration idiom.
+void Evaluator::warn_overwritten(const ast::Stmt& earlier, const ast::Stmt& later) {
+    const std::string prev = earlier.loc.file ? earlier.loc.file->path : std::string();
+    const std::string cur = later.loc.file ? later.loc.file->path : std::string();
+    std::string head = later.name + " was assigned on line " + std::to_string(earlier.loc.line);
+    if (prev == main_path_ && cur == main_path_) warn(later.loc, head + " but was overwritten");
+    else if (prev == cur ? earlier.loc.line != later.loc.line : prev == main_path_)
+        warn(later.loc, head + " of " + prev + " but was overwritten");
 }
 
 namespace {
@@ -186,9 +224,14 @@ void Evaluator::bind_params(const std::vector<ast::Binding>& params, const std::
         Value v = a.value ? eval(*a.value, caller) : Value();
         std::size_t i;
         if (a.name.empty()) {
-            if (positional >= params.size())
+            if (positional >= params.size()) {
+                if (lenient_) {  // OpenSCAD drops the extra arguments
+                    warn(a.loc, "Too many unnamed arguments supplied");
+                    continue;
+                }
                 throw SourceError(a.loc, "too many arguments for '" + callee + "' (takes " +
                                              std::to_string(params.size()) + ")");
+            }
             i = positional++;
         } else {
             i = params.size();
@@ -200,10 +243,15 @@ void Evaluator::bind_params(const std::vector<ast::Binding>& params, const std::
                     dyn_.push_back(DynVar{a.name, std::move(v)});
                     continue;
                 }
+                if (lenient_) {
+                    warn(a.loc, "variable " + a.name + " not specified as parameter");
+                    continue;
+                }
                 throw SourceError(a.loc, "unknown argument '" + a.name + "' for '" + callee + "'");
             }
         }
-        if (have[i]) throw SourceError(a.loc, "argument '" + params[i].name + "' given twice to '" + callee + "'");
+        if (have[i] && lenient_) warn(a.loc, "argument " + params[i].name + " supplied more than once");  // the last counts
+        else if (have[i]) throw SourceError(a.loc, "argument '" + params[i].name + "' given twice to '" + callee + "'");
         have[i] = true;
         given[i] = std::move(v);
     }
@@ -253,9 +301,15 @@ void Evaluator::stmt_children(const ast::Stmt& st, Scope& s) {
                 throw SourceError(st.loc, std::string("children: index must be an integer, got ") +
                                               (x.is_number() ? format_number(x.as_number()) : x.type_name()));
             double d = x.as_number();
-            if (d < 0 || d >= static_cast<double>(info.children.size()))
+            if (d < 0 || d >= static_cast<double>(info.children.size())) {
+                if (lenient_) {  // OpenSCAD: that child is nothing
+                    warn(st.loc, "Children index (" + format_number(d) + ") out of bounds (" +
+                                     std::to_string(info.children.size()) + " children)");
+                    return;
+                }
                 throw SourceError(st.loc, "children: index " + format_number(d) + " out of range (" +
                                               std::to_string(info.children.size()) + " children)");
+            }
             picks.push_back(static_cast<std::size_t>(d));
         };
         if (v.is_number()) pick(v);
@@ -368,7 +422,11 @@ void Evaluator::instantiate(const ast::Stmt& st, Scope& s, bool top_level) {
             }
     }
     count_step(st.loc);
-    if (!builtin_module(st, s, top_level)) throw SourceError(st.loc, "unknown module '" + name + "'");
+    if (builtin_module(st, s, top_level)) return;
+    if (const char* what = unimplemented_openscad_module(name))
+        throw SourceError(st.loc, "'" + name + "' (" + what + ") is not implemented in kerf yet");
+    if (!lenient_) throw SourceError(st.loc, "unknown module '" + name + "'");
+    warn(st.loc, "Ignoring unknown module '" + name + "'");
 }
 
 void Evaluator::eval_stmt(const ast::Stmt& st, Scope& s, bool top_level) {

@@ -13,6 +13,15 @@
 // - Missing arguments without a default are undef; operators and solids
 //   reject undef where they need a value.
 // - Indexing out of range, or with a non-integer, is an error.
+// The OpenSCAD dialect (`lenient_`, docs/openscad.md) changes exactly these,
+// each only on the path that would otherwise be an error, so strict runs
+// pay one untaken branch: a name bound twice in a block takes the last
+// value, evaluated at the first binding's place, with a warning; a name not
+// yet bound in its block is looked up outside (`w = w / 2;` in a module
+// reads the argument); an unknown variable, function or module, a
+// SoftError of a built-in or an operator, and argument mismatches are
+// undef (or nothing) and a warning; indexing follows OpenSCAD silently.
+// `assert` and every limit still stop the run.
 #pragma once
 #include <cstdint>
 #include <memory>
@@ -70,6 +79,7 @@ public:
     // place and message, with a count when met again (a loop).
     void warn(const SourceLoc& loc, std::string message);
     std::vector<Diagnostic> take_warnings() { return std::move(warnings_); }
+    bool lenient() const { return lenient_; }  // the OpenSCAD dialect
 
     // Expressions (eval_expr.cpp).
     Value eval(const ast::Expr& e, Scope& s);
@@ -77,11 +87,15 @@ public:
 private:
     // eval_expr.cpp
     Value lookup(const ast::Expr& e, Scope& s);
+    Value unknown_variable(const ast::Expr& e);  // the OpenSCAD dialect: undef and a warning
     Value call_function(const ast::Expr& e, Scope& s);
     void expand_element(const ast::Expr& e, Scope& s, ValueList& out);
     void expand_for(const ast::Expr& e, std::size_t k, Scope& s, ValueList& out);
     void push_element(ValueList& out, Value v, const SourceLoc& loc);
     void do_echo(const std::vector<ast::Binding>& args, Scope& s);
+    Value call_builtin(const ast::Expr& e, Scope& s);
+    // The OpenSCAD dialect's answer to an operator that threw a SoftError.
+    Value lenient_operator(const ast::Expr& e, const Value& a, const Value* b);
     void do_assert(const std::vector<ast::Binding>& args, Scope& s, const SourceLoc& loc);
     // Counts (and charges) the iterations of a `for` over v; a string becomes
     // the list of its characters (as in OpenSCAD), so v may be replaced.
@@ -89,6 +103,7 @@ private:
 
     // eval_stmt.cpp
     const BlockInfo& prepare(const std::vector<ast::StmtPtr>& stmts);
+    void warn_overwritten(const ast::Stmt& earlier, const ast::Stmt& later);
     void flatten(const std::vector<ast::StmtPtr>& stmts, std::vector<const ast::Stmt*>& out);
     void bind_block(const BlockInfo& info, Scope& scope, bool top_level);
     void eval_block(const std::vector<ast::StmtPtr>& stmts, Scope& s, bool top_level = false);
@@ -107,6 +122,7 @@ private:
 
     // modules/table.cpp: a built-in module call (false: no such module).
     bool builtin_module(const ast::Stmt& st, Scope& s, bool top_level);
+    bool builtin_module_lenient(const struct ModuleEntry& e, class ModuleCall& call);
 
     // Limits.
     void count_step(const SourceLoc& loc);
@@ -114,6 +130,8 @@ private:
     struct DepthGuard;
 
     const EvalOptions& opt_;
+    const bool lenient_;     // the OpenSCAD dialect
+    std::string main_path_;  // the main file (OpenSCAD's overwrite warnings name others)
     GraphBuilder out_;
     Scope root_;  // PI and other constants; parent of every file's scope
     std::vector<DynVar> dyn_;

@@ -17,7 +17,8 @@ namespace kerf {
 
 namespace eval {
 
-Evaluator::Evaluator(const EvalOptions& options) : opt_(options), files_(options) {
+Evaluator::Evaluator(const EvalOptions& options)
+    : opt_(options), lenient_(options.dialect == Dialect::Lenient), files_(options) {
     static const SourceLoc builtin_loc{};
     root_.add(VarSlot{"PI", Value(M_PI), &builtin_loc, true});
     // Typical large scenes: a transform (and maybe an appearance) per leaf.
@@ -42,8 +43,9 @@ void Evaluator::parse_defines() {
         const ast::Expr* expr = nullptr;
         const ast::Program* parsed = nullptr;
         try {
-            ParseLimits pl;
+            ParseOptions pl;
             pl.max_nesting = opt_.limits.nesting;
+            pl.openscad = lenient_;
             parsed = &files_.keep(parse_program(file, pl));
         } catch (const SourceError& e) {
             fail(e.diagnostic().message);
@@ -64,6 +66,7 @@ void Evaluator::parse_defines() {
 
 graph::SceneGraph Evaluator::run(ast::Program program) {
     const ast::Program& prog = files_.keep(std::move(program));
+    if (prog.file) main_path_ = prog.file->path;
     parse_defines();
     const BlockInfo& info = prepare(prog.stmts);
     for (const Define& d : defines_) {
@@ -148,11 +151,20 @@ void run_with_big_stack(const std::function<void()>& fn) {
 
 }  // namespace
 
-EvalResult evaluate_source(std::shared_ptr<const SourceFile> file, const EvalOptions& options) {
+bool is_lenient(Dialect dialect, std::string_view main_path) {
+    if (dialect != Dialect::Auto) return dialect == Dialect::Lenient;
+    return main_path.size() > 5 && main_path.substr(main_path.size() - 5) == ".scad";
+}
+
+EvalResult evaluate_source(std::shared_ptr<const SourceFile> file, const EvalOptions& given) {
+    // The dialect is decided once, by the main file, for every file of the run.
+    EvalOptions options = given;
+    options.dialect = is_lenient(given.dialect, file->path) ? Dialect::Lenient : Dialect::Strict;
     EvalResult result;
     run_with_big_stack([&] {
-        ParseLimits pl;
+        ParseOptions pl;
         pl.max_nesting = options.limits.nesting;
+        pl.openscad = options.dialect == Dialect::Lenient;
         ast::Program program = parse_program(file, pl);
         eval::Evaluator ev(options);
         result.graph = ev.run(std::move(program));

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -22,8 +23,15 @@ struct EvalLimits {
     std::uint64_t steps = 100'000'000;       // calls + instantiations + iterations
 };
 
+// Which rules a run follows (docs/openscad.md): kerf's strict rules, or
+// OpenSCAD's lenient ones (a name bound twice takes the last value, an
+// unknown name or a failed operation is undef and a warning). Auto picks by
+// the main file's extension: `.scad` is lenient, everything else strict.
+enum class Dialect { Auto, Strict, Lenient };
+
 struct EvalOptions {
     EvalLimits limits;
+    Dialect dialect = Dialect::Auto;
     std::vector<std::string> include_dirs;   // -I, searched after the including file's folder
     std::string stdlib_dir;                  // searched last; empty = KERF_STDLIB_DIR
     std::vector<std::pair<std::string, std::string>> defines;  // -D name=value (value is an expression)
@@ -47,5 +55,8 @@ struct EvalResult {
 // bad -D value).
 EvalResult evaluate_file(const std::string& path, const EvalOptions& options = {});
 EvalResult evaluate_source(std::shared_ptr<const SourceFile> file, const EvalOptions& options = {});
+
+// True when a run of `main_path` under `dialect` follows OpenSCAD's rules.
+bool is_lenient(Dialect dialect, std::string_view main_path);
 
 }  // namespace kerf

@@ -1,5 +1,6 @@
 #include "interpreter/loader.hpp"
 
+#include <cstdlib>
 #include <filesystem>
 
 #ifndef KERF_STDLIB_DIR
@@ -27,6 +28,21 @@ std::string Loader::resolve(const std::string& name_text, const SourceLoc& loc) 
         for (const std::string& d : opt_.include_dirs) dirs.emplace_back(d);
         std::string stdlib = opt_.stdlib_dir.empty() ? std::string(KERF_STDLIB_DIR) : opt_.stdlib_dir;
         if (!stdlib.empty()) dirs.emplace_back(stdlib);
+        if (opt_.dialect == Dialect::Lenient) {
+            // OpenSCAD's library search: OPENSCADPATH, the user's library
+            // folder, the installed libraries (Debian's MCAD).
+            if (const char* env = std::getenv("OPENSCADPATH")) {
+                std::string list = env;
+                for (std::size_t start = 0; start <= list.size();) {
+                    std::size_t colon = list.find(':', start);
+                    if (colon == std::string::npos) colon = list.size();
+                    if (colon > start) dirs.emplace_back(list.substr(start, colon - start));
+                    start = colon + 1;
+                }
+            }
+            if (const char* home = std::getenv("HOME")) dirs.emplace_back(fs::path(home) / ".local/share/OpenSCAD/libraries");
+            dirs.emplace_back("/usr/share/openscad/libraries");
+        }
     }
     for (const fs::path& d : dirs) {
         fs::path p = d.empty() ? name : d / name;
@@ -45,8 +61,9 @@ const ast::Program& Loader::load(const std::string& path, const SourceLoc& loc) 
     } catch (const IoError& e) {
         throw SourceError(loc, e.what());
     }
-    ParseLimits pl;
+    ParseOptions pl;
     pl.max_nesting = opt_.limits.nesting;
+    pl.openscad = opt_.dialect == Dialect::Lenient;
     const ast::Program& p = keep(parse_program(std::move(file), pl));
     cache_[path] = &p;
     return p;

@@ -8,12 +8,12 @@ namespace kerf {
 namespace {
 
 [[noreturn]] void type_error(std::string_view op, const Value& a, const Value& b, const SourceLoc& loc) {
-    throw SourceError(loc, "cannot apply '" + std::string(op) + "' to " + a.type_name() + " and " +
+    throw SoftError(loc, "cannot apply '" + std::string(op) + "' to " + a.type_name() + " and " +
                                b.type_name());
 }
 
 [[noreturn]] void length_error(std::string_view op, std::size_t n, std::size_t m, const SourceLoc& loc) {
-    throw SourceError(loc, "'" + std::string(op) + "' needs lists of equal length (got " +
+    throw SoftError(loc, "'" + std::string(op) + "' needs lists of equal length (got " +
                                std::to_string(n) + " and " + std::to_string(m) + ")");
 }
 
@@ -113,7 +113,7 @@ Value multiply_lists(const Value& a, const Value& b, const SourceLoc& loc, OpBud
         std::size_t cols = y[0].as_list().size();
         for (const Value& row : y) {
             if (!row.is_vector()) type_error("*", a, b, loc);
-            if (row.as_list().size() != cols) throw SourceError(loc, "'*' needs a matrix with rows of equal length");
+            if (row.as_list().size() != cols) throw SoftError(loc, "'*' needs a matrix with rows of equal length");
         }
         auto times_vector = [&](const ValueList& v) {
             if (v.size() != y.size()) length_error("*", v.size(), y.size(), loc);
@@ -165,7 +165,7 @@ Value unary_op(std::string_view op, const Value& a, const SourceLoc& loc, OpBudg
         for (const Value& e : a.as_list()) out.push_back(unary_op(op, e, loc, budget));
         return Value::list(std::move(out));
     }
-    throw SourceError(loc, "cannot apply unary '" + std::string(op) + "' to " + a.type_name());
+    throw SoftError(loc, "cannot apply unary '" + std::string(op) + "' to " + a.type_name());
 }
 
 Value binary_op(std::string_view op, const Value& a, const Value& b, const SourceLoc& loc, OpBudget* budget) {

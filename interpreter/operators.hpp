@@ -1,7 +1,8 @@
 // The arithmetic, comparison and indexing operators of docs/spec.md §2 on Values.
 // Strict: an operator that does not apply to its operands' types (`1 + "a"`,
 // `undef * 2`, vectors of different lengths) is a located error, where
-// OpenSCAD would warn and yield undef.
+// OpenSCAD would warn and yield undef. Those errors are SoftErrors; the
+// OpenSCAD dialect answers them with openscad_ops.hpp instead.
 #pragma once
 #include <cstdint>
 #include <string_view>

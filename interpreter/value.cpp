@@ -1,6 +1,7 @@
 #include "interpreter/value.hpp"
 
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <algorithm>
 #include <limits>
@@ -95,21 +96,50 @@ bool Value::is_vector() const {
 
 bool Value::is_vector(std::size_t n) const { return is_list() && as_list().size() == n && is_vector(); }
 
+// OpenSCAD 2021's number text (its double-conversion settings): 6
+// significant digits, correctly rounded; plain decimals for exponents -5
+// to 5 (`0.00001`, `100000`), otherwise `1e-6`, `1e+6`, `1.23457e+8` (no
+// padded exponent); trailing zeros dropped; -0 is `0`.
 std::string format_number(double n) {
     if (std::isnan(n)) return "nan";
     if (std::isinf(n)) return n > 0 ? "inf" : "-inf";
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", n);
-    return buf;
+    if (n == 0) return "0";
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.5e", n);  // "-d.ddddde±XX": the 6 digits, rounded once
+    std::string_view text(buf);
+    const bool negative = text[0] == '-';
+    if (negative) text.remove_prefix(1);
+    const std::size_t e = text.find('e');
+    std::string digits;
+    digits += text[0];
+    digits += text.substr(2, e - 2);  // 6 digits, no point
+    const int exponent = std::atoi(text.data() + e + 1);
+    std::string out = negative ? "-" : "";
+    auto trimmed = [](std::string s) {
+        if (s.find('.') != std::string::npos) {
+            while (s.back() == '0') s.pop_back();
+            if (s.back() == '.') s.pop_back();
+        }
+        return s;
+    };
+    if (exponent < -5 || exponent > 5) {
+        out += trimmed(digits.substr(0, 1) + "." + digits.substr(1));
+        out += exponent < 0 ? "e-" : "e+";
+        out += std::to_string(std::abs(exponent));
+    } else if (exponent < 0) {
+        out += trimmed("0." + std::string(static_cast<std::size_t>(-exponent - 1), '0') + digits);
+    } else {
+        const std::size_t point = static_cast<std::size_t>(exponent) + 1;
+        out += trimmed(digits.substr(0, point) + "." + digits.substr(point));
+    }
+    return out;
 }
 
 namespace {
+// Between quotes as they are, as OpenSCAD prints them: `"q"uote"`.
 void append_quoted(std::string& out, const std::string& s) {
     out += '"';
-    for (char c : s) {
-        if (c == '"' || c == '\\') out += '\\';
-        out += c;
-    }
+    out += s;
     out += '"';
 }
 

@@ -11,7 +11,18 @@
 #include <variant>
 #include <vector>
 
+#include "grammar/source.hpp"
+
 namespace kerf {
+
+// An error that OpenSCAD's rules turn into undef and a warning with the
+// same message (docs/openscad.md): a built-in function given the wrong
+// types, an operator that does not apply to its operands. Strict runs
+// report it as any other error; limits are never SoftErrors.
+class SoftError : public SourceError {
+public:
+    using SourceError::SourceError;
+};
 
 class Value;
 using ValueList = std::vector<Value>;
@@ -93,15 +104,17 @@ private:
     std::variant<std::monostate, bool, double, StrPtr, ListPtr, Range> v_;
 };
 
-// OpenSCAD-style number text: 6 significant digits like printf("%g")
-// (`0.333333`, `1e+06`, `100000`, `-0.5`), `inf`, `-inf`, `nan`.
+// OpenSCAD 2021's number text, byte for byte: 6 significant digits
+// (`0.333333`, `1e+6`, `100000`, `0.00001`, `1e-7`, `-0.5`), `0` for -0,
+// `inf`, `-inf`, `nan`.
 std::string format_number(double n);
 
 // The text `str(v)` produces: strings as-is at the top level; inside lists
 // strings are quoted (`["a", 1]`); `undef`, `true`; ranges `[0 : 1 : 5]`.
 std::string to_str(const Value& v);
 
-// The text `echo(v)` shows: like to_str, but a top-level string is quoted too.
+// The text `echo(v)` shows: like to_str, but a top-level string is quoted
+// too. Quotes are not escaped, as OpenSCAD prints them: `"q"uote"`.
 std::string to_repr(const Value& v);
 
 // The same, but giving up (nullopt) as soon as the text would pass

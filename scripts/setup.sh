@@ -9,6 +9,7 @@ packages=(
   libembree-dev libtbb-dev tao-pegtl-dev libopenimageio-dev libpng-dev zlib1g-dev libglm-dev catch2
   clang libclang-rt-14-dev   # libFuzzer + sanitizers for the fuzz test
   libbenchmark-dev
+  openscad   # its examples are the corpus test (scripts/openscad_corpus.sh) and its echo output the reference
 )
 if [[ "${1:-}" == "--bench" ]]; then
   packages+=(povray gnuplot-nox hyperfine time)

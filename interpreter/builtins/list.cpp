@@ -31,7 +31,7 @@ Value concat_fn(std::span<const Value> args, const BuiltinContext& ctx) {
     std::size_t total = 0;
     for (const Value& a : args) total += a.is_list() ? a.as_list().size() : 1;
     if (total > ctx.max_list_elements)
-        fail(ctx, "concat: list size limit " + std::to_string(ctx.max_list_elements) + " exceeded (" +
+        throw SourceError(ctx.loc, "concat: list size limit " + std::to_string(ctx.max_list_elements) + " exceeded (" +
                       std::to_string(total) + " elements)");
     if (args.size() == 1 && args[0].is_list()) return args[0];  // shares the storage
     ValueList out;

@@ -20,9 +20,7 @@ std::uint64_t text_length(const Value& v, bool quoted, std::uint64_t cap) {
         case ValueType::String: {
             const std::string& s = v.as_string();
             if (!quoted) return s.size();
-            std::uint64_t n = s.size() + 2;
-            for (char c : s) n += (c == '"' || c == '\\');
-            return n;
+            return s.size() + 2;
         }
         case ValueType::List: {
             const ValueList& items = v.as_list();
@@ -49,7 +47,7 @@ Value str_fn(std::span<const Value> args, const BuiltinContext& ctx) {
     for (const Value& a : args) {
         total += text_length(a, false, cap);
         if (total > cap)
-            fail(ctx, "str: string length limit " + std::to_string(cap) + " exceeded");
+            throw SourceError(ctx.loc, "str: string length limit " + std::to_string(cap) + " exceeded");
     }
     std::string out;
     out.reserve(total);

@@ -21,7 +21,10 @@ struct Entry {
 std::span<const Entry> math_entries();
 std::span<const Entry> list_entries();
 std::span<const Entry> string_entries();
+std::span<const Entry> openscad_entries();  // the rest of OpenSCAD 2021's functions
 
+// A wrong call: a SoftError, so the OpenSCAD dialect makes it undef and a
+// warning. A limit is a plain SourceError in every dialect.
 [[noreturn]] void fail(const BuiltinContext& ctx, std::string message);
 
 // Checks min <= args.size() <= max: "pow: expected 2 arguments, got 1".

@@ -9,7 +9,7 @@
 namespace kerf {
 namespace builtin {
 
-void fail(const BuiltinContext& ctx, std::string message) { throw SourceError(ctx.loc, std::move(message)); }
+void fail(const BuiltinContext& ctx, std::string message) { throw SoftError(ctx.loc, std::move(message)); }
 
 std::string describe(const Value& v) {
     switch (v.type()) {
@@ -44,7 +44,8 @@ double number_arg(std::span<const Value> args, std::size_t i, const BuiltinConte
 BuiltinFn find_builtin(std::string_view name) {
     static const std::vector<builtin::Entry> table = [] {
         std::vector<builtin::Entry> all;
-        for (auto group : {builtin::math_entries(), builtin::list_entries(), builtin::string_entries()})
+        for (auto group : {builtin::math_entries(), builtin::list_entries(), builtin::string_entries(),
+                           builtin::openscad_entries()})
             all.insert(all.end(), group.begin(), group.end());
         std::sort(all.begin(), all.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
         return all;

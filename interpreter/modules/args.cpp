@@ -9,7 +9,7 @@
 namespace kerf::eval {
 
 void arg_error(const Args& a, const std::string& message) {
-    throw SourceError(a.call->loc, std::string(a.callee) + ": " + message);
+    throw SoftError(a.call->loc, std::string(a.callee) + ": " + message);
 }
 
 namespace {

@@ -36,6 +36,7 @@ public:
     void add_primitive(csg::PrimKind kind, std::initializer_list<double> p, std::uint32_t index = 0);
     // A warning at the statement (Evaluator::warn).
     void warn(std::string message);
+    bool lenient() const { return ev_.lenient(); }  // the OpenSCAD dialect
     // The graph's index of a new mesh (for a Mesh primitive).
     std::uint32_t add_mesh(graph::PolygonMesh mesh);
 

@@ -130,7 +130,13 @@ void hyperboloid(ModuleCall& c) {
 void polyhedron(ModuleCall& c) {
     const Args& a = c.args;
     if (!a.has(0) || !a[0].is_list()) arg_error(a, "points must be a list of [x, y, z] points");
-    if (!a.has(1) || !a[1].is_list()) arg_error(a, "faces must be a list of point index lists");
+    // OpenSCAD's deprecated name for faces, accepted in the OpenSCAD dialect
+    // with OpenSCAD's warning.
+    if (a.has(3) && !c.lenient()) arg_error(a, "unknown argument 'triangles'");
+    const std::size_t faces_at = !a.has(1) && a.has(3) ? 3 : 1;
+    if (faces_at == 3)
+        c.warn("polyhedron(triangles=[]) will be removed in future releases. Use polyhedron(faces=[]) instead.");
+    if (!a.has(faces_at) || !a[faces_at].is_list()) arg_error(a, "faces must be a list of point index lists");
     graph::PolygonMesh mesh;
     for (const Value& p : a[0].as_list()) {
         if (!p.is_vector(3)) arg_error(a, "points must be a list of [x, y, z] points, got an element " + to_repr(p));
@@ -141,7 +147,7 @@ void polyhedron(ModuleCall& c) {
     }
     if (mesh.points.size() < 4) arg_error(a, "needs at least 4 points, got " + std::to_string(mesh.points.size()));
     std::size_t fi = 0;
-    for (const Value& f : a[1].as_list()) {
+    for (const Value& f : a[faces_at].as_list()) {
         if (!f.is_vector() || f.as_list().size() < 3)
             arg_error(a, "face " + std::to_string(fi) + " must be a list of at least 3 point indices");
         std::vector<std::uint32_t> face;
@@ -190,7 +196,7 @@ const ModuleEntry kSolids[] = {
     {"plane", ModuleKind::Solid, {"normal", "offset"}, plane},
     {"paraboloid", ModuleKind::Solid, {"h", "r"}, paraboloid},
     {"hyperboloid", ModuleKind::Solid, {"h", "r", "waist"}, hyperboloid},
-    {"polyhedron", ModuleKind::Solid, {"points", "faces", "convexity"}, polyhedron},
+    {"polyhedron", ModuleKind::Solid, {"points", "faces", "convexity", "triangles"}, polyhedron},
     {"import", ModuleKind::Solid, {"file", "solid", "convexity"}, import_file},
 };
 

@@ -16,17 +16,27 @@ Args match_args(Evaluator& ev, const ModuleEntry& e, const ast::Stmt& st, Scope&
     for (const ast::Binding& b : st.args) {
         std::size_t i = n;
         if (b.name.empty()) {
-            if (positional >= n)
+            if (positional >= n) {
+                if (ev.lenient()) {  // OpenSCAD's warnings, the argument dropped
+                    ev.warn(b.loc, "Too many unnamed arguments supplied");
+                    continue;
+                }
                 throw SourceError(b.loc, std::string("too many arguments for '") + e.name + "' (takes " +
                                              std::to_string(n) + ")");
+            }
             i = positional++;
         } else {
             if (b.name[0] == '$') continue;  // $fn, $fa, $fs...: accepted and ignored
             for (std::size_t j = 0; j < n; ++j)
                 if (b.name == e.params[j]) i = j;
+            if (i == n && ev.lenient()) {
+                ev.warn(b.loc, "variable " + b.name + " not specified as parameter");
+                continue;
+            }
             if (i == n) throw SourceError(b.loc, "unknown argument '" + b.name + "' for '" + e.name + "'");
         }
-        if (a.given[i])
+        if (a.given[i] && ev.lenient()) ev.warn(b.loc, std::string("argument ") + e.params[i] + " supplied more than once");
+        else if (a.given[i])
             throw SourceError(b.loc, std::string("argument '") + e.params[i] + "' given twice to '" + e.name + "'");
         a.given[i] = true;
         a.values[i] = b.value ? ev.eval(*b.value, s) : Value();
@@ -56,10 +66,38 @@ bool Evaluator::builtin_module(const ast::Stmt& st, Scope& s, bool top_level) {
     if (e->kind == ModuleKind::Setup && !top_level)
         throw SourceError(st.loc, st.name + " is only allowed at the top level");
     Args a = match_args(*this, *e, st, s);
-    if (e->kind != ModuleKind::Operation && !st.body.empty())
-        arg_error(a, e->kind == ModuleKind::Solid ? "a solid takes no children" : "takes no children");
+    if (e->kind != ModuleKind::Operation && !st.body.empty()) {
+        if (!lenient_) arg_error(a, e->kind == ModuleKind::Solid ? "a solid takes no children" : "takes no children");
+        warn(st.loc, std::string("module ") + e->name + "() does not support child modules");  // ignored, as OpenSCAD
+    }
     ModuleCall call(*this, st, s, std::move(a));
+    if (lenient_) return builtin_module_lenient(*e, call);
     e->handler(call);
+    return true;
+}
+
+// Out of line, so the strict path above stays as small as it was.
+[[gnu::noinline]] bool Evaluator::builtin_module_lenient(const ModuleEntry& entry, ModuleCall& call) {
+    const ModuleEntry* e = &entry;
+    const ast::Stmt& st = call.st;
+    Scope& s = call.scope;
+    // The OpenSCAD dialect: an argument OpenSCAD would not stop at (a zero
+    // axis, a zero or negative size, undef) makes an operation the identity
+    // on its children and a solid nothing, with the strict message as the
+    // warning. Limits still stop.
+    const std::size_t mark = out_.mark();
+    try {
+        e->handler(call);
+    } catch (const SoftError& err) {
+        warn(err.diagnostic().loc, err.diagnostic().message + (e->kind == ModuleKind::Operation
+                                                                   ? " (the children are used unchanged)"
+                                                                   : " (nothing is made)"));
+        out_.pending.resize(mark);
+        if (e->kind == ModuleKind::Operation) {
+            eval_block(st.body, s, false);
+            out_.group(mark, st.loc);
+        }
+    }
     return true;
 }
 

@@ -17,7 +17,7 @@ inline std::shared_ptr<const SourceFile> source(std::string text, std::string pa
 }
 
 inline ast::Program parse(std::string text, std::size_t max_nesting = 256) {
-    return parse_program(source(std::move(text)), ParseLimits{max_nesting});
+    return parse_program(source(std::move(text)), ParseOptions{max_nesting});
 }
 
 // The whole program as s-expressions, one statement per line.

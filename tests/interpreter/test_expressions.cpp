@@ -131,8 +131,8 @@ TEST_CASE("let, echo and assert in expressions", "[expr]") {
 }
 
 TEST_CASE("echo formats values like OpenSCAD", "[expr]") {
-    CHECK(value_of("[1, \"s\", true, undef, [0.5, 1e6]]") == "[1, \"s\", true, undef, [0.5, 1e+06]]");
-    CHECK(value_of("\"a\\\"b\"") == "\"a\\\"b\"");
+    CHECK(value_of("[1, \"s\", true, undef, [0.5, 1e6]]") == "[1, \"s\", true, undef, [0.5, 1e+6]]");
+    CHECK(value_of("\"a\\\"b\"") == "\"a\"b\"");  // OpenSCAD does not escape the quote
     auto lines = echoes("echo(1, \"two\", x = [3]);\necho();");
     REQUIRE(lines.size() == 2);
     CHECK(lines[0] == "ECHO: 1, \"two\", x = [3]");

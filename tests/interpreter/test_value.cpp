@@ -10,10 +10,21 @@ TEST_CASE("numbers print like OpenSCAD (6 significant digits)", "[value]") {
     CHECK(kerf::to_str(Value(1.0)) == "1");
     CHECK(kerf::to_str(Value(0.5)) == "0.5");
     CHECK(kerf::to_str(Value(1.0 / 3.0)) == "0.333333");
-    CHECK(kerf::to_str(Value(1e6)) == "1e+06");
+    CHECK(kerf::to_str(Value(1e6)) == "1e+6");
     CHECK(kerf::to_str(Value(100000.0)) == "100000");
     CHECK(kerf::to_str(Value(-2.5)) == "-2.5");
-    CHECK(kerf::to_str(Value(1e-5)) == "1e-05");
+    CHECK(kerf::to_str(Value(1e-5)) == "0.00001");
+    // OpenSCAD 2021's text for each (openscad -o x.echo): exponent bounds,
+    // rounding into the next decade, -0, unpadded exponents.
+    CHECK(kerf::to_str(Value(1e-6)) == "1e-6");
+    CHECK(kerf::to_str(Value(1.23456789e-5)) == "0.0000123457");
+    CHECK(kerf::to_str(Value(999999.5)) == "1e+6");
+    CHECK(kerf::to_str(Value(123456789.0)) == "1.23457e+8");
+    CHECK(kerf::to_str(Value(1e21)) == "1e+21");
+    CHECK(kerf::to_str(Value(-0.0)) == "0");
+    CHECK(kerf::to_str(Value(-123456.7)) == "-123457");
+    CHECK(kerf::to_str(Value(5e-324)) == "4.94066e-324");
+    CHECK(kerf::to_str(Value(99999.95)) == "99999.9");
     CHECK(kerf::to_str(Value(INFINITY)) == "inf");
     CHECK(kerf::to_str(Value(-INFINITY)) == "-inf");
     CHECK(kerf::to_str(Value(NAN)) == "nan");
@@ -24,7 +35,7 @@ TEST_CASE("str and echo text of compound values", "[value]") {
     CHECK(kerf::to_str(l) == "[1, \"a\", true, undef, []]");
     CHECK(kerf::to_str(Value::string("hi")) == "hi");
     CHECK(kerf::to_repr(Value::string("hi")) == "\"hi\"");
-    CHECK(kerf::to_repr(Value::string("a\"b")) == "\"a\\\"b\"");
+    CHECK(kerf::to_repr(Value::string("a\"b")) == "\"a\"b\"");  // as OpenSCAD: not escaped
     CHECK(kerf::to_str(Value::range(0, 1, 5)) == "[0 : 1 : 5]");
     CHECK(kerf::to_str(Value(false)) == "false");
 }

@@ -1,4 +1,5 @@
-// The golden scripts: every tests/scripts/**/*.sdl is evaluated and lowered
+// The golden scripts: every tests/scripts/**/*.sdl and *.scad (the
+// OpenSCAD dialect, chosen by the extension) is evaluated and lowered
 // (what `kerf check` does) and its output compared with the expectations in
 // its comments (expectations.hpp). A script without `// error:` must run
 // without one; a script without `// ECHO:` must print nothing.
@@ -25,7 +26,8 @@ const std::string kRoot = KERF_SOURCE_DIR "/";
 std::vector<std::string> script_paths() {
     std::vector<std::string> out;
     for (const auto& e : std::filesystem::recursive_directory_iterator(kRoot + "tests/scripts"))
-        if (e.is_regular_file() && e.path().extension() == ".sdl") out.push_back(e.path().string());
+        if (e.is_regular_file() && (e.path().extension() == ".sdl" || e.path().extension() == ".scad"))
+            out.push_back(e.path().string());
     std::sort(out.begin(), out.end());
     return out;
 }

@@ -41,7 +41,7 @@ TEST_CASE("str concatenates OpenSCAD text forms", "[builtins]") {
     CHECK(call_builtin("str", {str_v("a"), Value(1), Value(2.5), Value(true), Value()}) == str_v("a12.5trueundef"));
     CHECK(call_builtin("str", {Value::list({Value(1), str_v("x")})}) == str_v("[1, \"x\"]"));
     CHECK(call_builtin("str", {Value(1.0 / 3)}) == str_v("0.333333"));
-    CHECK(call_builtin("str", {Value(1e6)}) == str_v("1e+06"));
+    CHECK(call_builtin("str", {Value(1e6)}) == str_v("1e+6"));
     CHECK(call_builtin("str", {Value::range(0, 1, 5)}) == str_v("[0 : 1 : 5]"));
     // Bounded before building: exactly at the limit passes, one more fails.
     CHECK(call_builtin("str", {str_v("abc"), str_v("de")}, 5) == str_v("abcde"));

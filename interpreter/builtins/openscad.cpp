@@ -1,0 +1,262 @@
+// The rest of OpenSCAD 2021.01's built-in functions (docs/openscad.md
+// "Built-in functions"): version, version_num, rands, lookup, search, chr,
+// ord, is_function. Their results follow OpenSCAD's implementation case by
+// case (checked against `openscad -o out.echo`); a wrong call is a
+// SoftError, with OpenSCAD's warning text where it has one.
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <functional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "grammar/literals.hpp"
+#include "interpreter/builtins/support.hpp"
+
+namespace kerf::builtin {
+namespace {
+
+Value version_fn(std::span<const Value>, const BuiltinContext&) {
+    return Value::list({Value(2021), Value(1), Value(0)});
+}
+
+// version_num() is 20210100; version_num([y, m, d]) is y*10000 + m*100 + d.
+Value version_num_fn(std::span<const Value> args, const BuiltinContext&) {
+    if (args.empty()) return Value(20210100);
+    const Value& v = args[0];
+    if (!v.is_vector() || v.as_list().size() < 2 || v.as_list().size() > 3) return Value();
+    const ValueList& l = v.as_list();
+    return Value(l[0].as_number() * 10000 + l[1].as_number() * 100 + (l.size() > 2 ? l[2].as_number() : 0));
+}
+
+// One stream for the run's thread, as OpenSCAD has one generator: a seeded
+// call reseeds it, an unseeded call goes on from where it is. It starts at
+// a fixed seed, so kerf runs are reproducible (OpenSCAD seeds from the
+// clock); the values themselves differ from OpenSCAD's.
+std::mt19937& random_stream() {
+    thread_local std::mt19937 stream(20210100u);
+    return stream;
+}
+
+// rands(min, max, count [, seed]): |count| truncated numbers uniform in
+// [min, max) (the bounds swapped if needed), as OpenSCAD counts them.
+Value rands_fn(std::span<const Value> args, const BuiltinContext& ctx) {
+    if (args.size() != 3 && args.size() != 4) fail(ctx, "rands() number of parameters does not match");
+    for (const Value& a : args)
+        if (!a.is_number()) fail(ctx, "rands() parameter could not be converted");
+    double lo = args[0].as_number(), hi = args[1].as_number();
+    if (!std::isfinite(lo) || !std::isfinite(hi)) fail(ctx, "rands() range cannot be infinite");
+    if (hi < lo) std::swap(lo, hi);
+    double count = std::abs(args[2].as_number());
+    if (!std::isfinite(count)) count = 1;  // OpenSCAD: "resetting number of results to 1"
+    if (count >= static_cast<double>(ctx.max_list_elements) + 1)
+        throw SourceError(ctx.loc, "rands: list size limit " + std::to_string(ctx.max_list_elements) + " exceeded");
+    std::mt19937& stream = random_stream();
+    if (args.size() == 4) {
+        double seed = args[3].as_number();
+        std::uint64_t bits = 0;
+        static_assert(sizeof bits == sizeof seed);
+        std::memcpy(&bits, &seed, sizeof bits);
+        stream.seed(static_cast<std::uint32_t>(bits ^ (bits >> 32)));
+    }
+    std::uniform_real_distribution<double> uniform(lo, hi);
+    ValueList out;
+    out.reserve(static_cast<std::size_t>(count));
+    for (std::size_t i = 0; i < static_cast<std::size_t>(count); ++i) out.push_back(Value(lo == hi ? lo : uniform(stream)));
+    return Value::list(std::move(out));
+}
+
+bool vec2(const Value& v, double& x, double& y) {
+    if (!v.is_vector(2)) return false;
+    x = v.as_list()[0].as_number();
+    y = v.as_list()[1].as_number();
+    return true;
+}
+
+// lookup(key, [[k, v], ...]): linear interpolation between the nearest
+// keys below and above, the end value outside; entries that are not two
+// numbers are skipped; the table need not be sorted (OpenSCAD's scan).
+Value lookup_fn(std::span<const Value> args, const BuiltinContext& ctx) {
+    if (args.size() != 2) fail(ctx, "lookup() number of parameters does not match");
+    if (!args[0].is_number() || !std::isfinite(args[0].as_number()))
+        fail(ctx, "lookup(" + to_repr(args[0]) + ", ...) first argument is not a number");
+    const double p = args[0].as_number();
+    if (!args[1].is_list() || args[1].as_list().empty()) return Value();
+    const ValueList& table = args[1].as_list();
+    double low_p, low_v, high_p, high_v;
+    if (!vec2(table[0], low_p, low_v)) return Value();
+    high_p = low_p;
+    high_v = low_v;
+    for (std::size_t i = 1; i < table.size(); ++i) {
+        double tp, tv;
+        if (!vec2(table[i], tp, tv)) continue;
+        if (tp <= p && (tp > low_p || low_p > p)) {
+            low_p = tp;
+            low_v = tv;
+        }
+        if (tp >= p && (tp < high_p || high_p < p)) {
+            high_p = tp;
+            high_v = tv;
+        }
+    }
+    if (p <= low_p) return Value(high_v);
+    if (p >= high_p) return Value(low_v);
+    const double f = (p - low_p) / (high_p - low_p);
+    return Value(high_v * f + low_v * (1 - f));
+}
+
+// The code points of a UTF-8 string, one string each.
+std::vector<std::string> characters(const std::string& s) {
+    std::vector<std::string> out;
+    for (std::size_t i = 0; i < s.size();) {
+        std::size_t j = i + 1;
+        while (j < s.size() && (static_cast<unsigned char>(s[j]) & 0xC0) == 0x80) ++j;
+        out.push_back(s.substr(i, j - i));
+        i = j;
+    }
+    return out;
+}
+
+// Adds the index j to a search result: `one` (the default of one match per
+// term) collects indices flat, otherwise each term gets its own list.
+struct Matches {
+    unsigned per_term;
+    ValueList flat;
+    bool term(const std::function<bool(std::size_t)>& hit, std::size_t n, bool empty_when_missing) {
+        ValueList mine;
+        unsigned count = 0;
+        for (std::size_t j = 0; j < n; ++j) {
+            if (!hit(j)) continue;
+            ++count;
+            if (per_term == 1) {
+                flat.push_back(Value(static_cast<double>(j)));
+                break;
+            }
+            mine.push_back(Value(static_cast<double>(j)));
+            if (per_term > 1 && count >= per_term) break;
+        }
+        if (per_term != 1 || (count == 0 && empty_when_missing)) flat.push_back(Value::list(std::move(mine)));
+        return count > 0;
+    }
+};
+
+const Value& column(const Value& entry, unsigned col, bool& ok) {
+    static const Value none;
+    ok = entry.is_list() && col < entry.as_list().size();
+    return ok ? entry.as_list()[col] : none;
+}
+
+// search(what, table [, per_term = 1 [, column = 0]]) in all its forms:
+// a number or a list of values matched against table entries (or their
+// column), a string's characters against a string's characters or the
+// first character of each entry's column.
+Value search_fn(std::span<const Value> args, const BuiltinContext& ctx) {
+    if (args.size() < 2) fail(ctx, "search() number of parameters does not match");
+    auto whole = [](const Value& v) -> unsigned {
+        if (!v.is_number() || !(v.as_number() >= 0)) return 0;
+        return v.as_number() >= 4294967295.0 ? 4294967295u : static_cast<unsigned>(v.as_number());
+    };
+    const Value& what = args[0];
+    const Value& table = args[1];
+    Matches m{args.size() > 2 ? whole(args[2]) : 1u, {}};
+    const unsigned col = args.size() > 3 ? whole(args[3]) : 0u;
+    static const ValueList no_entries;
+    const ValueList& entries = table.is_list() ? table.as_list() : no_entries;
+    auto matches_value = [&](const Value& x, std::size_t j) {
+        bool ok;
+        const Value& c = column(entries[j], col, ok);
+        return (col == 0 && x == entries[j]) || (ok && x == c);
+    };
+    if (what.is_number()) {
+        // One list of indices, up to per_term of them (0: all).
+        unsigned count = 0;
+        for (std::size_t j = 0; j < entries.size(); ++j) {
+            if (!matches_value(what, j)) continue;
+            m.flat.push_back(Value(static_cast<double>(j)));
+            if (m.per_term != 0 && ++count >= m.per_term) break;
+        }
+        return Value::list(std::move(m.flat));
+    }
+    if (what.is_list()) {
+        for (const Value& x : what.as_list())
+            m.term([&](std::size_t j) { return matches_value(x, j); }, entries.size(), true);
+        return Value::list(std::move(m.flat));
+    }
+    if (!what.is_string()) return Value();
+    if (table.is_string()) {
+        const std::vector<std::string> hay = characters(table.as_string());
+        for (const std::string& c : characters(what.as_string()))
+            m.term([&](std::size_t j) { return hay[j] == c; }, hay.size(), false);
+        return Value::list(std::move(m.flat));
+    }
+    for (std::size_t j = 0; j < entries.size(); ++j) {
+        bool ok;
+        column(entries[j], col, ok);
+        if (!ok) return Value::list({});  // OpenSCAD: "Invalid entry in search vector"
+    }
+    for (const std::string& c : characters(what.as_string()))
+        m.term(
+            [&](std::size_t j) {
+                bool ok;
+                const std::vector<std::string> first = characters(to_str(column(entries[j], col, ok)));
+                return !first.empty() && first[0] == c;
+            },
+            entries.size(), false);
+    return Value::list(std::move(m.flat));
+}
+
+// chr(65, [72, 105]): the characters of valid code points (1 to 0x10FFFF,
+// no surrogates; fractions truncated), lists flattened; anything else adds
+// nothing, as in OpenSCAD.
+void chr_of(const Value& v, std::string& out) {
+    if (v.is_list()) {
+        for (const Value& e : v.as_list()) chr_of(e, out);
+        return;
+    }
+    if (!v.is_number()) return;
+    const double d = v.as_number();
+    if (!(d >= 1 && d < 0x110000)) return;
+    const auto c = static_cast<std::uint32_t>(d);
+    if (c >= 0xD800 && c <= 0xDFFF) return;
+    grammar::append_utf8(out, c);
+}
+
+Value chr_fn(std::span<const Value> args, const BuiltinContext&) {
+    std::string out;
+    for (const Value& a : args) chr_of(a, out);
+    return Value::string(std::move(out));
+}
+
+// ord("A") is 65: the first code point; "" is undef.
+Value ord_fn(std::span<const Value> args, const BuiltinContext& ctx) {
+    if (args.empty()) return Value();
+    if (args.size() > 1)
+        fail(ctx, "ord() called with " + std::to_string(args.size()) + " arguments, only 1 argument expected");
+    if (!args[0].is_string()) fail(ctx, "ord() argument " + to_repr(args[0]) + " is not of type string");
+    const std::string& s = args[0].as_string();
+    if (s.empty()) return Value();
+    const auto b = [&](std::size_t i) { return static_cast<unsigned char>(s[i]); };
+    std::uint32_t c = b(0);
+    std::size_t extra = c >= 0xF0 ? 3 : c >= 0xE0 ? 2 : c >= 0xC0 ? 1 : 0;
+    if (extra) c &= 0x3F >> extra;
+    for (std::size_t i = 1; i <= extra && i < s.size(); ++i) c = (c << 6) | (b(i) & 0x3F);
+    return Value(static_cast<double>(c));
+}
+
+// kerf has no function values yet, so nothing is a function.
+Value is_function_fn(std::span<const Value> args, const BuiltinContext& ctx) {
+    expect_count(args, ctx, "is_function", 1);
+    return Value(false);
+}
+
+const Entry kEntries[] = {
+    {"version", version_fn}, {"version_num", version_num_fn}, {"rands", rands_fn}, {"lookup", lookup_fn},
+    {"search", search_fn},   {"chr", chr_fn},                 {"ord", ord_fn},     {"is_function", is_function_fn},
+};
+
+}  // namespace
+
+std::span<const Entry> openscad_entries() { return kEntries; }
+
+}  // namespace kerf::builtin

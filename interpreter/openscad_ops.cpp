@@ -1,0 +1,141 @@
+#include "interpreter/openscad_ops.hpp"
+
+#include <cmath>
+#include <cstdint>
+
+#include "interpreter/operators.hpp"
+
+namespace kerf {
+
+const char* openscad_type_name(const Value& v) {
+    switch (v.type()) {
+        case ValueType::Undef: return "undefined";
+        case ValueType::Bool: return "bool";
+        case ValueType::Number: return "number";
+        case ValueType::String: return "string";
+        case ValueType::List: return "vector";
+        case ValueType::Range: return "range";
+    }
+    return "undefined";
+}
+
+namespace {
+
+const SourceLoc kNowhere{};
+
+std::string undefined_operation(std::string_view op, const Value& a, const Value& b) {
+    return std::string("undefined operation (") + openscad_type_name(a) + " " + std::string(op) + " " +
+           openscad_type_name(b) + ")";
+}
+
+// a < b as OpenSCAD's Value::operator<: same-type scalars compare, vectors
+// lexicographically (a shorter prefix is less); anything else is undef.
+Value less(const Value& a, const Value& b, std::string& warning) {
+    if (a.is_list() && b.is_list()) {
+        const ValueList& x = a.as_list();
+        const ValueList& y = b.as_list();
+        std::size_t i = 0;
+        for (; i < x.size() && i < y.size(); ++i) {
+            Value t = less(x[i], y[i], warning);
+            if (t.is_undef()) return t;
+            if (t.as_bool()) return Value(true);
+            Value u = less(y[i], x[i], warning);
+            if (u.is_bool() && u.as_bool()) return Value(false);
+        }
+        return Value(i == x.size() && i < y.size());
+    }
+    if (a.type() == b.type() && !a.is_undef() && !a.is_range()) {
+        try {
+            return binary_op("<", a, b, kNowhere);
+        } catch (const SoftError&) {
+        }
+    }
+    warning = undefined_operation("<", a, b);
+    return Value();
+}
+
+Value compare(std::string_view op, const Value& a, const Value& b, std::string& warning) {
+    Value r;
+    if (op == "<") r = less(a, b, warning);
+    else if (op == ">") r = less(b, a, warning);
+    else if (op == "<=") {
+        r = less(b, a, warning);
+        if (!r.is_undef()) r = Value(!r.as_bool());
+    } else {
+        r = less(a, b, warning);
+        if (!r.is_undef()) r = Value(!r.as_bool());
+    }
+    if (r.is_undef()) warning = undefined_operation(op, a, b);
+    return r;
+}
+
+// + and - of two vectors: element-wise up to the shorter length; an element
+// pair that does not add is undef (OpenSCAD prints nothing for it).
+Value add_lists(std::string_view op, const Value& a, const Value& b) {
+    const ValueList& x = a.as_list();
+    const ValueList& y = b.as_list();
+    ValueList out;
+    out.reserve(std::min(x.size(), y.size()));
+    for (std::size_t i = 0; i < x.size() && i < y.size(); ++i) {
+        if (x[i].is_list() && y[i].is_list()) {
+            out.push_back(add_lists(op, x[i], y[i]));
+            continue;
+        }
+        try {
+            out.push_back(binary_op(op, x[i], y[i], kNowhere));
+        } catch (const SoftError&) {
+            out.push_back(Value());
+        }
+    }
+    return Value::list(std::move(out));
+}
+
+}  // namespace
+
+Value openscad_binary(std::string_view op, const Value& a, const Value& b, std::string& warning) {
+    warning.clear();
+    if (op == "<" || op == ">" || op == "<=" || op == ">=") return compare(op, a, b, warning);
+    if ((op == "+" || op == "-") && a.is_list() && b.is_list()) return add_lists(op, a, b);
+    if (op == "*" && a.is_vector() && b.is_vector() && a.as_list().size() != b.as_list().size()) {
+        warning = "vector*vector requires matching lengths (" + std::to_string(a.as_list().size()) +
+                  " != " + std::to_string(b.as_list().size()) + ")";
+        return Value();
+    }
+    warning = undefined_operation(op, a, b);
+    return Value();
+}
+
+Value openscad_unary(std::string_view op, const Value& a, std::string& warning) {
+    warning.clear();
+    if (op == "+") return a;
+    if (a.is_number()) return Value(-a.as_number());
+    if (a.is_list()) {
+        ValueList out;
+        out.reserve(a.as_list().size());
+        std::string inner;
+        for (const Value& e : a.as_list()) out.push_back(e.is_number() || e.is_list() ? openscad_unary(op, e, inner) : Value());
+        return Value::list(std::move(out));
+    }
+    warning = std::string("undefined operation (-") + openscad_type_name(a) + ")";
+    return Value();
+}
+
+Value openscad_index(const Value& object, const Value& index) {
+    if (!index.is_number()) return Value();
+    double d = index.as_number();
+    if (!(d >= 0) || d >= 4294967296.0) return Value();
+    const double i = std::floor(d);
+    if (object.is_range()) {
+        const Range& r = object.as_range();
+        if (i == 0) return Value(r.start);
+        if (i == 1) return Value(r.step);
+        if (i == 2) return Value(r.end);
+        return Value();
+    }
+    if (!object.is_list() && !object.is_string()) return Value();
+    std::size_t length = object.is_list() ? object.as_list().size() : utf8_length(object.as_string());
+    if (i >= static_cast<double>(length)) return Value();
+    return index_value(object, Value(i), kNowhere);
+}
+
+}  // namespace kerf

@@ -1,0 +1,31 @@
+// What OpenSCAD 2021 answers where kerf's strict operators refuse
+// (docs/openscad.md "Operators"): used only by the OpenSCAD dialect, after
+// binary_op/unary_op threw a SoftError, and for every index there (OpenSCAD
+// indexes a range as [begin, step, end] and truncates a fractional index).
+#pragma once
+#include <string>
+#include <string_view>
+
+#include "interpreter/value.hpp"
+
+namespace kerf {
+
+// OpenSCAD's names in "undefined operation (number + string)": undefined,
+// bool, number, string, vector, range.
+const char* openscad_type_name(const Value& v);
+
+// `a op b` as OpenSCAD computes it: lists compare lexicographically, + and -
+// of lists of unequal length stop at the shorter one, anything else that
+// does not apply is undef. `warning` receives what OpenSCAD prints (empty:
+// nothing), e.g. "undefined operation (number + string)".
+Value openscad_binary(std::string_view op, const Value& a, const Value& b, std::string& warning);
+
+// Unary minus: a list negates element-wise (non-numbers become undef), any
+// other non-number is undef and "undefined operation (-string)".
+Value openscad_unary(std::string_view op, const Value& a, std::string& warning);
+
+// object[index]: the element at the truncated index, a range's begin, step
+// or end for 0, 1, 2, and undef (silently, as OpenSCAD) for anything else.
+Value openscad_index(const Value& object, const Value& index);
+
+}  // namespace kerf
