@@ -130,6 +130,7 @@ private:
         TNode t;
         t.op = csg::Op::Leaf;
         t.leaf = static_cast<std::uint32_t>(leaves.size() - 1);
+        t.gnode = gnode;
         t.bounds = leaf.bounds;
         nodes.push_back(t);
         return static_cast<std::uint32_t>(nodes.size() - 1);
@@ -203,10 +204,11 @@ private:
         }
     }
 
-    std::uint32_t make_op(csg::Op op, std::uint32_t head, std::uint32_t tail, std::uint32_t count,
-                          const Aabb& bounds) {
+    std::uint32_t make_op(const Frame& f, csg::Op op, std::uint32_t head, std::uint32_t tail,
+                          std::uint32_t count, const Aabb& bounds) {
         TNode t;
         t.op = op;
+        t.gnode = f.gnode;
         t.head = head;
         t.tail = tail;
         t.count = count;
@@ -227,7 +229,7 @@ private:
             default:
                 if (f.count == 0) return kNone;
                 if (f.count == 1) return single(f.head);
-                return make_op(csg::Op::Union, f.head, f.tail, f.count, f.bounds);
+                return make_op(f, csg::Op::Union, f.head, f.tail, f.count, f.bounds);
         }
     }
 
@@ -241,7 +243,7 @@ private:
         drop_redundant_halfspaces(f, box);
         if (f.count == 1) return single(f.head);
         if (!trim_union_operands(f, box)) return kNone;
-        return make_op(csg::Op::Intersection, f.head, f.tail, f.count, box);
+        return make_op(f, csg::Op::Intersection, f.head, f.tail, f.count, box);
     }
 
     // A half-space containing the whole box of the intersection changes
@@ -334,7 +336,7 @@ private:
         }
         if (f.count == 0) return single(f.minuend);
         nodes[f.minuend].next = f.head;
-        return make_op(csg::Op::Difference, f.minuend, f.tail, f.count + 1, f.bounds);
+        return make_op(f, csg::Op::Difference, f.minuend, f.tail, f.count + 1, f.bounds);
     }
 };
 

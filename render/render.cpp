@@ -8,6 +8,10 @@
 #include <chrono>
 #include <limits>
 #include <optional>
+#include <stdexcept>
+#include <string>
+
+#include <tbb/global_control.h>
 
 #include "render/aov.hpp"
 #include "render/camera.hpp"
@@ -33,11 +37,8 @@ void check_options(const RenderOptions& o) {
     }
 }
 
-}  // namespace
-
-Image render(const csg::Scene& scene, const RenderOptions& options, RenderStats* stats,
-             std::function<void(double)> progress) {
-    check_options(options);
+Image render_tiles(const csg::Scene& scene, const RenderOptions& options, RenderStats* stats,
+                   const std::function<void(double)>& progress, std::size_t stack_need) {
     const auto start = std::chrono::steady_clock::now();
     // Embree builds its BVHs with TBB: inside the arena, so `threads` bounds
     // the build as well as the rendering.
@@ -56,7 +57,8 @@ Image render(const csg::Scene& scene, const RenderOptions& options, RenderStats*
     PixelStore store(image, region, aov_channels(aov), aov_content(aov), options.srgb8 && aov == Aov::None);
     tbb::enumerable_thread_specific<ThreadState> states;
 
-    for_each_tile(arena, region, camera, tracer, states, progress, [&](int x, int y, ThreadState& ts, bool traced) {
+    const bool complete = for_each_tile(arena, region, camera, tracer, states, progress, stack_need,
+                                        [&](int x, int y, ThreadState& ts, bool traced) {
         if (aov != Aov::None) {
             aov_pixel(aov, camera, tracer, x, y, ts, traced, store.values(x, y));
             return;
@@ -82,8 +84,35 @@ Image render(const csg::Scene& scene, const RenderOptions& options, RenderStats*
         }
         store.color(x, y, sum);
     });
+    if (!complete)
+        throw std::runtime_error("a render thread has less stack than this scene's CSG tree needs (" +
+                                 std::to_string(stack_need >> 20) + " MiB): TBB's threads were started with a smaller one");
 
     if (stats) *stats = sum_stats(states, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    return image;
+}
+
+}  // namespace
+
+Image render(const csg::Scene& scene, const RenderOptions& options, RenderStats* stats,
+             std::function<void(double)> progress) {
+    check_options(options);
+    // The tracer recurses once per tree level (tracer/stack_depth.hpp):
+    // refuse what no stack is sized for, and give every thread that traces
+    // the stack this tree needs rather than let a deep one overflow it.
+    const std::uint32_t depth = tree_depth(scene);
+    if (depth > csg::kMaxDepth)
+        throw std::runtime_error("the CSG tree is " + std::to_string(depth) + " levels deep; kerf renders trees up to " +
+                                 std::to_string(csg::kMaxDepth) + " levels deep");
+    const std::size_t need = stack_needed(depth);
+    // TBB's workers are started with this stack (when this is the process's
+    // first render; otherwise a worker that has too little traces nothing
+    // and the render fails with a message).
+    const std::size_t worker_stack = std::max(need + kStackBase, tbb::global_control::active_value(tbb::global_control::thread_stack_size));
+    tbb::global_control stack_size(tbb::global_control::thread_stack_size, worker_stack);
+    if (stack_left() >= need) return render_tiles(scene, options, stats, progress, need);
+    Image image;
+    run_with_stack(need + kStackBase, [&] { image = render_tiles(scene, options, stats, progress, need); });
     return image;
 }
 
