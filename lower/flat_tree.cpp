@@ -6,6 +6,7 @@
 
 #include "lower/flat_tree.hpp"
 #include "csg/huge_pages.hpp"
+#include "lower/duplicate_leaves.hpp"
 #include "lower/leaf_placement.hpp"
 #include "lower/primitive_bounds.hpp"
 
@@ -131,6 +132,7 @@ private:
         t.op = csg::Op::Leaf;
         t.leaf = static_cast<std::uint32_t>(leaves.size() - 1);
         t.gnode = gnode;
+        t.hash = leaf_hash(leaf);
         t.bounds = leaf.bounds;
         nodes.push_back(t);
         return static_cast<std::uint32_t>(nodes.size() - 1);
@@ -227,6 +229,7 @@ private:
             case NodeKind::Intersection: return finish_intersection(f);
             case NodeKind::Difference: return finish_difference(f);
             default:
+                f.count = drop_duplicate_leaves(nodes, leaves, f.head, f.tail, f.count);
                 if (f.count == 0) return kNone;
                 if (f.count == 1) return single(f.head);
                 return make_op(f, csg::Op::Union, f.head, f.tail, f.count, f.bounds);
@@ -235,6 +238,7 @@ private:
 
     std::uint32_t finish_intersection(Frame& f) {
         if (f.empty || f.count == 0) return kNone;
+        f.count = drop_duplicate_leaves(nodes, leaves, f.head, f.tail, f.count);
         Aabb box = Aabb::everything();
         for (std::uint32_t c = f.head; c != kNone; c = nodes[c].next) box = Aabb::overlap(box, nodes[c].bounds);
         for (std::uint32_t c = f.head; c != kNone && !box.empty(); c = nodes[c].next)
@@ -334,6 +338,7 @@ private:
                 c = next;
             }
         }
+        f.count = drop_duplicate_leaves(nodes, leaves, f.head, f.tail, f.count);
         if (f.count == 0) return single(f.minuend);
         nodes[f.minuend].next = f.head;
         return make_op(f, csg::Op::Difference, f.minuend, f.tail, f.count + 1, f.bounds);

@@ -21,6 +21,7 @@ struct TNode {
     std::uint32_t head = csg::kNone, tail = csg::kNone, count = 0;
     std::uint32_t next = csg::kNone;
     std::uint32_t gnode = csg::kNone;  // the graph node it came from (its source location)
+    std::uint32_t hash = 0;            // Leaf: leaf_hash (duplicate_leaves.hpp)
     csg::Aabb bounds;
 };
 
