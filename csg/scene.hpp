@@ -21,6 +21,13 @@ constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 // underflow; lowering and the scene statements refuse it.
 constexpr double kRenderableRange = 1e30;
 
+// The deepest operation tree the renderer evaluates: nodes on the path from
+// the root to a leaf, both counted, after lowering has merged nested unions
+// and intersections. The tracer recurses once per level; its threads' stacks
+// are sized for this depth (docs/lowering.md, "Depth"). Lowering refuses a
+// deeper tree at the node that exceeds it; render() refuses one too.
+constexpr std::uint32_t kMaxDepth = 4000;
+
 struct Aabb {
     glm::dvec3 lo{std::numeric_limits<double>::infinity()};
     glm::dvec3 hi{-std::numeric_limits<double>::infinity()};

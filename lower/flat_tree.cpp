@@ -6,6 +6,7 @@
 
 #include "lower/flat_tree.hpp"
 #include "csg/huge_pages.hpp"
+#include "lower/duplicate_leaves.hpp"
 #include "lower/leaf_placement.hpp"
 #include "lower/primitive_bounds.hpp"
 
@@ -138,6 +139,8 @@ private:
         TNode t;
         t.op = csg::Op::Leaf;
         t.leaf = static_cast<std::uint32_t>(leaves.size() - 1);
+        t.gnode = gnode;
+        t.hash = leaf_hash(leaf);
         t.bounds = leaf.bounds;
         nodes.push_back(t);
         return static_cast<std::uint32_t>(nodes.size() - 1);
@@ -211,10 +214,11 @@ private:
         }
     }
 
-    std::uint32_t make_op(csg::Op op, std::uint32_t head, std::uint32_t tail, std::uint32_t count,
-                          const Aabb& bounds) {
+    std::uint32_t make_op(const Frame& f, csg::Op op, std::uint32_t head, std::uint32_t tail,
+                          std::uint32_t count, const Aabb& bounds) {
         TNode t;
         t.op = op;
+        t.gnode = f.gnode;
         t.head = head;
         t.tail = tail;
         t.count = count;
@@ -233,14 +237,16 @@ private:
             case NodeKind::Intersection: return finish_intersection(f);
             case NodeKind::Difference: return finish_difference(f);
             default:
+                f.count = drop_duplicate_leaves(nodes, leaves, f.head, f.tail, f.count);
                 if (f.count == 0) return kNone;
                 if (f.count == 1) return single(f.head);
-                return make_op(csg::Op::Union, f.head, f.tail, f.count, f.bounds);
+                return make_op(f, csg::Op::Union, f.head, f.tail, f.count, f.bounds);
         }
     }
 
     std::uint32_t finish_intersection(Frame& f) {
         if (f.empty || f.count == 0) return kNone;
+        f.count = drop_duplicate_leaves(nodes, leaves, f.head, f.tail, f.count);
         Aabb box = Aabb::everything();
         for (std::uint32_t c = f.head; c != kNone; c = nodes[c].next) box = Aabb::overlap(box, nodes[c].bounds);
         for (std::uint32_t c = f.head; c != kNone && !box.empty(); c = nodes[c].next)
@@ -249,7 +255,7 @@ private:
         drop_redundant_halfspaces(f, box);
         if (f.count == 1) return single(f.head);
         if (!trim_union_operands(f, box)) return kNone;
-        return make_op(csg::Op::Intersection, f.head, f.tail, f.count, box);
+        return make_op(f, csg::Op::Intersection, f.head, f.tail, f.count, box);
     }
 
     // A half-space containing the whole box of the intersection changes
@@ -340,9 +346,10 @@ private:
                 c = next;
             }
         }
+        f.count = drop_duplicate_leaves(nodes, leaves, f.head, f.tail, f.count);
         if (f.count == 0) return single(f.minuend);
         nodes[f.minuend].next = f.head;
-        return make_op(csg::Op::Difference, f.minuend, f.tail, f.count + 1, f.bounds);
+        return make_op(f, csg::Op::Difference, f.minuend, f.tail, f.count + 1, f.bounds);
     }
 };
 

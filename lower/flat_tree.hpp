@@ -20,6 +20,8 @@ struct TNode {
     std::uint32_t leaf = csg::kNone;  // Leaf: index into the leaves vector
     std::uint32_t head = csg::kNone, tail = csg::kNone, count = 0;
     std::uint32_t next = csg::kNone;
+    std::uint32_t gnode = csg::kNone;  // the graph node it came from (its source location)
+    std::uint32_t hash = 0;            // Leaf: leaf_hash (duplicate_leaves.hpp)
     csg::Aabb bounds;
 };
 
@@ -36,7 +38,8 @@ FlatTree build_flat_tree(const graph::SceneGraph& graph, std::vector<csg::Leaf>&
 
 // Writes nodes/children in pre-order into `scene` (whose `leaves` are the
 // ones build_flat_tree filled), keeps only the leaves the tree uses, and
-// resolves materials, meshes and sources into the scene's tables.
+// resolves materials, meshes and sources into the scene's tables. Throws
+// SourceError at the first node deeper than csg::kMaxDepth.
 void emit_flat_tree(const graph::SceneGraph& graph, const FlatTree& tree, csg::Scene& scene);
 
 }  // namespace kerf::lowering

@@ -58,13 +58,14 @@ private:
 
     void emit_tree(std::uint32_t root) {
         s_.root = 0;
-        struct Item { std::uint32_t tnode, parent, slot; };
-        std::vector<Item> stack{{root, kNone, kNone}};
+        struct Item { std::uint32_t tnode, parent, slot, depth; };
+        std::vector<Item> stack{{root, kNone, kNone, 1}};
         std::vector<std::uint32_t> kids;
         while (!stack.empty()) {
             const Item it = stack.back();
             stack.pop_back();
             const TNode& tn = t_.nodes[it.tnode];
+            if (it.depth > csg::kMaxDepth) too_deep(tn);
             const auto index = static_cast<std::uint32_t>(s_.nodes.size());
             csg::Node node;
             node.op = tn.op;
@@ -86,8 +87,17 @@ private:
             for (std::uint32_t c = tn.head; c != kNone; c = t_.nodes[c].next) kids.push_back(c);
             // Reverse push so the first child is emitted (and numbered) first.
             for (std::size_t k = kids.size(); k-- > 0;)
-                stack.push_back({kids[k], index, node.first + static_cast<std::uint32_t>(k)});
+                stack.push_back({kids[k], index, node.first + static_cast<std::uint32_t>(k), it.depth + 1});
         }
+    }
+
+    // The tracer evaluates the tree recursively; csg::kMaxDepth is what its
+    // stack is sized for (docs/lowering.md, "Depth").
+    [[noreturn]] void too_deep(const TNode& tn) const {
+        const std::string limit = std::to_string(csg::kMaxDepth);
+        throw SourceError(g_.nodes[tn.gnode].loc, "the CSG tree is deeper than " + limit +
+                                                      " levels here (after unions and intersections are merged); "
+                                                      "kerf renders trees up to " + limit + " levels deep");
     }
 
     const graph::SceneGraph& g_;

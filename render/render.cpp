@@ -9,6 +9,10 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <stdexcept>
+#include <string>
+
+#include <tbb/global_control.h>
 
 #include "render/adaptive.hpp"
 #include "render/aov.hpp"
@@ -37,11 +41,8 @@ void check_options(const RenderOptions& o) {
     }
 }
 
-}  // namespace
-
-Image render(const csg::Scene& scene, const RenderOptions& options, RenderStats* stats,
-             std::function<void(double)> progress) {
-    check_options(options);
+Image render_tiles(const csg::Scene& scene, const RenderOptions& options, RenderStats* stats,
+                   const std::function<void(double)>& progress, std::size_t stack_need) {
     const auto start = std::chrono::steady_clock::now();
     // Embree builds its BVHs with TBB: inside the arena, so `threads` bounds
     // the build as well as the rendering.
@@ -84,8 +85,9 @@ Image render(const csg::Scene& scene, const RenderOptions& options, RenderStats*
         return sum / double(n);
     };
 
+    bool complete = true;
     if (aov != Aov::None) {
-        for_each_tile(arena, region, camera, tracer, states, progress, [&](int x, int y, ThreadState& ts, bool traced) {
+        complete &= for_each_tile(arena, region, camera, tracer, states, progress, stack_need, [&](int x, int y, ThreadState& ts, bool traced) {
             aov_pixel(aov, camera, tracer, x, y, ts, traced, store.values(x, y));
         });
     } else if (options.adaptive && !options.preview) {
@@ -98,14 +100,14 @@ Image render(const csg::Scene& scene, const RenderOptions& options, RenderStats*
             return [&progress, from, to](double f) { progress(from + (to - from) * f); };
         };
         const std::array<int, 4> area = centres.area();
-        for_each_tile(arena, area, camera, tracer, states, part(0, 0.25), [&](int x, int y, ThreadState& ts, bool traced) {
+        complete &= for_each_tile(arena, area, camera, tracer, states, part(0, 0.25), stack_need, [&](int x, int y, ThreadState& ts, bool traced) {
             std::uint32_t surface;
             const glm::dvec3 c = sample(x + 0.5, y + 0.5, ts, traced, &surface);
             centres.set(x, y, c, surface);
             if (x >= region[0] && x < region[2] && y >= region[1] && y < region[3]) store.color(x, y, c);
         });
         // Only candidates are written again; the rest keep their centre.
-        for_each_tile(arena, region, camera, tracer, states, part(0.25, 1), [&](int x, int y, ThreadState& ts, bool traced) {
+        complete &= for_each_tile(arena, region, camera, tracer, states, part(0.25, 1), stack_need, [&](int x, int y, ThreadState& ts, bool traced) {
             if (!centres.needs_more(x, y, threshold)) return;
             // Probes at the 4 corners first: a straight edge that crosses the
             // pixel always separates its corners, so a candidate whose
@@ -127,12 +129,39 @@ Image render(const csg::Scene& scene, const RenderOptions& options, RenderStats*
             store.color(x, y, samples_mean(refine, x, y, ts, traced));
         });
     } else {
-        for_each_tile(arena, region, camera, tracer, states, progress, [&](int x, int y, ThreadState& ts, bool traced) {
+        complete &= for_each_tile(arena, region, camera, tracer, states, progress, stack_need, [&](int x, int y, ThreadState& ts, bool traced) {
             store.color(x, y, samples_mean(samples, x, y, ts, traced));
         });
     }
+    if (!complete)
+        throw std::runtime_error("a render thread has less stack than this scene's CSG tree needs (" +
+                                 std::to_string(stack_need >> 20) + " MiB): TBB's threads were started with a smaller one");
 
     if (stats) *stats = sum_stats(states, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    return image;
+}
+
+}  // namespace
+
+Image render(const csg::Scene& scene, const RenderOptions& options, RenderStats* stats,
+             std::function<void(double)> progress) {
+    check_options(options);
+    // The tracer recurses once per tree level (tracer/stack_depth.hpp):
+    // refuse what no stack is sized for, and give every thread that traces
+    // the stack this tree needs rather than let a deep one overflow it.
+    const std::uint32_t depth = tree_depth(scene);
+    if (depth > csg::kMaxDepth)
+        throw std::runtime_error("the CSG tree is " + std::to_string(depth) + " levels deep; kerf renders trees up to " +
+                                 std::to_string(csg::kMaxDepth) + " levels deep");
+    const std::size_t need = stack_needed(depth);
+    // TBB's workers are started with this stack (when this is the process's
+    // first render; otherwise a worker that has too little traces nothing
+    // and the render fails with a message).
+    const std::size_t worker_stack = std::max(need + kStackBase, tbb::global_control::active_value(tbb::global_control::thread_stack_size));
+    tbb::global_control stack_size(tbb::global_control::thread_stack_size, worker_stack);
+    if (stack_left() >= need) return render_tiles(scene, options, stats, progress, need);
+    Image image;
+    run_with_stack(need + kStackBase, [&] { image = render_tiles(scene, options, stats, progress, need); });
     return image;
 }
 

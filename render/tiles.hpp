@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <functional>
 #include <mutex>
 
@@ -19,6 +20,7 @@
 
 #include "render/camera.hpp"
 #include "render/shading.hpp"
+#include "render/tracer/stack_depth.hpp"
 #include "render/tracer/tracer.hpp"
 
 namespace kerf::render {
@@ -26,18 +28,25 @@ namespace kerf::render {
 constexpr int kTile = 32;
 
 // Calls pixel(x, y, thread_state, traced) for every pixel of `region`, and
-// progress(fraction) after each tile, serialised.
+// progress(fraction) after each tile, serialised. A thread with less than
+// `stack_need` bytes of stack left traces nothing (stack_depth.hpp); then
+// the result is false and the image incomplete.
 template <class Pixel>
-void for_each_tile(tbb::task_arena& arena, const std::array<int, 4>& region, const CameraModel& camera,
+bool for_each_tile(tbb::task_arena& arena, const std::array<int, 4>& region, const CameraModel& camera,
                    const CsgTracer& tracer, tbb::enumerable_thread_specific<ThreadState>& states,
-                   const std::function<void(double)>& progress, Pixel&& pixel) {
+                   const std::function<void(double)>& progress, std::size_t stack_need, Pixel&& pixel) {
     const int width = region[2] - region[0], height = region[3] - region[1];
     const int tiles_x = (width + kTile - 1) / kTile, tiles_y = (height + kTile - 1) / kTile;
     const int tiles = tiles_x * tiles_y;
     std::mutex progress_mutex;
     int tiles_done = 0;
+    std::atomic<bool> short_stack{false};
     arena.execute([&] {
         tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1), [&](const tbb::blocked_range<int>& r) {
+            if (short_stack.load(std::memory_order_relaxed) || stack_left() < stack_need) {
+                short_stack = true;
+                return;
+            }
             // Denormals only slow the quartic solvers down; every thread uses
             // the same mode, so results stay thread-count independent.
             // The caller's thread may run tiles too: restore its mode after.
@@ -65,6 +74,7 @@ void for_each_tile(tbb::task_arena& arena, const std::array<int, 4>& region, con
             _MM_SET_DENORMALS_ZERO_MODE(saved_daz);
         });
     });
+    return !short_stack;
 }
 
 }  // namespace kerf::render

@@ -93,9 +93,11 @@ void CsgTracer::Impl::build_accel(Accel& accel, const std::vector<std::uint32_t>
     // per-query set-up costs about as much as tracing a background pixel.
     if (accel.items.size() <= kDirectChildren) return;
     accel.bvh = rtcNewScene(device);
+    if (!accel.bvh) embree_failed(device, "the scene");
     rtcSetSceneFlags(accel.bvh, RTC_SCENE_FLAG_ROBUST);
     rtcSetSceneBuildQuality(accel.bvh, RTC_BUILD_QUALITY_HIGH);
     RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
+    if (!geom) embree_failed(device, "the scene");
     rtcSetGeometryUserPrimitiveCount(geom, unsigned(accel.items.size()));
     rtcSetGeometryUserData(geom, &accel);
     rtcSetGeometryBoundsFunction(geom, bounds_callback, nullptr);
@@ -105,8 +107,17 @@ void CsgTracer::Impl::build_accel(Accel& accel, const std::vector<std::uint32_t>
     rtcAttachGeometry(accel.bvh, geom);
     rtcReleaseGeometry(geom);
     rtcCommitScene(accel.bvh);
-    if (RTCError e = rtcGetDeviceError(device); e != RTC_ERROR_NONE)
-        throw std::runtime_error("embree failed to build the scene (error " + std::to_string(int(e)) + ")");
+    check_embree(device, "the scene");
+}
+
+void check_embree(RTCDevice device, const char* what) {
+    if (const RTCError e = rtcGetDeviceError(device); e != RTC_ERROR_NONE) embree_failed(device, what, e);
+}
+
+void embree_failed(RTCDevice device, const char* what, RTCError e) {
+    if (e == RTC_ERROR_NONE) e = rtcGetDeviceError(device);
+    if (e == RTC_ERROR_OUT_OF_MEMORY) throw std::runtime_error(std::string("out of memory building ") + what);
+    throw std::runtime_error(std::string("embree failed to build ") + what + " (error " + std::to_string(int(e)) + ")");
 }
 
 CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_unique<Impl>(scene, use_float)) {

@@ -24,6 +24,13 @@ struct Accel {
     std::vector<std::uint32_t> always;  // unbounded nodes (half-spaces): tested for every ray
 };
 
+// Embree reports failures (out of memory above all) as null handles and
+// buffers and through the device error: these turn them into exceptions
+// (render() fails, the command exits 3 with the message). embree_failed
+// reads the device error when `e` is none.
+void check_embree(RTCDevice device, const char* what);  // after commits
+[[noreturn]] void embree_failed(RTCDevice device, const char* what, RTCError e = RTC_ERROR_NONE);
+
 struct CsgTracer::Impl {
     const csg::Scene& scene;
     bool use_float;

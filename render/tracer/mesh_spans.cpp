@@ -115,19 +115,29 @@ void CsgTracer::Impl::build_meshes() {
         if (leaf.kind != csg::PrimKind::Mesh || leaf.mesh >= scene.meshes.size() || mesh_bvhs[leaf.mesh]) continue;
         const csg::Mesh& mesh = scene.meshes[leaf.mesh];
         if (mesh.points.empty() || mesh.triangles.size() < 3) continue;  // an empty mesh is an empty solid
+        // Every handle and buffer is checked: out of memory, Embree returns
+        // null (writing through it crashed); the Impl releases what is stored.
         RTCScene ms = rtcNewScene(device);
+        if (!ms) embree_failed(device, "a mesh");
+        mesh_bvhs[leaf.mesh] = ms;
         rtcSetSceneFlags(ms, RTC_SCENE_FLAG_ROBUST);
         RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+        if (!g) embree_failed(device, "a mesh");
         auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
                                                                3 * sizeof(float), mesh.points.size()));
+        const std::size_t tris = mesh.triangles.size() / 3;
+        auto* idx = v ? static_cast<unsigned*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                                       3 * sizeof(unsigned), tris))
+                      : nullptr;
+        if (!idx) {
+            rtcReleaseGeometry(g);
+            embree_failed(device, "a mesh");
+        }
         csg::Aabb box;
         for (std::size_t i = 0; i < mesh.points.size(); ++i) {
             for (int c = 0; c < 3; ++c) v[3 * i + c] = float(mesh.points[i][c]);
             box.extend(mesh.points[i]);
         }
-        const std::size_t tris = mesh.triangles.size() / 3;
-        auto* idx = static_cast<unsigned*>(
-            rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), tris));
         for (std::size_t i = 0; i < 3 * tris; ++i)
             idx[i] = mesh.triangles[i] < mesh.points.size() ? mesh.triangles[i] : 0;  // lowering validates; stay in range
         rtcSetGeometryUserData(g, const_cast<csg::Mesh*>(&mesh));
@@ -136,11 +146,9 @@ void CsgTracer::Impl::build_meshes() {
         rtcAttachGeometry(ms, g);
         rtcReleaseGeometry(g);
         rtcCommitScene(ms);
-        mesh_bvhs[leaf.mesh] = ms;
+        check_embree(device, "a mesh");
         mesh_boxes[leaf.mesh] = box;
     }
-    if (RTCError e = rtcGetDeviceError(device); e != RTC_ERROR_NONE)
-        throw std::runtime_error("embree failed to build a mesh (error " + std::to_string(int(e)) + ")");
 }
 
 // A mesh's spans along the whole chord of its box (so a window starting

@@ -1,0 +1,25 @@
+// Identical leaves among the operands of one operation are one operand
+// (docs/lowering.md, "Duplicate leaves"): A ∪ A = A, A ∩ A = A, and
+// M − A − A = M − A. Identical means the same bits: kind, parameters,
+// transform, material and mesh (the source location does not matter).
+// 100,000 coincident spheres cost every ray through them 100,000 interval
+// tests; after this they cost one.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "lower/flat_tree.hpp"
+
+namespace kerf::lowering {
+
+// The hash of the bits that decide equality, kept in TNode::hash when the
+// leaf is made (while it is in cache: reading every leaf again cost +25%
+// of lowering a million-leaf union).
+std::uint32_t leaf_hash(const csg::Leaf& leaf);
+
+// Unlinks every leaf of the list head..tail (linked through TNode::next)
+// equal to an earlier one; returns the new count and updates head/tail.
+std::uint32_t drop_duplicate_leaves(std::vector<TNode>& nodes, const std::vector<csg::Leaf>& leaves,
+                                    std::uint32_t& head, std::uint32_t& tail, std::uint32_t count);
+
+}  // namespace kerf::lowering
