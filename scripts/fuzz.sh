@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer target over parse + evaluate + lower with clang and ASan/UBSan
+# Builds the libFuzzer target over parse + evaluate + lower + render with clang and ASan/UBSan
 # into build-fuzz/, then runs it for the given number of seconds (default 60)
 # from the seed corpus (examples/, stdlib/, tests/fuzz/corpus/, tests/scripts/).
 set -euo pipefail
@@ -12,7 +12,7 @@ trap 'rm -rf "$corpus"' EXIT
 cp examples/*.sdl stdlib/*.sdl tests/fuzz/corpus/* "$corpus"/ 2>/dev/null || true
 # The golden scripts (tests/scripts/, the fuzz regressions among them) seed it too.
 find tests/scripts -name '*.sdl' | while read -r f; do cp "$f" "$corpus/scripts_${f//\//_}"; done
-echo "fuzzing parse + evaluate + lower for ${seconds}s" >&2
+echo "fuzzing parse + evaluate + lower + render for ${seconds}s" >&2
 ./build-fuzz/tests/fuzz/kerf_fuzz_eval -max_total_time="$seconds" -max_len=4096 \
   -timeout=10 -rss_limit_mb=2048 -dict=tests/fuzz/sdl.dict -print_final_stats=1 "$corpus" 2>build-fuzz/fuzz.log \
   || { tail -50 build-fuzz/fuzz.log; echo "fuzz: FAILED (crash input saved as crash-* in $(pwd))" >&2; exit 1; }

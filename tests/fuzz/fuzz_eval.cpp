@@ -1,6 +1,9 @@
 // libFuzzer entry point: arbitrary bytes are parsed, evaluated and lowered
 // to csg::Scene (what `kerf check` does) under small limits, so each input finishes in milliseconds and a
 // runaway loop or recursion surfaces as the located limit error it must be.
+// A scene that lowers is then rendered, 8×6 pixels on one thread with the
+// default adaptive sampling, so tracer crashes are found here, not by users:
+// a render must never throw for a scene lowering accepted.
 // User-caused failures (SourceError, IoError) are the expected outcome for
 // garbage; anything else escaping — another exception type, a crash, a
 // sanitizer report, a timeout — is a finding.
@@ -13,6 +16,7 @@
 #include "grammar/source.hpp"
 #include "interpreter/interpreter.hpp"
 #include "lower/lower.hpp"
+#include "render/render.hpp"
 #include "tests/fuzz/fuzz_limits.hpp"
 
 namespace {
@@ -36,7 +40,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     try {
         // Lowering sees only graphs the evaluator accepted, so fuzzing it
         // behind evaluation finds what a real script can reach.
-        kerf::lower_to_csg(kerf::evaluate_source(std::move(file), options).graph);
+        const kerf::csg::Scene scene = kerf::lower_to_csg(kerf::evaluate_source(std::move(file), options).graph);
+        kerf::render::RenderOptions r;
+        r.width = 8;
+        r.height = 6;
+        r.threads = 1;
+        r.adaptive = true;
+        kerf::render::render(scene, r);  // any exception escapes: a finding
     } catch (const kerf::SourceError&) {
     } catch (const kerf::IoError&) {
     }
