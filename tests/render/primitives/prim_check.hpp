@@ -57,7 +57,8 @@ inline Ball bounding_ball(const Leaf& l, double size) {
         case PrimKind::Plane: return {p[3] * dvec3(p[0], p[1], p[2]), size};
         case PrimKind::Paraboloid: return {dvec3(0, 0, 0.5 * p[0]), std::hypot(0.5 * p[0], p[1])};
         case PrimKind::Hyperboloid: return {dvec3(0), std::hypot(0.5 * p[0], std::max(p[1], p[2]))};
-        case PrimKind::Mesh: break;
+        case PrimKind::Mesh:
+        case PrimKind::Prism: break;  // not generated here: their own tests
     }
     return {dvec3(0), size};
 }
@@ -344,7 +345,8 @@ inline dvec3 surface_point(const Leaf& l, RayGen& g) {
             const double z = g.uniform(-half, half), s = z / half;
             return radial * std::sqrt(p[2] * p[2] + (p[1] * p[1] - p[2] * p[2]) * s * s) + dvec3(0, 0, z);
         }
-        case PrimKind::Mesh: break;
+        case PrimKind::Mesh:
+        case PrimKind::Prism: break;  // not generated here: their own tests
     }
     return dvec3(0);
 }
@@ -409,7 +411,8 @@ inline std::vector<dvec3> special_points(const Leaf& l) {
             v.push_back({0, 0, 0.5 * p[0]});
             v.push_back({0, 0, -0.5 * p[0]});
             break;
-        case PrimKind::Mesh: break;
+        case PrimKind::Mesh:
+        case PrimKind::Prism: break;  // their own tests (test_mesh_leaves, test_prism)
     }
     return v;
 }
