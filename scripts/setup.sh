@@ -1,16 +1,22 @@
 #!/usr/bin/env bash
-# Installs exactly the Debian packages kerf's build and tests need.
-# Idempotent: does nothing when they are all present. `--bench` adds the
-# benchmark peers and plotting (POV-Ray, gnuplot).
+# Installs exactly the Debian packages kerf needs. Idempotent: does nothing
+# when they are all present. `--render`: only what building and running
+# kerf needs (the README's render command); default: also the test suite's
+# tools and peers; `--bench` adds the benchmark peers and plotting
+# (POV-Ray, gnuplot).
 set -euo pipefail
 
 packages=(
   g++ cmake make pkg-config
-  libembree-dev libtbb-dev tao-pegtl-dev libopenimageio-dev libpng-dev zlib1g-dev libglm-dev catch2
-  clang libclang-rt-14-dev   # libFuzzer + sanitizers for the fuzz test
-  libbenchmark-dev
-  openscad   # its examples are the corpus test (scripts/openscad_corpus.sh) and its echo output the reference
+  libembree-dev libtbb-dev tao-pegtl-dev libopenimageio-dev libpng-dev zlib1g-dev libglm-dev
 )
+if [[ "${1:-}" != "--render" ]]; then
+  packages+=(
+    catch2 libbenchmark-dev
+    clang libclang-rt-14-dev   # libFuzzer + sanitizers for the fuzz test
+    openscad   # its examples are the corpus test (scripts/openscad_corpus.sh) and its echo output the reference
+  )
+fi
 if [[ "${1:-}" == "--bench" ]]; then
   packages+=(povray gnuplot-nox hyperfine time)
 fi
