@@ -6,7 +6,8 @@
 // than the threshold in a display (sRGB) channel (shadow edges,
 // highlights). A candidate gets probe samples at its 4 corners; if they all
 // look like its centre it is their mean with the centre, else it gets the
-// uniform pattern of RenderOptions::aa_samples (the pixel `--spp 16` gives). The decision reads only first-pass values of full-image
+// uniform pattern of RenderOptions::aa_samples (the pixel `--spp 16`
+// gives). The decision reads only first-pass values of full-image
 // coordinates, so the thread count and a crop never change a pixel: the
 // first pass covers the region plus a one-pixel ring.
 #pragma once

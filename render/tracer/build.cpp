@@ -22,13 +22,6 @@ using csg::Op;
 
 constexpr std::uint32_t kDirectChildren = 8;  // more children than this: own BVH
 
-bool finite_box(const csg::Aabb& b) {
-    constexpr double big = 1e30;
-    for (int i = 0; i < 3; ++i)
-        if (!(std::abs(b.lo[i]) < big && std::abs(b.hi[i]) < big)) return false;
-    return true;
-}
-
 void embree_error(void*, RTCError code, const char* message) {
     std::fprintf(stderr, "kerf: embree error %d: %s\n", int(code), message ? message : "");
 }

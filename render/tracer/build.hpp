@@ -4,6 +4,7 @@
 // the build (build.cpp, mesh_spans.cpp) and the per-ray files all
 // need the layout.
 #pragma once
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -70,6 +71,14 @@ struct CsgTracer::Impl {
 void top_intersect_callback(const RTCIntersectFunctionNArguments* args);  // first_hit.cpp
 void top_occluded_callback(const RTCOccludedFunctionNArguments* args);    // shadow_rays.cpp
 void collect_callback(const RTCIntersectFunctionNArguments* args);        // node_spans.cpp
+
+// Whether a box is bounded (half-spaces and what contains them are not):
+// solids lie within csg::kRenderableRange, so anything beyond is infinite.
+inline bool finite_box(const csg::Aabb& b) {
+    for (int i = 0; i < 3; ++i)
+        if (!(std::abs(b.lo[i]) < csg::kRenderableRange && std::abs(b.hi[i]) < csg::kRenderableRange)) return false;
+    return true;
+}
 
 // Outward (CCW seen from outside) normal of a mesh triangle, not normalised.
 // Crossing orientation (mesh_spans.cpp) and hit normals (surface_normal.cpp)

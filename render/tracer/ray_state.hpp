@@ -85,8 +85,8 @@ struct RayState {
 // reciprocal of d per axis. An axis the ray is parallel to has invd = ±inf:
 // outside the slab gives ±inf at both ends (an empty range), inside
 // -inf..inf; exactly in a face plane gives NaN, which max/min ignore, so the
-// box is kept (conservative).
-inline bool slab_hit(const csg::Aabb& box, const glm::dvec3& o, const glm::dvec3& invd, double t0, double t1) {
+// box is kept (conservative). [t0, t1] is narrowed to the overlap.
+inline bool slab_clip(const csg::Aabb& box, const glm::dvec3& o, const glm::dvec3& invd, double& t0, double& t1) {
     for (int i = 0; i < 3; ++i) {
         double ta = (box.lo[i] - o[i]) * invd[i], tb = (box.hi[i] - o[i]) * invd[i];
         if (ta > tb) std::swap(ta, tb);
@@ -94,6 +94,11 @@ inline bool slab_hit(const csg::Aabb& box, const glm::dvec3& o, const glm::dvec3
         t1 = std::min(t1, tb);
     }
     return t0 <= t1;
+}
+
+// The same without the clipped window.
+inline bool slab_hit(const csg::Aabb& box, const glm::dvec3& o, const glm::dvec3& invd, double t0, double t1) {
+    return slab_clip(box, o, invd, t0, t1);
 }
 
 // Sets up `st` for a query along `ray`. Returns false, with the rest of the
@@ -106,13 +111,7 @@ inline bool slab_hit(const csg::Aabb& box, const glm::dvec3& o, const glm::dvec3
 [[gnu::always_inline]] inline bool make_state(RayState& st, const CsgTracer::Impl* impl, const TraceRay& ray, TraceScratch& scratch) {
     st.invd = 1.0 / ray.d;  // ±inf on axes the ray is parallel to
     double enter = -kInf, leave = kInf;
-    for (int i = 0; i < 3; ++i) {
-        double ta = (impl->reach.lo[i] - ray.o[i]) * st.invd[i], tb = (impl->reach.hi[i] - ray.o[i]) * st.invd[i];
-        if (ta > tb) std::swap(ta, tb);
-        enter = std::max(enter, ta);  // NaN (in a face plane, parallel) is ignored: conservative
-        leave = std::min(leave, tb);
-    }
-    if (!(enter <= leave)) return false;
+    if (!slab_clip(impl->reach, ray.o, st.invd, enter, leave)) return false;
     st.impl = impl;
     st.o = ray.o;
     st.d = ray.d;
@@ -126,7 +125,7 @@ inline bool slab_hit(const csg::Aabb& box, const glm::dvec3& o, const glm::dvec3
     st.inv_len = 1 / st.len;
     // Round-off of t also grows with the origin's own magnitude (far cameras).
     st.eps_ray = impl->eps_per_distance * glm::length(ray.o);
-    st.eps = (impl->node_eps.empty() ? 0.0 : st.eps_ray) * st.inv_len;
+    st.eps = st.eps_ray * st.inv_len;  // until enter_unit
     // (|x|+|y|+|z| >= the length: no square root for a slack.)
     st.t_pad = 1e-5 * (impl->frame_radius + std::abs(start.x) + std::abs(start.y) + std::abs(start.z)) * st.inv_len;
     st.scratch = &scratch;

@@ -30,13 +30,6 @@ struct Factors {
 constexpr Factors kDouble{1e-9, 1e-13, 1e-13};
 constexpr Factors kFloat{2e-5, 2e-5, 1e-6};
 
-bool finite(const csg::Aabb& b) {
-    for (int i = 0; i < 3; ++i)
-        if (!(std::abs(b.lo[i]) < csg::kRenderableRange * 2 && std::abs(b.hi[i]) < csg::kRenderableRange * 2))
-            return false;
-    return true;
-}
-
 struct Extent {
     double size = 0, magnitude = 0;
     void add(const Extent& e) {
@@ -48,7 +41,7 @@ struct Extent {
 Extent leaf_extent(const csg::Leaf& leaf) {
     Extent e;
     e.magnitude = glm::length(leaf.world_from_object.offset);
-    if (finite(leaf.bounds)) {
+    if (finite_box(leaf.bounds)) {
         e.size = 0.5 * glm::length(leaf.bounds.hi - leaf.bounds.lo);
         e.magnitude = std::max({e.magnitude, glm::length(leaf.bounds.lo), glm::length(leaf.bounds.hi)});
     } else if (leaf.kind == csg::PrimKind::Plane) {
@@ -71,7 +64,7 @@ void CsgTracer::Impl::local_tolerances(const std::vector<std::uint32_t>& units) 
     for (std::uint32_t unit : units) {
         // The unit's subtree, iteratively (trees may be deep).
         Extent ext;
-        if (finite(scene.nodes[unit].bounds)) {
+        if (finite_box(scene.nodes[unit].bounds)) {
             const csg::Aabb& b = scene.nodes[unit].bounds;
             ext.size = 0.5 * glm::length(b.hi - b.lo);
         }
@@ -104,7 +97,7 @@ void CsgTracer::Impl::local_tolerances(const std::vector<std::uint32_t>& units) 
 
     csg::Aabb bounded;
     for (std::uint32_t unit : units)
-        if (finite(scene.nodes[unit].bounds)) bounded.extend(scene.nodes[unit].bounds);
+        if (finite_box(scene.nodes[unit].bounds)) bounded.extend(scene.nodes[unit].bounds);
     if (bounded.empty()) {
         frame = glm::dvec3(0.0);
         frame_radius = std::max(1.0, glm::length(scene.camera.position));

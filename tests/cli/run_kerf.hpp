@@ -37,12 +37,13 @@ inline std::string slurp(const std::filesystem::path& path) {
 }
 
 // `args` is appended to the command line verbatim (quote paths yourself).
-// `prefix` runs before kerf in the same shell (see run_kerf_bounded).
+// `prefix` runs before kerf in the same shell (see run_kerf_bounded);
+// `input` is its standard input.
 inline KerfRun run_kerf(const std::string& args, const std::filesystem::path& dir,
-                        const std::string& prefix = "") {
+                        const std::string& prefix = "", const std::string& input = "/dev/null") {
     auto out = dir / "stdout.txt", err = dir / "stderr.txt";
     std::string cmd = prefix + std::string(KERF_BINARY_DIR) + "/kerf " + args + " >'" + out.string() +
-                      "' 2>'" + err.string() + "' </dev/null";
+                      "' 2>'" + err.string() + "' <'" + input + "'";
     int raw = std::system(cmd.c_str());
     KerfRun r;
     r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);

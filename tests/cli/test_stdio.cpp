@@ -7,17 +7,9 @@
 
 namespace {
 
-// kerf with `input` on standard input; standard output to `out`.
+// kerf with the file `input` on standard input.
 KerfRun run_piped(const std::filesystem::path& input, const std::string& args, const std::filesystem::path& dir) {
-    const auto out = dir / "stdout.bin", err = dir / "stderr.txt";
-    const std::string cmd = std::string(KERF_BINARY_DIR) + "/kerf " + args + " <'" + input.string() + "' >'" +
-                            out.string() + "' 2>'" + err.string() + "'";
-    const int raw = std::system(cmd.c_str());
-    KerfRun r;
-    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
-    r.out = slurp(out);
-    r.err = slurp(err);
-    return r;
+    return run_kerf(args, dir, "", input.string());
 }
 
 }  // namespace
