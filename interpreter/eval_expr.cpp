@@ -190,7 +190,7 @@ Value Evaluator::call_function(const ast::Expr& e, Scope& s) {
 }
 
 Value Evaluator::call_builtin(const ast::Expr& e, Scope& s) {
-    BuiltinFn fn = find_builtin(e.text);
+    const Builtin* fn = find_builtin(e.text);
     if (!fn) {
         if (!lenient_) throw SourceError(e.loc, "undefined function '" + e.text + "'");
         warn(e.loc, "Ignoring unknown function '" + e.text + "'");
@@ -206,18 +206,32 @@ Value Evaluator::call_builtin(const ast::Expr& e, Scope& s) {
     }
     for (std::size_t i = 0; i < e.args.size(); ++i) {
         const ast::Binding& a = e.args[i];
-        // OpenSCAD takes a built-in's arguments in order, whatever their names.
-        if (!a.name.empty() && !lenient_) throw SourceError(a.loc, "'" + e.text + "' takes no named arguments");
+        if (!a.name.empty()) check_builtin_name(*fn, a, i, e.args.size());
         argv[i] = a.value ? eval(*a.value, s) : Value();
     }
     BuiltinContext ctx{e.loc, opt_.limits.list_elements};
-    if (!lenient_) return fn(std::span<const Value>(argv, e.args.size()), ctx);
+    if (!lenient_) return fn->fn(std::span<const Value>(argv, e.args.size()), ctx);
     try {
-        return fn(std::span<const Value>(argv, e.args.size()), ctx);
+        return fn->fn(std::span<const Value>(argv, e.args.size()), ctx);
     } catch (const SoftError& err) {
         warn(err.diagnostic().loc, err.diagnostic().message);
         return Value();
     }
+}
+
+// OpenSCAD takes a built-in's arguments in order, whatever their names, so
+// a name is only documentation: `pow(base = 2, exponent = 3)` is accepted,
+// a name that is not the parameter at its position is an error (a warning
+// in the OpenSCAD dialect, where the argument is still taken in order, as
+// OpenSCAD does) rather than silently meaning something else.
+void Evaluator::check_builtin_name(const Builtin& fn, const ast::Binding& a, std::size_t i, std::size_t count) {
+    std::string_view param = builtin_param(fn, i, count);
+    if (a.name == param) return;
+    std::string message = param.empty() ? "'" + std::string(fn.name) + "' takes no argument named '" + a.name + "'"
+                                        : "'" + std::string(fn.name) + "': argument " + std::to_string(i + 1) +
+                                              " is '" + std::string(param) + "', not '" + a.name + "'";
+    if (!lenient_) throw SourceError(a.loc, message + " (built-in arguments are taken in order)");
+    warn(a.loc, message + "; taken in order, as OpenSCAD does");
 }
 
 Value Evaluator::lenient_operator(const ast::Expr& e, const Value& a, const Value* b) {

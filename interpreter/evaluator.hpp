@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "grammar/ast.hpp"
+#include "interpreter/builtins/builtins.hpp"
 #include "interpreter/interpreter.hpp"
 #include "interpreter/graph_builder.hpp"
 #include "interpreter/loader.hpp"
@@ -94,6 +95,7 @@ private:
     void push_element(ValueList& out, Value v, const SourceLoc& loc);
     void do_echo(const std::vector<ast::Binding>& args, Scope& s);
     Value call_builtin(const ast::Expr& e, Scope& s);
+    void check_builtin_name(const Builtin& fn, const ast::Binding& a, std::size_t i, std::size_t count);
     // The OpenSCAD dialect's answer to an operator that threw a SoftError.
     Value lenient_operator(const ast::Expr& e, const Value& a, const Value* b);
     void do_assert(const std::vector<ast::Binding>& args, Scope& s, const SourceLoc& loc);

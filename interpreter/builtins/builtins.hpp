@@ -1,9 +1,11 @@
 // Built-in functions of docs/spec.md §2 (sin cos ... str is_*): the evaluator looks
 // a callee up here when no user function of that name is in scope. Each
-// builtin receives its already-evaluated positional arguments (named
-// arguments to a builtin are rejected by the evaluator) and reports user
-// errors as kerf::SourceError at ctx.loc, e.g. "sqrt: expected a number,
-// got string".
+// builtin is declared once, with its parameter names, and receives its
+// already-evaluated arguments in call order (OpenSCAD takes a built-in's
+// arguments in order, whatever their names: the names only document the
+// call, and the evaluator checks them against the parameter list). Errors
+// are kerf::SourceError at ctx.loc, e.g. "sqrt: expected a number, got
+// string".
 #pragma once
 #include <cstdint>
 #include <span>
@@ -23,7 +25,21 @@ struct BuiltinContext {
 
 using BuiltinFn = Value (*)(std::span<const Value> args, const BuiltinContext& ctx);
 
+struct Builtin {
+    std::string_view name;
+    // The parameter names in call order, separated by spaces, as OpenSCAD's
+    // manual names them ("base exponent"); "..." for any number of unnamed
+    // arguments; alternatives for different argument counts separated by
+    // " | " ("x | base x").
+    std::string_view params;
+    BuiltinFn fn;
+};
+
 // The builtin called `name`, or null when there is none.
-BuiltinFn find_builtin(std::string_view name);
+const Builtin* find_builtin(std::string_view name);
+
+// The name of parameter `i` of `b` when called with `count` arguments, or
+// empty when that position has no name (variadic, or too many arguments).
+std::string_view builtin_param(const Builtin& b, std::size_t i, std::size_t count);
 
 }  // namespace kerf

@@ -44,8 +44,8 @@ Value concat_fn(std::span<const Value> args, const BuiltinContext& ctx) {
 }
 
 const Entry kEntries[] = {
-    {"len", len_fn},
-    {"concat", concat_fn},
+    {"len", "value", len_fn},
+    {"concat", "...", concat_fn},
 };
 
 }  // namespace

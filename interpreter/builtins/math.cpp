@@ -66,8 +66,8 @@ double floor_(double x) { return std::floor(x); }
 double ceil_(double x) { return std::ceil(x); }
 double round_(double x) { return std::round(x); }  // half away from zero
 
-#define KERF_UNARY(name, f) \
-    Entry { #name, [](std::span<const Value> a, const BuiltinContext& c) { return unary<f>(a, c, #name); } }
+#define KERF_UNARY(name, param, f) \
+    Entry { #name, param, [](std::span<const Value> a, const BuiltinContext& c) { return unary<f>(a, c, #name); } }
 
 Value atan2_fn(std::span<const Value> args, const BuiltinContext& ctx) {
     expect_count(args, ctx, "atan2", 2);
@@ -149,27 +149,27 @@ Value cross_fn(std::span<const Value> args, const BuiltinContext& ctx) {
 }
 
 const Entry kEntries[] = {
-    KERF_UNARY(sin, sin_deg),
-    KERF_UNARY(cos, cos_deg),
-    KERF_UNARY(tan, tan_deg),
-    KERF_UNARY(asin, asin_deg),
-    KERF_UNARY(acos, acos_deg),
-    KERF_UNARY(atan, atan_deg),
-    {"atan2", atan2_fn},
-    KERF_UNARY(sqrt, sqrt_),
-    {"pow", pow_fn},
-    KERF_UNARY(exp, exp_),
-    KERF_UNARY(ln, ln_),
-    {"log", log_fn},
-    KERF_UNARY(abs, abs_),
-    KERF_UNARY(sign, sign_),
-    {"min", extremum<true>},
-    {"max", extremum<false>},
-    KERF_UNARY(floor, floor_),
-    KERF_UNARY(ceil, ceil_),
-    KERF_UNARY(round, round_),
-    {"norm", norm_fn},
-    {"cross", cross_fn},
+    KERF_UNARY(sin, "degrees", sin_deg),
+    KERF_UNARY(cos, "degrees", cos_deg),
+    KERF_UNARY(tan, "degrees", tan_deg),
+    KERF_UNARY(asin, "x", asin_deg),
+    KERF_UNARY(acos, "x", acos_deg),
+    KERF_UNARY(atan, "x", atan_deg),
+    {"atan2", "y x", atan2_fn},
+    KERF_UNARY(sqrt, "x", sqrt_),
+    {"pow", "base exponent", pow_fn},
+    KERF_UNARY(exp, "x", exp_),
+    KERF_UNARY(ln, "x", ln_),
+    {"log", "x | base x", log_fn},
+    KERF_UNARY(abs, "x", abs_),
+    KERF_UNARY(sign, "x", sign_),
+    {"min", "...", extremum<true>},
+    {"max", "...", extremum<false>},
+    KERF_UNARY(floor, "x", floor_),
+    KERF_UNARY(ceil, "x", ceil_),
+    KERF_UNARY(round, "x", round_),
+    {"norm", "v", norm_fn},
+    {"cross", "x y", cross_fn},
 };
 
 }  // namespace

@@ -251,8 +251,14 @@ Value is_function_fn(std::span<const Value> args, const BuiltinContext& ctx) {
 }
 
 const Entry kEntries[] = {
-    {"version", version_fn}, {"version_num", version_num_fn}, {"rands", rands_fn}, {"lookup", lookup_fn},
-    {"search", search_fn},   {"chr", chr_fn},                 {"ord", ord_fn},     {"is_function", is_function_fn},
+    {"version", "", version_fn},
+    {"version_num", "", version_num_fn},
+    {"rands", "min_value max_value value_count seed_value", rands_fn},
+    {"lookup", "key table", lookup_fn},
+    {"search", "match_value string_or_vector num_returns_per_match index_col_num", search_fn},
+    {"chr", "...", chr_fn},
+    {"ord", "string", ord_fn},
+    {"is_function", "x", is_function_fn},
 };
 
 }  // namespace

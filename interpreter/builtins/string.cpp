@@ -69,10 +69,10 @@ bool string_test(const Value& v) { return v.is_string(); }
 bool list_test(const Value& v) { return v.is_list(); }  // a range is not a list (OpenSCAD)
 
 #define KERF_TYPE_TEST(name, f) \
-    Entry { #name, [](std::span<const Value> a, const BuiltinContext& c) { return type_test<f>(a, c, #name); } }
+    Entry { #name, "x", [](std::span<const Value> a, const BuiltinContext& c) { return type_test<f>(a, c, #name); } }
 
 const Entry kEntries[] = {
-    {"str", str_fn},
+    {"str", "...", str_fn},
     KERF_TYPE_TEST(is_undef, undef_test),
     KERF_TYPE_TEST(is_num, num_test),
     KERF_TYPE_TEST(is_bool, bool_test),

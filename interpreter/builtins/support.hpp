@@ -12,10 +12,7 @@
 
 namespace kerf::builtin {
 
-struct Entry {
-    std::string_view name;
-    BuiltinFn fn;
-};
+using Entry = Builtin;
 
 // The tables of each group (defined in builtins_math/list/string.cpp).
 std::span<const Entry> math_entries();

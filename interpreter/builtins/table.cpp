@@ -41,7 +41,7 @@ double number_arg(std::span<const Value> args, std::size_t i, const BuiltinConte
 
 }  // namespace builtin
 
-BuiltinFn find_builtin(std::string_view name) {
+const Builtin* find_builtin(std::string_view name) {
     static const std::vector<builtin::Entry> table = [] {
         std::vector<builtin::Entry> all;
         for (auto group : {builtin::math_entries(), builtin::list_entries(), builtin::string_entries(),
@@ -52,7 +52,27 @@ BuiltinFn find_builtin(std::string_view name) {
     }();
     auto it = std::lower_bound(table.begin(), table.end(), name,
                                [](const builtin::Entry& e, std::string_view n) { return e.name < n; });
-    return it != table.end() && it->name == name ? it->fn : nullptr;
+    return it != table.end() && it->name == name ? &*it : nullptr;
+}
+
+std::string_view builtin_param(const Builtin& b, std::size_t i, std::size_t count) {
+    // The alternative written for `count` arguments, else the last (longest).
+    std::string_view list = b.params;
+    for (std::string_view rest = b.params; !rest.empty();) {
+        std::size_t bar = rest.find(" | ");
+        std::string_view alt = rest.substr(0, bar);
+        list = alt;
+        if (static_cast<std::size_t>(std::count(alt.begin(), alt.end(), ' ')) + !alt.empty() == count) break;
+        rest = bar == std::string_view::npos ? std::string_view() : rest.substr(bar + 3);
+    }
+    for (std::size_t k = 0; !list.empty(); ++k) {
+        std::size_t sp = list.find(' ');
+        std::string_view word = list.substr(0, sp);
+        if (word == "...") return {};
+        if (k == i) return word;
+        list = sp == std::string_view::npos ? std::string_view() : list.substr(sp + 1);
+    }
+    return {};
 }
 
 }  // namespace kerf

@@ -139,9 +139,21 @@ TEST_CASE("echo formats values like OpenSCAD", "[expr]") {
     CHECK(lines[1] == "ECHO: ");
 }
 
-TEST_CASE("builtin functions are reachable and reject named arguments", "[expr]") {
+TEST_CASE("builtin functions take names that match their parameters, in order", "[expr]") {
     CHECK(value_of("max(1, 5, 2)") == "5");
+    CHECK(value_of("pow(base = 2, exponent = 3)") == "8");
+    CHECK(value_of("pow(2, exponent = 3)") == "8");
+    CHECK(value_of("log(x = 100)") == "2");
+    CHECK(value_of("log(base = 2, x = 8)") == "3");
+    CHECK(value_of("lookup(key = 1, table = [[0, 0], [2, 4]])") == "2");
     CHECK(value_of("len([1, 2, 3])") == "3");
-    CHECK(error_of("x = sin(a = 1);") == "test.sdl:1:9: error: 'sin' takes no named arguments");
+    CHECK(error_of("x = sin(a = 1);") ==
+          "test.sdl:1:9: error: 'sin': argument 1 is 'degrees', not 'a' (built-in arguments are taken in order)");
+    CHECK(error_of("x = pow(exponent = 2, base = 3);") ==
+          "test.sdl:1:9: error: 'pow': argument 1 is 'base', not 'exponent' (built-in arguments are taken in order)");
+    CHECK(error_of("x = min(a = 1);") ==
+          "test.sdl:1:9: error: 'min' takes no argument named 'a' (built-in arguments are taken in order)");
+    CHECK(error_of("x = atan2(y = 1, x = 0, z = 2);") ==
+          "test.sdl:1:25: error: 'atan2' takes no argument named 'z' (built-in arguments are taken in order)");
     CHECK(error_of("x = nosuch(1);") == "test.sdl:1:5: error: undefined function 'nosuch'");
 }

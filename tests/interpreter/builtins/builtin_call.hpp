@@ -11,13 +11,13 @@
 namespace kerf::test {
 
 inline Value call_builtin(const std::string& name, std::vector<Value> args, std::uint64_t max_list = 1000) {
-    BuiltinFn fn = find_builtin(name);
-    if (!fn) throw std::logic_error("no builtin " + name);
+    const Builtin* b = find_builtin(name);
+    if (!b) throw std::logic_error("no builtin " + name);
     SourceLoc loc;
     loc.line = 7;
     loc.col = 3;
     BuiltinContext ctx{loc, max_list};
-    return fn(args, ctx);
+    return b->fn(args, ctx);
 }
 
 inline Value str_v(const char* s) { return Value::string(s); }
