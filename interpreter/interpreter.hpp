@@ -36,6 +36,9 @@ struct EvalOptions {
     std::string stdlib_dir;                  // searched last; empty = KERF_STDLIB_DIR
     std::vector<std::pair<std::string, std::string>> defines;  // -D name=value (value is an expression)
     std::function<void(const std::string&)> echo;  // receives "ECHO: ..." lines; default: stderr
+    // --curve-tolerance: how far a flattened curve (a glyph's Béziers) may
+    // be from the true one, as a fraction of the shape's size.
+    double curve_tolerance = 1e-4;
 };
 
 // A -D value that does not parse, evaluate or name a top-level binding: a

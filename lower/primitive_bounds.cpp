@@ -50,6 +50,7 @@ double primitive_support(csg::PrimKind kind, const double p[6], const glm::dvec3
             return std::max(p[1], p[2]) * len_xy(w) + 0.5 * p[0] * std::abs(w.z);
         case csg::PrimKind::Plane:
         case csg::PrimKind::Mesh:
+        case csg::PrimKind::Prism:  // bounded from its own 2D data (leaf_placement)
             break;
     }
     return std::numeric_limits<double>::infinity();

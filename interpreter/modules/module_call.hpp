@@ -32,6 +32,7 @@ public:
     ModuleState& state();
     Loader& files();
     const EvalLimits& limits() const;
+    double curve_tolerance() const;  // EvalOptions::curve_tolerance
     // A primitive node at the statement, counted against the limit.
     void add_primitive(csg::PrimKind kind, std::initializer_list<double> p, std::uint32_t index = 0);
     // A warning at the statement (Evaluator::warn).
@@ -64,6 +65,7 @@ std::span<const ModuleEntry> transform_modules();
 std::span<const ModuleEntry> appearance_modules();
 std::span<const ModuleEntry> setup_modules();
 std::span<const ModuleEntry> shape2d_modules();  // shapes2d.cpp
+std::span<const ModuleEntry> text_modules();     // text.cpp
 
 // The built-in module called `name`, or null.
 const ModuleEntry* find_module(std::string_view name);

@@ -49,7 +49,8 @@ Args match_args(Evaluator& ev, const ModuleEntry& e, const ast::Stmt& st, Scope&
 const ModuleEntry* find_module(std::string_view name) {
     static const std::vector<const ModuleEntry*> table = [] {
         std::vector<const ModuleEntry*> all;
-        for (auto group : {solid_modules(), transform_modules(), appearance_modules(), setup_modules(), shape2d_modules()})
+        for (auto group : {solid_modules(), transform_modules(), appearance_modules(), setup_modules(), shape2d_modules(),
+                           text_modules()})
             for (const ModuleEntry& e : group) all.push_back(&e);
         std::sort(all.begin(), all.end(),
                   [](const ModuleEntry* a, const ModuleEntry* b) { return std::string_view(a->name) < b->name; });
@@ -106,6 +107,7 @@ GraphBuilder& ModuleCall::graph() { return ev_.out_; }
 ModuleState& ModuleCall::state() { return ev_.modules_; }
 Loader& ModuleCall::files() { return ev_.files_; }
 const EvalLimits& ModuleCall::limits() const { return ev_.opt_.limits; }
+double ModuleCall::curve_tolerance() const { return ev_.opt_.curve_tolerance; }
 
 void ModuleCall::add_primitive(csg::PrimKind kind, std::initializer_list<double> p, std::uint32_t index) {
     const std::uint64_t limit = ev_.opt_.limits.primitives;
