@@ -12,6 +12,8 @@ trap 'rm -rf "$corpus"' EXIT
 cp examples/*.sdl stdlib/*.sdl tests/fuzz/corpus/* "$corpus"/ 2>/dev/null || true
 # The golden scripts (tests/scripts/, the fuzz regressions among them) seed it too.
 find tests/scripts -name '*.sdl' | while read -r f; do cp "$f" "$corpus/scripts_${f//\//_}"; done
+# fontconfig's process-lifetime state is not a leak (tests/fuzz/lsan.supp).
+export LSAN_OPTIONS="suppressions=$(pwd)/tests/fuzz/lsan.supp${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
 echo "fuzzing parse + evaluate + lower + render for ${seconds}s" >&2
 ./build-fuzz/tests/fuzz/kerf_fuzz_eval -max_total_time="$seconds" -max_len=4096 \
   -timeout=10 -rss_limit_mb=2048 -dict=tests/fuzz/sdl.dict -print_final_stats=1 "$corpus" 2>build-fuzz/fuzz.log \

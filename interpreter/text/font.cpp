@@ -78,15 +78,15 @@ Font find_font(std::string_view spec, bool fallback, std::string* substituted) {
     FcPatternGetInteger(match.get(), FC_INDEX, 0, &index);
     bool same = false;
     FcChar8* got = nullptr;
-    std::string got_family;
-    for (int i = 0; FcPatternGetString(match.get(), FC_FAMILY, i, &got) == FcResultMatch; ++i) {
-        if (i == 0) got_family = reinterpret_cast<const char*>(got);
+    for (int i = 0; FcPatternGetString(match.get(), FC_FAMILY, i, &got) == FcResultMatch; ++i)
         same = same || same_name(family, reinterpret_cast<const char*>(got));
-    }
     if (!same) {
         std::string hint = spec.empty() ? " (install Debian's fonts-liberation2)" : " (fc-list lists the installed fonts)";
-        if (!fallback) throw FontError("font '" + family + "' is not installed" + hint);
-        if (substituted) *substituted = got_family;
+        if (!fallback || spec.empty()) throw FontError("font '" + family + "' is not installed" + hint);
+        // The default font, not fontconfig's best guess, so
+        // that the substitute is the same on every machine.
+        if (substituted) *substituted = std::string(kDefaultFont);
+        return find_font("", false, nullptr);
     }
     return open_face(reinterpret_cast<const char*>(file), index);
 }

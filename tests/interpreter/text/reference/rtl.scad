@@ -1,0 +1,1 @@
+text("ab", direction = "rtl", halign = "right");

@@ -1,0 +1,1 @@
+text("Ab&", size = 5, font = "Liberation Serif:style=Bold");

@@ -1,0 +1,1 @@
+text("LL", spacing = 2);

@@ -1,0 +1,1 @@
+text("LL", direction = "ttb");

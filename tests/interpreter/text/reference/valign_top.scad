@@ -1,0 +1,1 @@
+text("Lg", valign = "top");
