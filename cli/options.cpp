@@ -18,12 +18,16 @@ Int parse_int(const std::string& flag, const std::string& text, Int lo, Int hi) 
     return v;
 }
 
-double parse_fraction(const std::string& flag, const std::string& text) {
+double parse_real(const std::string& flag, const std::string& text, double lo, double hi, const char* range) {
     double v = 0;
     auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-    if (ec != std::errc() || p != text.data() + text.size() || !(v >= 0 && v <= 1))
-        throw UsageError(flag + " expects a number from 0 to 1, got '" + text + "'");
+    if (ec != std::errc() || p != text.data() + text.size() || !(v >= lo && v <= hi))
+        throw UsageError(flag + " expects a number " + range + ", got '" + text + "'");
     return v;
+}
+
+double parse_fraction(const std::string& flag, const std::string& text) {
+    return parse_real(flag, text, 0, 1, "from 0 to 1");
 }
 
 std::array<int, 4> parse_crop(const std::string& text) {
@@ -56,6 +60,7 @@ const char* usage_text() {
            "                        [--preview] [--aov depth|normal|hits] [--stats]\n"
            "                        [-D name=value ...] [-I dir ...] [--crop x0,y0,x1,y1]\n"
            "                        [--seed N] [--precision double|float] [--base DIR]\n"
+           "                        [--curve-tolerance 1e-4]  (text(): flattening, a fraction of size)\n"
            "    SCENE '-' reads standard input (includes resolve against --base DIR or the\n"
            "    working folder); -o - writes the PNG to standard output\n"
            "  kerf check  SCENE.sdl   parse, evaluate and lower; print diagnostics only\n"
@@ -131,6 +136,8 @@ Options parse_options(const std::vector<std::string>& args) {
         } else if (a == "-D") parse_define(value(), o);
         else if (a.size() > 2 && a.rfind("-D", 0) == 0) parse_define(a.substr(2), o);
         else if (a == "--base") o.base = value();
+        else if (a == "--curve-tolerance")
+            o.eval.curve_tolerance = parse_real(a, value(), 1e-9, 0.1, "from 1e-9 to 0.1");
         else if (a == "-I") o.eval.include_dirs.push_back(value());
         else if (a.size() > 2 && a.rfind("-I", 0) == 0) o.eval.include_dirs.push_back(a.substr(2));
         else if (a == "--max-call-depth") o.eval.limits.call_depth = parse_int<std::uint64_t>(a, value(), 1, 1'000'000);
