@@ -35,6 +35,34 @@ void same_depth(const render::Image& got, const render::Image& want, double rel)
     test::same_depth(got, want, rel, 300);
 }
 
+// Rays from above at random targets near the origin: a ray disagrees when
+// a sample before its hit is inside the scene or the point just after it
+// is not (csg::contains, no ray code). Returns the disagreeing count.
+int disagreeing_rays(const csg::Scene& s, std::mt19937_64& rng, int n, double spread, int* hits = nullptr) {
+    std::uniform_real_distribution<double> u(-1, 1);
+    int bad = 0;
+    for (bool use_float : {false, true}) {
+        render::CsgTracer tracer(s, use_float);
+        render::TraceScratch scratch;
+        for (int r = 0; r < n; ++r) {
+            const glm::dvec3 o = glm::dvec3(u(rng), u(rng), u(rng)) * 3.0 * spread + glm::dvec3(0, 0, 4 * spread);
+            const glm::dvec3 target(spread * u(rng), spread * u(rng), 0.3 * u(rng));
+            const glm::dvec3 d = glm::normalize(target - o);
+            render::TraceRay ray{o, d, 0, 20 * spread};
+            render::TraceHit hit;
+            const bool got = tracer.intersect(ray, hit, scratch);
+            if (hits) *hits += got;
+            const double tol = (use_float ? 1e-4 : 1e-7) * spread;
+            bool ok = true;
+            const double end = got ? hit.t - tol : 20 * spread;
+            for (int k = 0; k < 200 && ok; ++k) ok = !csg::contains(s, o + (end * k / 200.0) * d);
+            if (got) ok = ok && csg::contains(s, o + (hit.t + tol) * d);
+            bad += !ok;
+        }
+    }
+    return bad;
+}
+
 }  // namespace
 
 TEST_CASE("an extruded circle renders as the cylinder it is") {
@@ -88,32 +116,27 @@ TEST_CASE("random extruded 2D booleans agree with point membership along rays") 
         text += "}\n";
         INFO(text);
         const csg::Scene s = scene_of(text);
-        for (bool use_float : {false, true}) {
-            render::CsgTracer tracer(s, use_float);
-            render::TraceScratch scratch;
-            for (int r = 0; r < 400; ++r) {
-                const glm::dvec3 o = glm::dvec3(u(rng), u(rng), u(rng)) * 3.0 + glm::dvec3(0, 0, 4);
-                const glm::dvec3 target(u(rng), u(rng), 0.3 * u(rng));
-                const glm::dvec3 d = glm::normalize(target - o);
-                render::TraceRay ray{o, d, 0, 20};
-                render::TraceHit hit;
-                const bool got = tracer.intersect(ray, hit, scratch);
-                const double tol = use_float ? 1e-4 : 1e-7;
-                bool ok = true;
-                const double end = got ? hit.t - tol : 20;
-                for (int k = 0; k < 200 && ok; ++k) {
-                    const double t = end * k / 200.0;
-                    ok = !csg::contains(s, o + t * d);
-                }
-                if (got) ok = ok && csg::contains(s, o + (hit.t + tol) * d);
-                ++rays;
-                bad += !ok;
-            }
-        }
+        bad += disagreeing_rays(s, rng, 400, 1);
+        rays += 800;
     }
     INFO(bad << " of " << rays << " rays disagree");
     // A ray grazing an edge within tol can disagree; they are rare.
     CHECK(bad <= rays / 100);
+}
+
+TEST_CASE("extruded text agrees with point membership along rays") {
+    // Glyphs with holes, curves and a descender, engraved into a plate and
+    // raised, at size 10 (0.001 tolerance: hundreds of edges per glyph).
+    std::mt19937_64 rng(15);
+    const csg::Scene s = scene_of(
+        "difference() { translate([-12, -8, -1]) cube([24, 16, 1.5]);\n"
+        "  linear_extrude(height = 3, center = true) text(\"B&g\", halign = \"center\", valign = \"center\"); }\n"
+        "translate([0, 0, 1]) linear_extrude(height = 1) text(\"Ø8\", size = 4, halign = \"center\");\n");
+    int hits = 0;
+    const int bad = disagreeing_rays(s, rng, 1500, 10, &hits);
+    INFO(bad << " of 3000 rays disagree, " << hits << " hit");
+    CHECK(hits > 1000);
+    CHECK(bad <= 30);
 }
 
 TEST_CASE("2D rules as OpenSCAD 2021.01 applies them") {
