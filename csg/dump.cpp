@@ -175,11 +175,23 @@ void dump(const Scene& s, std::string& out, Flush&& flush) {
             out += "light distant";
             field(out, "direction", l.direction);
         } else {
-            out += "light point";
+            out += l.spot ? "light spot" : "light point";
             field(out, "position", l.position);
+            if (l.spot) {
+                field(out, "direction", l.direction);
+                field(out, "angle", l.spot_angle);
+                field(out, "falloff", l.spot_falloff);
+            }
         }
         field(out, "color", l.color);
         field(out, "intensity", l.intensity);
+        // Only what differs from a plain light, so older dumps still read the same.
+        if (l.radius > 0) {
+            field(out, "radius", l.radius);
+            field(out, "samples", double(l.samples));
+        }
+        if (!l.shadows) out += " shadows=false";
+        if (l.inverse_square) out += " attenuation=inverse_square";
         out += '\n';
     }
     out += "background";

@@ -129,9 +129,19 @@ struct Camera {
 struct Light {
     bool directional = false;
     glm::dvec3 position{0, 0, 0};
-    glm::dvec3 direction{0, 0, -1};  // direction the light travels (distant light)
+    glm::dvec3 direction{0, 0, -1};  // direction the light travels (distant light; a spot's axis)
     glm::dvec3 color{1, 1, 1};
     double intensity = 1;
+    // A spherical light (point lights and spots): radius > 0 casts soft
+    // shadows, estimated with `samples` shadow rays per shading point.
+    double radius = 0;
+    std::uint32_t samples = 16;
+    bool shadows = true;         // false: the light reaches every point facing it
+    bool inverse_square = false; // intensity is at distance 1, falling as 1/d²
+    // A spot: full intensity within `spot_angle` (degrees, from the axis
+    // `direction`), fading smoothly to none at spot_angle + spot_falloff.
+    bool spot = false;
+    double spot_angle = 30, spot_falloff = 5;
 };
 
 struct SourceRef {

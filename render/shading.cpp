@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "render/lights.hpp"
+
 namespace kerf::render {
 
 namespace {
@@ -26,7 +28,9 @@ double highlight(double x, double s) {
 }  // namespace
 
 Shader::Shader(const csg::Scene& scene, const CsgTracer& tracer, int max_reflect_depth)
-    : scene_(scene), tracer_(tracer), max_depth_(max_reflect_depth) {}
+    : scene_(scene), tracer_(tracer), max_depth_(max_reflect_depth) {
+    for (const csg::Light& l : scene.lights) patterns_.emplace_back(int(l.samples));
+}
 
 glm::dvec3 Shader::radiance(const TraceRay& ray, int depth, ThreadState& ts, std::uint32_t* surface) const {
     TraceHit hit;
@@ -46,25 +50,55 @@ glm::dvec3 Shader::radiance(const TraceRay& ray, int depth, ThreadState& ts, std
     const glm::dvec3 view = -glm::normalize(ray.d);
 
     glm::dvec3 c = kAmbient * albedo;
-    for (const csg::Light& light : scene_.lights) {
+    // The surface's response to light arriving from unit direction l.
+    auto respond = [&](const glm::dvec3& l, double ndl) {
+        const glm::dvec3 h = glm::normalize(l + view);
+        return m.diffuse * ndl * albedo + m.specular * highlight(std::max(0.0, glm::dot(n, h)), m.shininess);
+    };
+    for (std::size_t li = 0; li < scene_.lights.size(); ++li) {
+        const csg::Light& light = scene_.lights[li];
         glm::dvec3 l;
-        double dist;
+        double dist, k;
         if (light.directional) {
             l = -glm::normalize(light.direction);
             dist = std::numeric_limits<double>::infinity();
+            k = light.intensity;
         } else {
             l = light.position - origin;
             dist = glm::length(l);
             if (dist == 0) continue;
             l /= dist;
+            k = arriving(light, -l, dist);
         }
-        const double ndl = glm::dot(n, l);
-        if (ndl <= 0) continue;
-        ++ts.rays.shadow;
-        if (tracer_.occluded(TraceRay{origin, l, 0, dist}, ts.scratch)) continue;
-        const glm::dvec3 h = glm::normalize(l + view);
-        const double spec = highlight(std::max(0.0, glm::dot(n, h)), m.shininess);
-        c += light.color * light.intensity * (m.diffuse * ndl * albedo + m.specular * spec);
+        if (k <= 0) continue;
+        if (light.radius <= 0 || dist <= light.radius) {
+            const double ndl = glm::dot(n, l);
+            if (ndl <= 0) continue;
+            if (light.shadows) {
+                ++ts.rays.shadow;
+                if (tracer_.occluded(TraceRay{origin, l, 0, dist}, ts.scratch)) continue;
+            }
+            c += light.color * k * respond(l, ndl);
+            continue;
+        }
+        // A sphere: the mean response over stratified directions into the
+        // cone it fills, each with its own shadow ray (soft shadows).
+        const ConeBasis cone(l, dist, light.radius);
+        const SamplePattern& pattern = patterns_[li];
+        std::uint64_t rng = shading_rng(origin, li);
+        glm::dvec3 sum(0);
+        for (int i = 0; i < pattern.count(); ++i) {
+            double reach;
+            const glm::dvec3 dir = cone.direction(pattern.offset(i, rng), reach);
+            const double ndl = glm::dot(n, dir);
+            if (ndl <= 0) continue;
+            if (light.shadows) {
+                ++ts.rays.shadow;
+                if (tracer_.occluded(TraceRay{origin, dir, 0, reach}, ts.scratch)) continue;
+            }
+            sum += respond(dir, ndl);
+        }
+        c += light.color * k * sum / double(pattern.count());
     }
     if (m.reflect > 0 && depth < max_depth_) {
         ++ts.rays.reflect;

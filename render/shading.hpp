@@ -1,11 +1,13 @@
-// Blinn–Phong shading with hard shadows and mirror reflection (docs/spec.md §5–6),
+// Blinn–Phong shading with hard and soft shadows (lights.hpp) and mirror reflection (docs/spec.md §5–6),
 // on top of the CSG tracer. One Shader is shared by all render threads.
 #pragma once
 #include <cstdint>
+#include <vector>
 
 #include <glm/glm.hpp>
 
 #include "csg/scene.hpp"
+#include "render/sampler.hpp"
 #include "render/tracer/tracer.hpp"
 
 namespace kerf::render {
@@ -33,6 +35,7 @@ private:
     const csg::Scene& scene_;
     const CsgTracer& tracer_;
     int max_depth_;
+    std::vector<SamplePattern> patterns_;  // per light: where its shadow rays go
 };
 
 }  // namespace kerf::render
