@@ -1,4 +1,4 @@
-// The scene statements camera, light and background (docs/spec.md §6): top
+// The scene statements camera, light, spotlight and background (docs/spec.md §6): top
 // level only, each of camera and background at most once.
 #include <cmath>
 
@@ -50,6 +50,29 @@ void camera(ModuleCall& c) {
     state.camera_loc = &c.st.loc;
 }
 
+// The arguments every light shares, from position `first` on: color,
+// intensity, radius, samples, shadows, attenuation.
+void light_common(const Args& a, std::size_t first, csg::Light& l) {
+    if (a.has(first)) l.color = glm::dvec3(arg_color(a, first, "color"));
+    l.intensity = arg_number(a, first + 1, "intensity", 1);
+    if (l.intensity < 0) arg_error(a, "intensity must not be negative, got " + format_number(l.intensity));
+    l.radius = arg_number(a, first + 2, "radius", 0);
+    if (!(l.radius >= 0) || l.radius > csg::kRenderableRange)
+        arg_error(a, "radius must be a number from 0 to " + format_number(csg::kRenderableRange) + ", got " +
+                         format_number(l.radius));
+    const double samples = arg_number(a, first + 3, "samples", 16);
+    if (!(samples >= 1 && samples <= 4096) || samples != std::floor(samples))
+        arg_error(a, "samples must be a whole number from 1 to 4096, got " + format_number(samples));
+    l.samples = static_cast<std::uint32_t>(samples);
+    l.shadows = arg_bool(a, first + 4, "shadows", true);
+    if (a.has(first + 5)) {
+        if (!a[first + 5].is_string() ||
+            (a[first + 5].as_string() != "none" && a[first + 5].as_string() != "inverse_square"))
+            arg_error(a, "attenuation must be \"none\" or \"inverse_square\", got " + to_repr(a[first + 5]));
+        l.inverse_square = a[first + 5].as_string() == "inverse_square";
+    }
+}
+
 void light(ModuleCall& c) {
     const Args& a = c.args;
     if (a.has(0) == a.has(1)) arg_error(a, "give position or direction (exactly one)");
@@ -62,9 +85,32 @@ void light(ModuleCall& c) {
         if (!(glm::length(d) > 0)) arg_error(a, "direction must not be zero");
         l.direction = d / glm::length(d);
     }
-    if (a.has(2)) l.color = glm::dvec3(arg_color(a, 2, "color"));
-    l.intensity = arg_number(a, 3, "intensity", 1);
-    if (l.intensity < 0) arg_error(a, "intensity must not be negative, got " + format_number(l.intensity));
+    light_common(a, 2, l);
+    // A distant light is a direction: it has no size to soften shadows
+    // with, and no distance to fall off over.
+    if (l.directional && l.radius > 0) arg_error(a, "radius is for a light with a position, not a direction");
+    if (l.directional && l.inverse_square)
+        arg_error(a, "attenuation is for a light with a position, not a direction");
+    c.graph().graph.lights.push_back(l);
+}
+
+void spotlight(ModuleCall& c) {
+    const Args& a = c.args;
+    if (!a.has(0)) arg_error(a, "position is required");
+    if (!a.has(1)) arg_error(a, "look_at is required");
+    csg::Light l;
+    l.spot = true;
+    l.position = in_range(a, arg_vec3(a, 0, "position", {0, 0, 0}), "position");
+    const glm::dvec3 axis = in_range(a, arg_vec3(a, 1, "look_at", {0, 0, 0}), "look_at") - l.position;
+    if (!(glm::length(axis) > 0)) arg_error(a, "position and look_at must differ");
+    l.direction = axis / glm::length(axis);
+    l.spot_angle = arg_number(a, 2, "angle", 30);
+    l.spot_falloff = arg_number(a, 3, "falloff", 5);
+    if (!(l.spot_angle > 0 && l.spot_angle < 180))
+        arg_error(a, "angle must be between 0 and 180 degrees, got " + format_number(l.spot_angle));
+    if (!(l.spot_falloff >= 0 && l.spot_angle + l.spot_falloff <= 180))
+        arg_error(a, "falloff must be from 0 to 180 - angle degrees, got " + format_number(l.spot_falloff));
+    light_common(a, 4, l);
     c.graph().graph.lights.push_back(l);
 }
 
@@ -81,7 +127,11 @@ void background(ModuleCall& c) {
 
 const ModuleEntry kSetup[] = {
     {"camera", ModuleKind::Setup, {"position", "look_at", "up", "fov", "projection", "height"}, camera},
-    {"light", ModuleKind::Setup, {"position", "direction", "color", "intensity"}, light},
+    {"light", ModuleKind::Setup,
+     {"position", "direction", "color", "intensity", "radius", "samples", "shadows", "attenuation"}, light},
+    {"spotlight", ModuleKind::Setup,
+     {"position", "look_at", "angle", "falloff", "color", "intensity", "radius", "samples", "shadows", "attenuation"},
+     spotlight},
     {"background", ModuleKind::Setup, {"color"}, background},
 };
 
