@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -72,7 +73,11 @@ bool cycle(const Options& o, FileWatcher& watcher) {
         });
     } catch (...) {
         report_failure(std::current_exception());
-        std::fprintf(stderr, "kerf watch: %s keeps the last good image; waiting for a change\n", o.output.c_str());
+        std::error_code ec;
+        if (std::filesystem::exists(o.output, ec))
+            std::fprintf(stderr, "kerf watch: %s keeps the last good image; waiting for a change\n", o.output.c_str());
+        else
+            std::fprintf(stderr, "kerf watch: nothing written to %s; waiting for a change\n", o.output.c_str());
     }
     return false;
 }
