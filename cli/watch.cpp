@@ -44,7 +44,9 @@ bool cycle(const Options& o, FileWatcher& watcher) {
         try {
             scene = evaluate_and_lower(o, eval, bar);
         } catch (...) {
-            watcher.watch(deps.empty() ? std::vector<std::string>{o.scene} : deps);  // the fix is what comes next
+            // What the run read or looked for up to the error (the scene at
+            // least): the fix will be saved to one of them.
+            watcher.watch(deps);
             throw;
         }
         watcher.watch(deps);
@@ -61,7 +63,13 @@ bool cycle(const Options& o, FileWatcher& watcher) {
             quick.spp = 1;
             render_and_write(scene, quick, o.output, bar);
             preview_s = since(start);
-            if (watcher.wait(0)) return true;
+            if (watcher.wait(0)) {
+                bar.print_above([&] {
+                    std::fprintf(stderr, "kerf watch: preview written to %s in %.2f s; a file changed, starting again\n",
+                                 o.output.c_str(), preview_s);
+                });
+                return true;
+            }
         }
         render_and_write(scene, full, o.output, bar);
         const double total = since(start);
