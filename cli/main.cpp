@@ -1,18 +1,19 @@
-// kerf: check, dump or render a .sdl scene. Everything here is argument
-// handling, reporting and exit codes (docs/spec.md §7–§8); the work is library calls.
+// kerf: check, dump, render or watch a .sdl scene. Everything here is
+// argument handling, reporting and exit codes (docs/spec.md §7–§8); the work
+// is library calls.
 #include <csignal>
 #include <cstdio>
 #include <exception>
-#include <filesystem>
 #include <iostream>
 #include <string>
 #include <vector>
 
 #include "cli/memory_cap.hpp"
 #include "cli/options.hpp"
+#include "cli/pipeline.hpp"
 #include "cli/progress.hpp"
-#include "interpreter/interpreter.hpp"
-#include "lower/lower.hpp"
+#include "cli/report.hpp"
+#include "cli/watch.hpp"
 #include "csg/dump.hpp"
 #include "render/image/image.hpp"
 #include "render/render.hpp"
@@ -20,12 +21,7 @@
 namespace {
 
 using namespace kerf;
-
-enum Exit { kOk = 0, kSceneError = 1, kUsage = 2, kRenderFailed = 3 };
-
-void print_warnings(const std::vector<Diagnostic>& warnings) {
-    for (const auto& w : warnings) std::cerr << format_diagnostic(w) << '\n';
-}
+using namespace kerf::cli;
 
 void print_stats(const render::RenderStats& s, const render::Image& img) {
     double rays = static_cast<double>(s.primary_rays + s.shadow_rays + s.reflect_rays);
@@ -45,51 +41,29 @@ void print_stats(const render::RenderStats& s, const render::Image& img) {
                      static_cast<unsigned long long>(s.refined_pixels), img.width * img.height);
 }
 
-// A scene piped in (editors preview unsaved buffers): named <stdin> in
-// diagnostics; includes resolve against `base` (or the working folder) as
-// if the file lived there.
-std::shared_ptr<const SourceFile> stdin_source(const std::string& base) {
-    auto read = read_source_file("/dev/stdin");  // bounded like any scene file
-    auto file = std::make_shared<SourceFile>();
-    file->path = base.empty() ? "<stdin>" : (std::filesystem::path(base) / "<stdin>").string();
-    file->text = read->text;
-    return file;
-}
-
-int run(const cli::Options& o) {
-    if (o.command == cli::Command::Render) {
+int run(const Options& o) {
+    if (o.command == Command::Watch) return run_watch(o);
+    if (o.command == Command::Render) {
         try {
-            const auto& crop = o.render.crop;  // the image written is the crop
-            render::check_output_path(o.output, crop ? (*crop)[2] - (*crop)[0] : o.render.width,
-                                      crop ? (*crop)[3] - (*crop)[1] : o.render.height, {o.scene});
+            check_output(o);
         } catch (const render::ImageWriteError& e) {
             std::cerr << "kerf: error: " << e.what() << '\n';
             return kRenderFailed;
         }
     }
-    EvalResult evaluated = o.scene == "-" ? evaluate_source(stdin_source(o.base), o.eval) : evaluate_file(o.scene, o.eval);
-    print_warnings(evaluated.warnings);
-    csg::Scene scene = lower_to_csg(evaluated.graph);
-    if (o.command == cli::Command::Check) return kOk;
-    if (o.command == cli::Command::Dump) {
-        std::cout << csg::dump_scene(scene);
-        return kOk;
-    }
-
-    render::RenderOptions ro = o.render;
-    ro.srgb8 = render::is_8bit_output(o.output);  // colour for an 8-bit file: store its bytes directly
-
     render::RenderStats stats;
     render::Image image;
     {
-        cli::ProgressBar bar("rendering");
-        image = render::render(scene, ro, &stats, [&bar](double f) { bar.update(f); });
-    }
-    try {
-        render::write_image(image, o.output);
-    } catch (const std::exception& e) {
-        std::cerr << "kerf: error: " << e.what() << '\n';
-        return kRenderFailed;
+        ProgressBar bar(o.progress);  // erased before anything below prints
+        csg::Scene scene = evaluate_and_lower(o, o.eval, bar);
+        if (o.command == Command::Check) return kOk;
+        if (o.command == Command::Dump) {
+            std::cout << csg::dump_scene(scene);
+            return kOk;
+        }
+        render::RenderOptions ro = o.render;
+        ro.srgb8 = render::is_8bit_output(o.output);  // colour for an 8-bit file: store its bytes directly
+        image = render_and_write(scene, ro, o.output, bar, &stats);
     }
     if (o.stats) print_stats(stats, image);
     return kOk;
@@ -98,41 +72,28 @@ int run(const cli::Options& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    cli::Options options;
+    Options options;
     try {
-        options = cli::parse_options(std::vector<std::string>(argv + 1, argv + argc));
-    } catch (const cli::UsageError& e) {
-        std::cerr << "kerf: error: " << e.what() << '\n' << cli::usage_text();
+        options = parse_options(std::vector<std::string>(argv + 1, argv + argc));
+    } catch (const UsageError& e) {
+        std::cerr << "kerf: error: " << e.what() << '\n' << usage_text();
         return kUsage;
     }
-    if (options.command == cli::Command::Help) {
-        std::cout << cli::usage_text();
+    if (options.command == Command::Help) {
+        std::cout << usage_text();
         return kOk;
     }
-    if (options.command == cli::Command::Version) {
+    if (options.command == Command::Version) {
         std::cout << "kerf 0.1\n";
         return kOk;
     }
-    cli::cap_memory_to_physical();
+    cap_memory_to_physical();
     // -o -: a reader that goes away is a failed write (exit 3, "Broken
     // pipe"), not a signal.
     if (options.output == "-") std::signal(SIGPIPE, SIG_IGN);
     try {
         return run(options);
-    } catch (const DefineError& e) {  // a broken -D value is a bad command line
-        std::cerr << format_diagnostic(e.diagnostic()) << '\n';
-        return kUsage;
-    } catch (const SourceError& e) {
-        std::cerr << format_diagnostic(e.diagnostic()) << '\n';
-        return kSceneError;
-    } catch (const IoError& e) {
-        std::cerr << "kerf: error: " << e.what() << '\n';
-        return kUsage;
-    } catch (const std::bad_alloc&) {
-        std::cerr << "kerf: error: out of memory\n";
-        return kRenderFailed;
-    } catch (const std::exception& e) {
-        std::cerr << "kerf: error: " << e.what() << '\n';
-        return kRenderFailed;
+    } catch (...) {
+        return report_failure(std::current_exception());
     }
 }

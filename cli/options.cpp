@@ -57,12 +57,15 @@ const char* usage_text() {
     return "usage:\n"
            "  kerf render SCENE.sdl [-o OUT] [-W 800] [-H 600] [--threads N]\n"
            "                        [--aa auto|off] [--aa-samples 16] [--aa-threshold 0.05] [--spp N]\n"
-           "                        [--preview] [--aov depth|normal|hits] [--stats]\n"
+           "                        [--preview] [--aov depth|normal|hits] [--stats] [--no-progress]\n"
            "                        [-D name=value ...] [-I dir ...] [--crop x0,y0,x1,y1]\n"
            "                        [--seed N] [--precision double|float] [--base DIR]\n"
            "                        [--curve-tolerance 1e-4]  (text(): flattening, a fraction of size)\n"
            "    SCENE '-' reads standard input (includes resolve against --base DIR or the\n"
            "    working folder); -o - writes the PNG to standard output\n"
+           "  kerf watch  SCENE.sdl [-o OUT] [render options]   (or: kerf render --watch ...)\n"
+           "    renders, then renders again (a preview, then the full image) whenever the\n"
+           "    scene or a file it includes, uses or imports is saved; Ctrl-C stops\n"
            "  kerf check  SCENE.sdl   parse, evaluate and lower; print diagnostics only\n"
            "  kerf dump   SCENE.sdl   print the lowered, flattened CSG tree\n"
            "dialect: --strict (kerf's rules, the default for .sdl) or --lenient / --openscad\n"
@@ -80,9 +83,10 @@ Options parse_options(const std::vector<std::string>& args) {
     if (cmd == "--help" || cmd == "-h" || cmd == "help") { o.command = Command::Help; return o; }
     if (cmd == "--version") { o.command = Command::Version; return o; }
     if (cmd == "render") o.command = Command::Render;
+    else if (cmd == "watch") o.command = Command::Watch;
     else if (cmd == "check") o.command = Command::Check;
     else if (cmd == "dump") o.command = Command::Dump;
-    else throw UsageError("unknown command '" + cmd + "' (expected render, check or dump)");
+    else throw UsageError("unknown command '" + cmd + "' (expected render, watch, check or dump)");
 
     constexpr std::uint64_t big = std::numeric_limits<std::uint32_t>::max();
     o.render.adaptive = true;  // --aa auto is the default
@@ -116,11 +120,13 @@ Options parse_options(const std::vector<std::string>& args) {
         else if (a == "--threads") o.render.threads = parse_int<int>(a, value(), 0, 1024);
         else if (a == "--seed") o.render.seed = parse_int<std::uint64_t>(a, value(), 0, UINT64_MAX);
         else if (a == "--preview") o.render.preview = true;
+        else if (a == "--watch" && (o.command == Command::Render || o.command == Command::Watch)) o.command = Command::Watch;
         // The dialect (docs/openscad.md): by default `.scad` files follow
         // OpenSCAD's lenient rules and everything else kerf's strict ones.
         else if (a == "--openscad" || a == "--lenient") o.eval.dialect = Dialect::Lenient;
         else if (a == "--strict") o.eval.dialect = Dialect::Strict;
         else if (a == "--stats") o.stats = true;
+        else if (a == "--no-progress") o.progress = false;
         else if (a == "--crop") o.render.crop = parse_crop(value());
         else if (a == "--aov") {
             const std::string& v = value();
@@ -170,6 +176,10 @@ Options parse_options(const std::vector<std::string>& args) {
                          std::to_string(o.render.height) + " image");
     if (!o.base.empty() && o.scene != "-")
         throw UsageError("--base applies to a scene read from standard input ('-'), not to " + o.scene);
+    if (o.command == Command::Watch && o.scene == "-")
+        throw UsageError("watch needs a scene file to watch, not standard input");
+    if (o.command == Command::Watch && o.output == "-")
+        throw UsageError("watch writes a file again on each change; -o - (standard output) is not for it");
     if (o.output.empty() && o.scene == "-" && o.command == Command::Render)
         throw UsageError("a scene from standard input needs -o OUT (-o - writes the PNG to standard output)");
     if (o.output.empty()) {

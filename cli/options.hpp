@@ -10,7 +10,7 @@
 
 namespace kerf::cli {
 
-enum class Command { Render, Check, Dump, Help, Version };
+enum class Command { Render, Watch, Check, Dump, Help, Version };
 
 // The libraries' own option structs, filled from the arguments: the command
 // line never mirrors what the libraries already define.
@@ -20,6 +20,7 @@ struct Options {
     std::string base;    // --base: folder that includes of a scene from standard input resolve against
     std::string output;  // after parsing: SCENE.png beside the scene unless -o; "-": PNG to standard output
     bool stats = false;
+    bool progress = true;  // --no-progress: no progress line even on a terminal
     EvalOptions eval;
     render::RenderOptions render;
 };

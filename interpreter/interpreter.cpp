@@ -174,6 +174,7 @@ EvalResult evaluate_source(std::shared_ptr<const SourceFile> file, const EvalOpt
 }
 
 EvalResult evaluate_file(const std::string& path, const EvalOptions& options) {
+    if (options.on_dependency) options.on_dependency(path);
     return evaluate_source(read_source_file(path), options);
 }
 

@@ -39,6 +39,12 @@ struct EvalOptions {
     // --curve-tolerance: how far a flattened curve (a glyph's Béziers) may
     // be from the true one, as a fraction of the shape's size.
     double curve_tolerance = 1e-4;
+    // Receives every file the run depends on, as it is looked up: the main
+    // file, each file an include, use or import resolved to, and each place
+    // searched before it (a file created there would be found instead).
+    // Also for a run that stops at an error, up to the error: `kerf watch`
+    // watches exactly these.
+    std::function<void(const std::string& path)> on_dependency;
 };
 
 // A -D value that does not parse, evaluate or name a top-level binding: a

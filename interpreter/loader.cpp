@@ -47,6 +47,7 @@ std::string Loader::resolve(const std::string& name_text, const SourceLoc& loc) 
     for (const fs::path& d : dirs) {
         fs::path p = d.empty() ? name : d / name;
         std::error_code ec;
+        if (opt_.on_dependency) opt_.on_dependency(p.lexically_normal().string());
         if (fs::is_regular_file(p, ec)) return p.lexically_normal().string();
     }
     throw SourceError(loc, "cannot find '" + name_text + "'");

@@ -50,6 +50,7 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
     std::optional<CsgTracer> built;
     arena.execute([&] { built.emplace(scene, !options.double_precision); });
     const CsgTracer& tracer = *built;
+    if (progress) progress(0.0);  // the BVHs are built; tracing starts (render.hpp)
     const SamplePattern samples(options.preview ? 1 : options.spp);
     const Shader shader(scene, tracer, options.preview ? 0 : options.max_reflect_depth);
     const CameraModel camera(scene.camera, options.width, options.height);

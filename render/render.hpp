@@ -52,7 +52,8 @@ struct RenderStats {
 
 // Throws std::invalid_argument for bad options (size, spp, crop outside the
 // image) and std::runtime_error if Embree fails. `progress` receives the
-// finished fraction from render threads, one call at a time.
+// finished fraction from render threads, one call at a time; its first call,
+// progress(0), says the BVHs are built and tracing starts.
 Image render(const csg::Scene& scene, const RenderOptions& options, RenderStats* stats = nullptr,
              std::function<void(double fraction)> progress = {});
 

@@ -4,6 +4,7 @@
 // file replacement itself.
 #pragma once
 #include <cerrno>
+#include <chrono>
 #include <csignal>
 #include <cstddef>
 #include <filesystem>
@@ -105,9 +106,12 @@ inline std::string writing_fd(pid_t pid, const std::filesystem::path& dir) {
 
 // Polls until kerf is writing its image into `dir`, then stops it there
 // (SIGSTOP) with the temporary still open and not renamed. False if kerf
-// exited first (its status is then collected into `status`).
-inline bool stop_while_writing(pid_t pid, const std::filesystem::path& dir, int& status) {
-    for (;;) {
+// exited first (its status is then collected into `status`) or, when
+// `seconds` is given, still runs without having been caught by then
+// (`status` stays as it was).
+inline bool stop_while_writing(pid_t pid, const std::filesystem::path& dir, int& status, double seconds = -1) {
+    const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+    while (seconds < 0 || std::chrono::steady_clock::now() < end) {
         if (!writing_fd(pid, dir).empty()) {
             ::kill(pid, SIGSTOP);
             int raw = 0;
@@ -127,4 +131,5 @@ inline bool stop_while_writing(pid_t pid, const std::filesystem::path& dir, int&
         }
         ::usleep(100);
     }
+    return false;
 }

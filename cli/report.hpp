@@ -1,0 +1,20 @@
+// What kerf prints when a run fails, and the exit status it means
+// (docs/spec.md §8), for `render`/`check`/`dump` (which exit) and `watch`
+// (which prints and waits for the next change).
+#pragma once
+#include <exception>
+#include <vector>
+
+#include "grammar/source.hpp"
+
+namespace kerf::cli {
+
+enum Exit { kOk = 0, kSceneError = 1, kUsage = 2, kRenderFailed = 3 };
+
+void print_warnings(const std::vector<Diagnostic>& warnings);
+
+// Prints `error` on standard error (a located diagnostic, or "kerf: error:
+// MESSAGE") and returns the exit status it stands for.
+int report_failure(const std::exception_ptr& error);
+
+}  // namespace kerf::cli
