@@ -22,6 +22,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "render/image/netpbm.hpp"
 #include "render/image/oiio_loader.hpp"
 #include "render/image/png_file.hpp"
 #include "render/image/replace_file.hpp"
@@ -139,7 +140,8 @@ void check_output_path(const std::string& path, int width, int height, const std
     if (path == "-") return;  // standard output, PNG
     const fs::path target(path);
     const std::string ext = target.extension().string();
-    if (lower_extension(target) != ".png" && !oiio_module().can_write(path.c_str()))
+    const std::string lower = lower_extension(target);
+    if (lower != ".png" && lower != ".pfm" && !oiio_module().can_write(path.c_str()))
         throw ImageWriteError("cannot write " + path + ": " +
                               (ext.empty() ? std::string("no extension to choose the image format by")
                                            : "OpenImageIO cannot write '" + ext + "' files"));
@@ -160,7 +162,12 @@ void check_output_path(const std::string& path, int width, int height, const std
 
 bool is_8bit_output(const std::string& path) { return path == "-" || !is_float_format(lower_extension(fs::path(path))); }
 
-void write_image(const Image& image, const std::string& path) {
+void write_image(const Image& given, const std::string& path) {
+    const std::string given_ext = path == "-" ? ".png" : lower_extension(fs::path(path));
+    // A PGM is grey by its name: a colour image becomes its luminance.
+    const bool grey = given_ext == ".pgm" && given.channels == 3;
+    const Image converted = grey ? grey_image(given) : Image{};
+    const Image& image = grey ? converted : given;
     const std::size_t size = std::size_t(image.width) * image.height * image.channels;
     const bool as_bytes = !image.srgb8.empty();
     if (image.width < 1 || image.height < 1 || image.channels < 1 ||
@@ -180,7 +187,13 @@ void write_image(const Image& image, const std::string& path) {
     const std::uint8_t* bytes = as_bytes ? image.srgb8.data() : encoded.data();
     // Every format is encoded into memory, then written by replace_file().
     std::string message;
-    if (ext == ".png") {
+    if (ext == ".pfm") {
+        if (image.channels != 1 && image.channels != 3)
+            throw ImageWriteError("cannot write " + path + ": PFM holds 1 or 3 channels, the image has " +
+                                  std::to_string(image.channels));
+        const std::vector<unsigned char> file = encode_pfm(image);
+        message = replace_file(path, file.data(), file.size());
+    } else if (ext == ".png") {
         std::vector<unsigned char> file;
         message = encode_png(file, bytes, image.width, image.height, image.channels, srgb);
         if (message.empty())

@@ -162,6 +162,58 @@ TEST_CASE("EXR and TIFF keep linear floats, +inf included", "[image_io]") {
     fs::remove_all(dir);
 }
 
+TEST_CASE("PFM keeps linear floats, +inf included, and reads back through OpenImageIO", "[image_io]") {
+    // kerf writes PFM itself; OpenImageIO's reader (the independent side)
+    // undoes the bottom-up row order and the byte order.
+    const fs::path dir = fresh_dir("pfm");
+    for (int channels : {1, 3}) {
+        render::Image im = gradient(channels, channels == 1 ? render::ImageContent::Depth : render::ImageContent::Color);
+        im.pixels[2] = std::numeric_limits<float>::infinity();
+        const fs::path file = dir / ("x" + std::to_string(channels) + ".pfm");
+        render::write_image(im, file.string());
+        CHECK(slurp(file).substr(0, 2) == (channels == 1 ? "Pf" : "PF"));
+        int w, h, c;
+        OIIO::TypeDesc t;
+        const auto px = read_back(file, w, h, c, t);
+        CHECK(w == 4);
+        CHECK(h == 3);
+        CHECK(c == channels);
+        REQUIRE(px.size() == im.pixels.size());
+        CHECK(std::isinf(px[2]));
+        for (std::size_t i = 0; i < px.size(); ++i)
+            if (i != 2) CHECK(px[i] == im.pixels[i]);
+    }
+    fs::remove_all(dir);
+}
+
+TEST_CASE("PGM is grey: a colour image is written as its luminance", "[image_io]") {
+    const fs::path dir = fresh_dir("pgm");
+    render::Image im = gradient(3, render::ImageContent::Color);
+    render::write_image(im, (dir / "c.pgm").string());
+    CHECK(slurp(dir / "c.pgm").substr(0, 2) == "P5");
+    int w, h, c;
+    OIIO::TypeDesc t;
+    const auto px = read_back(dir / "c.pgm", w, h, c, t);
+    REQUIRE(c == 1);
+    REQUIRE(px.size() == 12);
+    auto srgb = [](double v) { return v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1 / 2.4) - 0.055; };
+    for (std::size_t i = 0; i < 12; ++i) {
+        const float* p = &im.pixels[3 * i];
+        const double y = 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+        CHECK(px[i] * 255 == Approx(std::round(255 * srgb(y))).margin(0.01));
+    }
+    // The same from an image rendered straight into sRGB bytes.
+    render::Image bytes;
+    bytes.width = 2, bytes.height = 1, bytes.channels = 3;
+    bytes.srgb8 = {255, 255, 255, 0, 255, 0};
+    render::write_image(bytes, (dir / "b.pgm").string());
+    const auto pb = read_back(dir / "b.pgm", w, h, c, t);
+    REQUIRE(pb.size() == 2);
+    CHECK(pb[0] == 1.0f);
+    CHECK(pb[1] * 255 == Approx(std::round(255 * srgb(0.7152))).margin(0.01));
+    fs::remove_all(dir);
+}
+
 TEST_CASE("8-bit depth is normalised: nearest white, misses black", "[image_io]") {
     const fs::path dir = fresh_dir("depth8");
     render::Image im = gradient(1, render::ImageContent::Depth);
