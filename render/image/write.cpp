@@ -160,7 +160,7 @@ void check_output_path(const std::string& path, int width, int height, const std
 
 bool is_8bit_output(const std::string& path) { return path == "-" || !is_float_format(lower_extension(fs::path(path))); }
 
-void write_image(const Image& image, const std::string& path) {
+void write_image(const Image& image, const std::string& path, const PngText& text) {
     const std::size_t size = std::size_t(image.width) * image.height * image.channels;
     const bool as_bytes = !image.srgb8.empty();
     if (image.width < 1 || image.height < 1 || image.channels < 1 ||
@@ -182,7 +182,7 @@ void write_image(const Image& image, const std::string& path) {
     std::string message;
     if (ext == ".png") {
         std::vector<unsigned char> file;
-        message = encode_png(file, bytes, image.width, image.height, image.channels, srgb);
+        message = encode_png(file, bytes, image.width, image.height, image.channels, srgb, text);
         if (message.empty())
             message = to_stdout ? write_stdout(file.data(), file.size()) : replace_file(path, file.data(), file.size());
     } else {
