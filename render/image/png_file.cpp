@@ -125,8 +125,10 @@ bool encode_file(const std::uint8_t* pixels, int width, int height, int channels
     }
     png_infop info = png_create_info_struct(png);
     if (!info || setjmp(sink.jump)) {
-        png_destroy_write_struct(&png, info ? &info : nullptr);
+        // png_destroy_write_struct() clears info: test it first, or every
+        // libpng error would read "out of memory".
         if (!info) std::snprintf(sink.message, sizeof sink.message, "out of memory");
+        png_destroy_write_struct(&png, info ? &info : nullptr);
         return false;
     }
     png_set_write_fn(png, nullptr, on_write, on_flush);

@@ -77,8 +77,9 @@ std::string read_png(const std::string& path, PngPicture& picture) {
     if (!png) return "out of memory";
     png_infop info = png_create_info_struct(png);
     if (!info || setjmp(state.jump)) {
+        const bool jumped = info != nullptr;  // png_destroy_read_struct() clears info
         png_destroy_read_struct(&png, info ? &info : nullptr, nullptr);
-        return info ? std::string(state.message) : "out of memory";
+        return jumped ? std::string(state.message) : "out of memory";
     }
     const bool ok = decode(png, info, state);
     png_destroy_read_struct(&png, &info, nullptr);
