@@ -49,7 +49,7 @@ SelectType=select/cons_tres
 SelectTypeParameters=CR_CPU
 MpiDefault=none
 ReturnToService=2
-SchedulerParameters=defer_batch
+SchedulerParameters=sched_min_interval=0,batch_sched_delay=0
 SlurmctldTimeout=30
 SlurmdTimeout=30
 InactiveLimit=0
