@@ -23,7 +23,6 @@ bool ends_with_png(const std::string& path) {
 bool parse_farm_flag(const std::vector<std::string>& args, std::size_t& i, Options& o) {
     const std::string& a = args[i];
     if (a != "--frames" && a != "--frame" && a != "--tile" && a != "--resume") return false;
-    if (o.command != Command::Render) throw UsageError(a + " applies to kerf render");
     if (a == "--resume") {
         o.farm.resume = true;
         return true;
@@ -45,6 +44,7 @@ bool parse_farm_flag(const std::vector<std::string>& args, std::size_t& i, Optio
 }
 
 void check_farm_options(const Options& o) {
+    if (o.command != Command::Render) return;  // check and dump ignore render options (docs/spec.md §7)
     const FarmOptions& f = o.farm;
     if (f.frame > 0 && f.frames == 0)
         throw UsageError("--frame I needs --frames N, the animation's length ($t = (I-1)/N)");

@@ -27,7 +27,7 @@ enum Exit { kOk = 0, kSceneError = 1, kUsage = 2, kRenderFailed = 3 };
 
 int run(const cli::Options& o) {
     if (o.command == cli::Command::Assemble) return cli::assemble(o);
-    if (o.farm.any()) return cli::render_farm(o);
+    if (o.command == cli::Command::Render && o.farm.any()) return cli::render_farm(o);
     if (o.command == cli::Command::Render) {
         try {
             const auto& crop = o.render.crop;  // the image written is the crop

@@ -76,7 +76,7 @@ Options parse_options(const std::vector<std::string>& args) {
     if (cmd == "render") o.command = Command::Render;
     else if (cmd == "check") o.command = Command::Check;
     else if (cmd == "dump") o.command = Command::Dump;
-    else throw UsageError("unknown command '" + cmd + "' (expected render, check or dump)");
+    else throw UsageError("unknown command '" + cmd + "' (expected render, check, dump or assemble)");
 
     constexpr std::uint64_t big = std::numeric_limits<std::uint32_t>::max();
     o.render.adaptive = true;  // --aa auto is the default
