@@ -1,3 +1,4 @@
+# shellcheck shell=bash disable=SC2034  # sourced: render_args is for the scripts that source it
 # Shared by the job scripts (sourced, not run): the render's parameters
 # from the environment, and kerf's flags for them (docs/farm.md).
 #   KERF     the kerf binary (default: kerf on PATH)

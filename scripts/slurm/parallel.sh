@@ -13,6 +13,7 @@
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 mode=${1:?usage: parallel.sh frames|tiles}
+# shellcheck source=scripts/slurm/farm.sh
 source "$here/farm.sh"
 : "${HOSTS:?set HOSTS to a GNU parallel --sshloginfile}"
 cd "$(dirname "$SCENE")"

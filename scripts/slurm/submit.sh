@@ -13,6 +13,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 mode=${1:?usage: submit.sh frames|tiles [SBATCH OPTION...]}
 shift
 export KERF_FARM_DIR=$here  # Slurm runs a copy of the script: farm.sh is found through this
+# shellcheck source=scripts/slurm/farm.sh
 ( source "$here/farm.sh" ) || exit 2   # the parameters, checked before anything is queued
 case $mode in
   frames)
