@@ -1,13 +1,14 @@
-// kerf: check, dump, render or watch a .sdl scene. Everything here is
-// argument handling, reporting and exit codes (docs/spec.md §7–§8); the work
-// is library calls.
+// kerf: check, dump, render or watch a .sdl scene, or join rendered bands.
+// Everything here is argument handling, reporting and exit codes
+// (docs/spec.md §7–§8, docs/farm.md); the work is library calls.
 #include <csignal>
-#include <cstdio>
 #include <exception>
 #include <iostream>
 #include <string>
 #include <vector>
 
+#include "cli/assemble.hpp"
+#include "cli/farm.hpp"
 #include "cli/memory_cap.hpp"
 #include "cli/options.hpp"
 #include "cli/pipeline.hpp"
@@ -23,26 +24,10 @@ namespace {
 using namespace kerf;
 using namespace kerf::cli;
 
-void print_stats(const render::RenderStats& s, const render::Image& img) {
-    double rays = static_cast<double>(s.primary_rays + s.shadow_rays + s.reflect_rays);
-    double per = s.primary_rays + s.shadow_rays + s.reflect_rays > 0 ? 1.0 / rays : 0.0;
-    std::fprintf(stderr,
-                 "stats: %dx%d, %.0f rays (%llu primary, %llu shadow, %llu reflect)\n"
-                 "stats: render %.3f s, %.2f MRay/s\n"
-                 "stats: per ray: %.3f union, %.3f difference, %.3f intersection ops, "
-                 "%.3f primitive interval tests\n",
-                 img.width, img.height, rays, static_cast<unsigned long long>(s.primary_rays),
-                 static_cast<unsigned long long>(s.shadow_rays),
-                 static_cast<unsigned long long>(s.reflect_rays), s.seconds,
-                 s.seconds > 0 ? rays / s.seconds * 1e-6 : 0.0, s.union_ops * per,
-                 s.difference_ops * per, s.intersection_ops * per, s.interval_tests * per);
-    if (s.refined_pixels > 0)
-        std::fprintf(stderr, "stats: anti-aliasing: %llu of %d pixels took the full samples\n",
-                     static_cast<unsigned long long>(s.refined_pixels), img.width * img.height);
-}
-
 int run(const Options& o) {
     if (o.command == Command::Watch) return run_watch(o);
+    if (o.command == Command::Assemble) return assemble(o);
+    if (o.command == Command::Render && o.farm.any()) return render_farm(o);
     if (o.command == Command::Render) {
         try {
             check_output(o);

@@ -1,5 +1,8 @@
 #include "cli/options.hpp"
 
+#include "cli/farm_options.hpp"
+#include "cli/parse_number.hpp"
+
 #include <charconv>
 #include <cstdint>
 #include <limits>
@@ -7,16 +10,6 @@
 namespace kerf::cli {
 
 namespace {
-
-template <typename Int>
-Int parse_int(const std::string& flag, const std::string& text, Int lo, Int hi) {
-    Int v{};
-    auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-    if (ec != std::errc() || p != text.data() + text.size() || v < lo || v > hi)
-        throw UsageError(flag + " expects a whole number from " + std::to_string(lo) + " to " +
-                         std::to_string(hi) + ", got '" + text + "'");
-    return v;
-}
 
 double parse_real(const std::string& flag, const std::string& text, double lo, double hi, const char* range) {
     double v = 0;
@@ -61,6 +54,7 @@ const char* usage_text() {
            "                        [-D name=value ...] [-I dir ...] [--crop x0,y0,x1,y1]\n"
            "                        [--seed N] [--precision double|float] [--base DIR]\n"
            "                        [--curve-tolerance 1e-4]  (text(): flattening, a fraction of size)\n"
+           "                        [--frames N [--frame I]] [--tile K/N] [--resume]\n"
            "    SCENE '-' reads standard input (includes resolve against --base DIR or the\n"
            "    working folder); -o - writes the PNG to standard output\n"
            "  kerf watch  SCENE.sdl [-o OUT] [render options]   (or: kerf render --watch ...)\n"
@@ -68,6 +62,10 @@ const char* usage_text() {
            "    scene or a file it includes, uses or imports is saved; Ctrl-C stops\n"
            "  kerf check  SCENE.sdl   parse, evaluate and lower; print diagnostics only\n"
            "  kerf dump   SCENE.sdl   print the lowered, flattened CSG tree\n"
+           "  kerf assemble OUT TILE...   join --tile bands into the bytes of a single render\n"
+           "farm (docs/farm.md): --frames N renders OUT_0001..OUT_N ($t = (I-1)/N for frame I),\n"
+           "    --frame I only frame I; --tile K/N band K (0..N-1) of N as OUT_tileKofN.png;\n"
+           "    --resume skips frames and bands already written by the same render\n"
            "dialect: --strict (kerf's rules, the default for .sdl) or --lenient / --openscad\n"
            "         (OpenSCAD's rules, the default for .scad; docs/openscad.md)\n"
            "limits (docs/spec.md §8): --max-call-depth N --max-nesting N --max-iterations N\n"
@@ -82,11 +80,12 @@ Options parse_options(const std::vector<std::string>& args) {
     const std::string& cmd = args[0];
     if (cmd == "--help" || cmd == "-h" || cmd == "help") { o.command = Command::Help; return o; }
     if (cmd == "--version") { o.command = Command::Version; return o; }
+    if (cmd == "assemble") return parse_assemble(args);
     if (cmd == "render") o.command = Command::Render;
     else if (cmd == "watch") o.command = Command::Watch;
     else if (cmd == "check") o.command = Command::Check;
     else if (cmd == "dump") o.command = Command::Dump;
-    else throw UsageError("unknown command '" + cmd + "' (expected render, watch, check or dump)");
+    else throw UsageError("unknown command '" + cmd + "' (expected render, watch, check, dump or assemble)");
 
     constexpr std::uint64_t big = std::numeric_limits<std::uint32_t>::max();
     o.render.adaptive = true;  // --aa auto is the default
@@ -153,6 +152,7 @@ Options parse_options(const std::vector<std::string>& args) {
         else if (a == "--max-primitives") o.eval.limits.primitives = parse_int<std::uint64_t>(a, value(), 1, big);
         else if (a == "--max-steps") o.eval.limits.steps = parse_int<std::uint64_t>(a, value(), 1, big * big);
         else if (a == "--help" || a == "-h") { o.command = Command::Help; return o; }
+        else if (parse_farm_flag(args, i, o)) continue;
         else if (!a.empty() && a[0] == '-' && a != "-") throw UsageError("unknown option '" + a + "'");
         else if (o.scene.empty()) o.scene = a;
         else throw UsageError("more than one scene given ('" + o.scene + "' and '" + a + "')");
@@ -189,6 +189,7 @@ Options parse_options(const std::vector<std::string>& args) {
         if (dot != std::string::npos && (slash == std::string::npos || dot > slash)) base.resize(dot);
         o.output = base + ".png";
     }
+    check_farm_options(o);
     return o;
 }
 

@@ -10,7 +10,18 @@
 
 namespace kerf::cli {
 
-enum class Command { Render, Watch, Check, Dump, Help, Version };
+enum class Command { Render, Watch, Check, Dump, Assemble, Help, Version };
+
+// Rendering on many machines (docs/farm.md): an animation's frames, an
+// image's horizontal bands.
+struct FarmOptions {
+    int frames = 0;       // --frames N; 0: one image
+    int frame = 0;        // --frame I, 1..N; 0: every frame
+    int tiles = 0;        // --tile K/N: N; 0: the whole image
+    int tile = 0;         // K, 0..N-1
+    bool resume = false;  // skip outputs already written by the same render
+    bool any() const { return frames > 0 || tiles > 0; }
+};
 
 // The libraries' own option structs, filled from the arguments: the command
 // line never mirrors what the libraries already define.
@@ -21,6 +32,8 @@ struct Options {
     std::string output;  // after parsing: SCENE.png beside the scene unless -o; "-": PNG to standard output
     bool stats = false;
     bool progress = true;  // --no-progress: no progress line even on a terminal
+    FarmOptions farm;
+    std::vector<std::string> tiles;  // assemble: the band files (output: OUT)
     EvalOptions eval;
     render::RenderOptions render;
 };

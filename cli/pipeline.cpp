@@ -9,11 +9,6 @@
 
 namespace kerf::cli {
 
-namespace {
-
-// A scene piped in (editors preview unsaved buffers): named <stdin> in
-// diagnostics; includes resolve against `base` (or the working folder) as
-// if the file lived there.
 std::shared_ptr<const SourceFile> stdin_source(const std::string& base) {
     auto read = read_source_file("/dev/stdin");  // bounded like any scene file
     auto file = std::make_shared<SourceFile>();
@@ -22,28 +17,29 @@ std::shared_ptr<const SourceFile> stdin_source(const std::string& base) {
     return file;
 }
 
-}  // namespace
-
 void check_output(const Options& o) {
     const auto& crop = o.render.crop;  // the image written is the crop
     render::check_output_path(o.output, crop ? (*crop)[2] - (*crop)[0] : o.render.width,
                               crop ? (*crop)[3] - (*crop)[1] : o.render.height, {o.scene});
 }
 
-csg::Scene evaluate_and_lower(const Options& o, const EvalOptions& eval, ProgressBar& bar) {
+csg::Scene evaluate_and_lower(const Options& o, const EvalOptions& eval, ProgressBar& bar,
+                              std::shared_ptr<const SourceFile> piped) {
     bar.phase("evaluate");
-    EvalResult evaluated = o.scene == "-" ? evaluate_source(stdin_source(o.base), eval) : evaluate_file(o.scene, eval);
+    if (o.scene == "-" && !piped) piped = stdin_source(o.base);
+    EvalResult evaluated = o.scene == "-" ? evaluate_source(piped, eval) : evaluate_file(o.scene, eval);
     if (!evaluated.warnings.empty()) bar.print_above([&] { print_warnings(evaluated.warnings); });
     bar.phase("lower");
     return lower_to_csg(evaluated.graph);
 }
 
 render::Image render_and_write(const csg::Scene& scene, const render::RenderOptions& ro, const std::string& path,
-                               ProgressBar& bar, render::RenderStats* stats) {
+                               ProgressBar& bar, render::RenderStats* stats,
+                               const std::vector<std::pair<std::string, std::string>>& text) {
     bar.phase("build");
     render::Image image = render::render(scene, ro, stats, [&bar](double f) { bar.update(f); });
     bar.phase("write");
-    render::write_image(image, path);
+    render::write_image(image, path, text);
     return image;
 }
 

@@ -1,7 +1,10 @@
 // The steps of one run from scene file to image file, shared by `kerf
 // render` and `kerf watch`; each names its phase on the progress bar.
 #pragma once
+#include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "cli/options.hpp"
 #include "cli/progress.hpp"
@@ -14,12 +17,21 @@ namespace kerf::cli {
 // written: checked before evaluating, so a typo in -o costs nothing.
 void check_output(const Options& o);
 
-// Evaluates the scene (a file, or standard input for "-"), prints its
-// warnings and lowers it. Throws what evaluation throws.
-csg::Scene evaluate_and_lower(const Options& o, const EvalOptions& eval, ProgressBar& bar);
+// The scene text piped in (`-`), read once: named <stdin> in diagnostics;
+// includes resolve against `base` (or the working folder) as if the file
+// lived there (editors preview unsaved buffers).
+std::shared_ptr<const SourceFile> stdin_source(const std::string& base);
 
-// Renders `scene` and writes it to `path` atomically.
+// Evaluates the scene (a file, or standard input for "-": `piped` when
+// given, so that the farm's frames read it once), prints its warnings and
+// lowers it. Throws what evaluation throws.
+csg::Scene evaluate_and_lower(const Options& o, const EvalOptions& eval, ProgressBar& bar,
+                              std::shared_ptr<const SourceFile> piped = nullptr);
+
+// Renders `scene` and writes it to `path` atomically, with PNG text chunks
+// `text` (the farm's metadata).
 render::Image render_and_write(const csg::Scene& scene, const render::RenderOptions& ro, const std::string& path,
-                               ProgressBar& bar, render::RenderStats* stats = nullptr);
+                               ProgressBar& bar, render::RenderStats* stats = nullptr,
+                               const std::vector<std::pair<std::string, std::string>>& text = {});
 
 }  // namespace kerf::cli

@@ -1,14 +1,34 @@
 #include "cli/report.hpp"
 
+#include <cstdio>
 #include <iostream>
 #include <new>
 
+#include "cli/assemble.hpp"
 #include "interpreter/interpreter.hpp"
 
 namespace kerf::cli {
 
 void print_warnings(const std::vector<Diagnostic>& warnings) {
     for (const auto& w : warnings) std::cerr << format_diagnostic(w) << '\n';
+}
+
+void print_stats(const render::RenderStats& s, const render::Image& img) {
+    double rays = static_cast<double>(s.primary_rays + s.shadow_rays + s.reflect_rays);
+    double per = s.primary_rays + s.shadow_rays + s.reflect_rays > 0 ? 1.0 / rays : 0.0;
+    std::fprintf(stderr,
+                 "stats: %dx%d, %.0f rays (%llu primary, %llu shadow, %llu reflect)\n"
+                 "stats: render %.3f s, %.2f MRay/s\n"
+                 "stats: per ray: %.3f union, %.3f difference, %.3f intersection ops, "
+                 "%.3f primitive interval tests\n",
+                 img.width, img.height, rays, static_cast<unsigned long long>(s.primary_rays),
+                 static_cast<unsigned long long>(s.shadow_rays),
+                 static_cast<unsigned long long>(s.reflect_rays), s.seconds,
+                 s.seconds > 0 ? rays / s.seconds * 1e-6 : 0.0, s.union_ops * per,
+                 s.difference_ops * per, s.intersection_ops * per, s.interval_tests * per);
+    if (s.refined_pixels > 0)
+        std::fprintf(stderr, "stats: anti-aliasing: %llu of %d pixels took the full samples\n",
+                     static_cast<unsigned long long>(s.refined_pixels), img.width * img.height);
 }
 
 int report_failure(const std::exception_ptr& error) {
@@ -21,6 +41,9 @@ int report_failure(const std::exception_ptr& error) {
         std::cerr << format_diagnostic(e.diagnostic()) << '\n';
         return kSceneError;
     } catch (const IoError& e) {
+        std::cerr << "kerf: error: " << e.what() << '\n';
+        return kUsage;
+    } catch (const TileError& e) {  // tiles that do not join: a bad command line
         std::cerr << "kerf: error: " << e.what() << '\n';
         return kUsage;
     } catch (const std::bad_alloc&) {

@@ -6,12 +6,16 @@
 #include <vector>
 
 #include "grammar/source.hpp"
+#include "render/render.hpp"
 
 namespace kerf::cli {
 
 enum Exit { kOk = 0, kSceneError = 1, kUsage = 2, kRenderFailed = 3 };
 
 void print_warnings(const std::vector<Diagnostic>& warnings);
+
+// --stats: rays, time and CSG work per ray of a finished render.
+void print_stats(const render::RenderStats& s, const render::Image& img);
 
 // Prints `error` on standard error (a located diagnostic, or "kerf: error:
 // MESSAGE") and returns the exit status it stands for.

@@ -16,6 +16,7 @@ if [[ "${1:-}" != "--render" ]]; then
     catch2 libbenchmark-dev
     clang libclang-rt-14-dev   # libFuzzer + sanitizers for the fuzz test
     openscad   # its examples are the corpus test (scripts/openscad_corpus.sh) and its echo output the reference
+    slurm-wlm munge parallel   # the farm scripts' test starts a real single-node Slurm (docs/farm.md)
   )
 fi
 if [[ "${1:-}" == "--bench" ]]; then

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "render/image/big_buffer.hpp"
@@ -47,8 +48,10 @@ void check_output_path(const std::string& path, int width = 0, int height = 0,
 // Encoded into memory, then written to a temporary file in the same folder
 // with every write, fsync and close checked, and renamed over `path`: a
 // failed write ("no space left on device") throws and leaves an existing
-// file intact and no temporary behind (replace_file.hpp).
-void write_image(const Image& image, const std::string& path);
+// file intact and no temporary behind (replace_file.hpp). `text`: PNG tEXt
+// chunks (keyword, value) for a PNG file; other formats do not store it.
+void write_image(const Image& image, const std::string& path,
+                 const std::vector<std::pair<std::string, std::string>>& text = {});
 
 // Whether write_image() stores `path` in 8 bits (then a colour render can
 // use RenderOptions::srgb8 and lose nothing).

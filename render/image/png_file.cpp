@@ -17,28 +17,20 @@
 #include <tbb/parallel_for.h>
 #include <zlib.h>
 
+#include "render/image/png_jump.hpp"
+
 namespace kerf::render {
 
 namespace {
 
-struct ErrorSink {
-    std::jmp_buf jump;
-    char message[256];
-    std::vector<unsigned char>* file;
+struct ErrorSink : PngJump {
+    std::vector<unsigned char>* file = nullptr;
 };
-
-void on_error(png_structp png, png_const_charp msg) {
-    auto* sink = static_cast<ErrorSink*>(png_get_error_ptr(png));
-    std::snprintf(sink->message, sizeof sink->message, "%s", msg);
-    std::longjmp(sink->jump, 1);
-}
-
-void on_warning(png_structp, png_const_charp) {}
 
 // libpng's output: appended to the caller's vector. png_error() longjmps,
 // so it is called only after the try block has been left.
 void on_write(png_structp png, png_bytep data, png_size_t size) {
-    auto* sink = static_cast<ErrorSink*>(png_get_error_ptr(png));
+    auto* sink = static_cast<ErrorSink*>(static_cast<PngJump*>(png_get_error_ptr(png)));
     bool grown = true;
     try {
         sink->file->insert(sink->file->end(), data, data + size);
@@ -116,7 +108,8 @@ std::vector<unsigned char> deflate_image(const std::uint8_t* pixels, std::size_t
 
 // Returns false with sink.message set. libpng writes the signature and the
 // header chunks; the image data is deflated above and goes in as IDAT chunks.
-bool encode_file(const std::uint8_t* pixels, int width, int height, int channels, bool srgb, ErrorSink& sink) {
+bool encode_file(const std::uint8_t* pixels, int width, int height, int channels, bool srgb,
+                 std::vector<png_text>& text, ErrorSink& sink) {
     const std::size_t stride = std::size_t(width) * std::size_t(channels);
     const std::vector<unsigned char> idat = deflate_image(pixels, stride, height);
     if (idat.empty()) {
@@ -124,15 +117,18 @@ bool encode_file(const std::uint8_t* pixels, int width, int height, int channels
         return false;
     }
     sink.file->reserve(idat.size() + 4096);  // the chunks around it are a few hundred bytes
-    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &sink, on_error, on_warning);
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, static_cast<PngJump*>(&sink),
+                                              png_jump_error, png_no_warning);
     if (!png) {
         std::snprintf(sink.message, sizeof sink.message, "out of memory");
         return false;
     }
     png_infop info = png_create_info_struct(png);
     if (!info || setjmp(sink.jump)) {
-        png_destroy_write_struct(&png, info ? &info : nullptr);
+        // png_destroy_write_struct() clears info: test it first, or every
+        // libpng error would read "out of memory".
         if (!info) std::snprintf(sink.message, sizeof sink.message, "out of memory");
+        png_destroy_write_struct(&png, info ? &info : nullptr);
         return false;
     }
     png_set_write_fn(png, nullptr, on_write, on_flush);
@@ -142,6 +138,7 @@ bool encode_file(const std::uint8_t* pixels, int width, int height, int channels
     png_set_IHDR(png, info, png_uint_32(width), png_uint_32(height), 8, type, PNG_INTERLACE_NONE,
                  PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     if (srgb) png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+    if (!text.empty()) png_set_text(png, info, text.data(), int(text.size()));
     png_write_info(png, info);
     constexpr std::size_t kChunk = std::size_t(1) << 24;  // IDAT chunks of at most 16 MiB
     for (std::size_t at = 0; at < idat.size(); at += kChunk)
@@ -156,12 +153,24 @@ bool encode_file(const std::uint8_t* pixels, int width, int height, int channels
 }  // namespace
 
 std::string encode_png(std::vector<unsigned char>& file, const std::uint8_t* pixels, int width, int height,
-                       int channels, bool srgb) {
+                       int channels, bool srgb, const PngText& text) {
     if (channels != 1 && channels != 3 && channels != 4) return "PNG holds 1, 3 or 4 channels";
-    ErrorSink sink{};
+    // libpng's view of `text`, built before setjmp (plain C data).
+    std::vector<png_text> chunks;
+    for (const auto& [key, value] : text) {
+        if (key.empty() || key.size() > 79) return "a PNG text keyword holds 1 to 79 characters";
+        png_text t{};
+        t.compression = PNG_TEXT_COMPRESSION_NONE;
+        t.key = const_cast<char*>(key.c_str());
+        t.text = const_cast<char*>(value.c_str());
+        t.text_length = value.size();
+        chunks.push_back(t);
+    }
+    ErrorSink sink;
     sink.file = &file;
     file.clear();
-    return encode_file(pixels, width, height, channels, srgb, sink) ? std::string() : std::string(sink.message);
+    return encode_file(pixels, width, height, channels, srgb, chunks, sink) ? std::string()
+                                                                            : std::string(sink.message);
 }
 
 }  // namespace kerf::render

@@ -4,15 +4,18 @@
 #pragma once
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace kerf::render {
 
 // Encodes 8-bit pixels (1 grey, 3 RGB or 4 RGBA channels, rows top to
 // bottom) as the bytes of a PNG file into `file`. `srgb` marks colour
-// images with PNG's sRGB chunk. Returns an empty string on success, else
-// what went wrong.
+// images with PNG's sRGB chunk; `text` becomes tEXt chunks (keyword,
+// Latin-1 value) before the image data. Returns an empty string on
+// success, else what went wrong.
+using PngText = std::vector<std::pair<std::string, std::string>>;
 std::string encode_png(std::vector<unsigned char>& file, const std::uint8_t* pixels, int width, int height,
-                       int channels, bool srgb);
+                       int channels, bool srgb, const PngText& text = {});
 
 }  // namespace kerf::render

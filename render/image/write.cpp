@@ -162,7 +162,7 @@ void check_output_path(const std::string& path, int width, int height, const std
 
 bool is_8bit_output(const std::string& path) { return path == "-" || !is_float_format(lower_extension(fs::path(path))); }
 
-void write_image(const Image& given, const std::string& path) {
+void write_image(const Image& given, const std::string& path, const PngText& text) {
     const std::string given_ext = path == "-" ? ".png" : lower_extension(fs::path(path));
     // A PGM is grey by its name: a colour image becomes its luminance.
     const bool grey = given_ext == ".pgm" && given.channels == 3;
@@ -195,7 +195,7 @@ void write_image(const Image& given, const std::string& path) {
         message = replace_file(path, file.data(), file.size());
     } else if (ext == ".png") {
         std::vector<unsigned char> file;
-        message = encode_png(file, bytes, image.width, image.height, image.channels, srgb);
+        message = encode_png(file, bytes, image.width, image.height, image.channels, srgb, text);
         if (message.empty())
             message = to_stdout ? write_stdout(file.data(), file.size()) : replace_file(path, file.data(), file.size());
     } else {

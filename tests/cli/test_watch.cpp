@@ -196,7 +196,7 @@ TEST_CASE("kerf watch stopped by a signal while writing leaves the old image and
     }
 }
 
-TEST_CASE("kerf render --watch is kerf watch; standard input and output are refused", "[watch]") {
+TEST_CASE("kerf render --watch is kerf watch; standard input and output and the farm flags are refused", "[watch]") {
     const auto dir = test_dir("watch_options");
     const auto scene = write_file(dir / "ball.sdl", "sphere(1);\n");
     Watch w(dir, {"render", scene, "--watch", "-W", "16", "-H", "12"});
@@ -208,6 +208,10 @@ TEST_CASE("kerf render --watch is kerf watch; standard input and output are refu
     r = run_kerf("render --watch '" + scene + "' -o -", dir);
     CHECK(r.status == 2);
     CHECK(first_line(r.err) == "kerf: error: watch writes a file again on each change; -o - (standard output) is not for it");
+    r = run_kerf("watch '" + scene + "' --frames 3", dir);  // the farm's flags are for kerf render
+    CHECK(r.status == 2);
+    CHECK(first_line(r.err) == "kerf: error: watch renders one image on each change; --frames, --frame, --tile and "
+                               "--resume are for kerf render");
     r = run_kerf("check --watch '" + scene + "'", dir);
     CHECK(r.status == 2);
     CHECK(first_line(r.err) == "kerf: error: unknown option '--watch'");
