@@ -191,10 +191,14 @@ void cut_wedge(GraphBuilder& g, std::size_t mark, double from, double angle, con
 void rotate_extrude(ModuleCall& c) {
     const Args& a = c.args;
     static constexpr const char* kDxf[] = {"file", "layer", "origin", "scale"};
-    for (std::size_t i = 0; i < 4; ++i)
-        if (a.has(i))
-            arg_error(a, std::string("OpenSCAD's deprecated ") + kDxf[i] +
-                             " argument (DXF import) is not supported; give the profile as 2D children (angle = ...)");
+    for (std::size_t i = 0; i < 4; ++i) {
+        if (!a.has(i)) continue;
+        const std::string msg = std::string("OpenSCAD's deprecated ") + kDxf[i] +
+                                " argument (DXF import) is not supported; give the profile as 2D children (angle = ...)";
+        // OpenSCAD warns that it cannot open the file and revolves the children.
+        if (!c.lenient()) arg_error(a, msg);
+        c.warn(msg + " (ignored)");
+    }
     const double angle = arg_number(a, 5, "angle", 360);
     GraphBuilder& g = c.graph();
     const std::size_t mark = g.mark();
@@ -218,9 +222,10 @@ void rotate_extrude(ModuleCall& c) {
     if (rev.xmin < 0 && rev.xmax > 0) {
         char range[96];
         std::snprintf(range, sizeof range, "%.2f -> %.2f", rev.xmin, rev.xmax);
-        // An error in both dialects: OpenSCAD reports it as an ERROR too
-        // (and then renders nothing).
-        arg_error(a, std::string("all points must have the same x coordinate sign (range is ") + range + ")");
+        // An error in both dialects (not the .scad warning of arg_error):
+        // OpenSCAD reports it as an ERROR and exits 1 too.
+        throw SourceError(c.st.loc, std::string("rotate_extrude: all points must have the same x coordinate sign (range is ") +
+                                        range + ")");
     }
     rev.mirrored = rev.xmax <= 0 && rev.xmin < 0;
     for (std::uint32_t id : shapes) rev.build(id, Map2(1.0));

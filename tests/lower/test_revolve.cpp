@@ -133,4 +133,11 @@ TEST_CASE("rotate_extrude's bad input and OpenSCAD's rules", "[revolve]") {
     CHECK(s.leaves.size() == 1);
     CHECK(s.leaves[0].kind == csg::PrimKind::Lathe);
     CHECK(s.bounds().hi.z == 1);
+    // .scad too: the sign error is an error (OpenSCAD: ERROR, exit 1); the
+    // deprecated positional file argument a warning, the children revolved.
+    REQUIRE_THROWS_WITH(eval_scad("rotate_extrude() translate([-1, 0]) square([3, 2]);"),
+                        Catch::Contains("same x coordinate sign"));
+    const EvalResult dxf = eval_scad("rotate_extrude(90) translate([2, 0]) square(1);");
+    CHECK(dxf.warnings.size() == 1);
+    CHECK(lower_to_csg(dxf.graph).leaves[0].kind == csg::PrimKind::Lathe);
 }
