@@ -120,6 +120,38 @@ TEST_CASE("random revolved 2D booleans agree with point membership along rays", 
     CHECK(bad <= rays / 100);
 }
 
+TEST_CASE("a tilted ellipse or a circle touching the axis is revolved as a polygon within the curve tolerance",
+          "[revolve]") {
+    // Not a transformed torus: a Lathe leaf over a polygon whose chords stay
+    // within 1e-4 (relative) of the curve; membership checked against the
+    // ellipse away from that band.
+    const csg::Scene tilted = test::lowered("rotate_extrude() translate([3, 0]) rotate(30) scale([1, 2]) circle(1);");
+    REQUIRE(tilted.leaves.size() == 1);
+    CHECK(tilted.leaves[0].kind == csg::PrimKind::Lathe);
+    const csg::Scene horn = test::lowered("rotate_extrude() translate([1, 0]) circle(1);");
+    REQUIRE(horn.leaves.size() == 1);
+    CHECK(horn.leaves[0].kind == csg::PrimKind::Lathe);
+    CHECK(horn.bounds().hi.x == Approx(2));
+    std::mt19937_64 rng(9);
+    std::uniform_real_distribution<double> u(-4, 4);
+    const double c30 = std::cos(M_PI / 6), s30 = std::sin(M_PI / 6);
+    int checked = 0;
+    for (int i = 0; i < 4000; ++i) {
+        const glm::dvec3 p(u(rng), u(rng), u(rng) / 1.5);
+        const double rho = std::hypot(p.x, p.y);
+        // The tilted ellipse: rotate back by 30°, then unscale y by 2.
+        const double ex = c30 * (rho - 3) + s30 * p.z, ey = (-s30 * (rho - 3) + c30 * p.z) / 2;
+        const double f = std::hypot(ex, ey) - 1;
+        if (std::abs(f) > 1e-3) {
+            CHECK(csg::contains(tilted, p) == (f < 0));
+            ++checked;
+        }
+        const double g = std::hypot(rho - 1, p.z) - 1;
+        if (std::abs(g) > 1e-3) CHECK(csg::contains(horn, p) == (g < 0));
+    }
+    CHECK(checked > 3000);
+}
+
 TEST_CASE("rotate_extrude's bad input and OpenSCAD's rules", "[revolve]") {
     // OpenSCAD: "all points for rotate_extrude() must have the same X coordinate sign (range is -1.00 -> 2.00)".
     REQUIRE_THROWS_WITH(test::lowered("rotate_extrude() translate([-1, 0]) square([3, 2]);"),
