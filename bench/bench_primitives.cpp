@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "render/primitives/primitives.hpp"
+#include "render/primitives/lathe.hpp"
 #include "render/primitives/prism.hpp"
 
 namespace {
@@ -117,6 +118,27 @@ void run_prism(benchmark::State& state, kerf::csg::Polygon2 poly, RaySet rays) {
     }
 }
 
+// 1024 rays drawn around `around` (its box leaf `box`) whose hit-or-miss by
+// `hits` is `hit`; empty when too few are found.
+template <class Hits>
+RaySet sorted_rays(const Leaf& box, const Shape& around, bool hit, std::uint64_t seed, const Hits& hits) {
+    RaySet all = make_rays(box, around, true, seed), more = make_rays(box, around, false, seed + 1);
+    all.o.insert(all.o.end(), more.o.begin(), more.o.end());
+    all.d.insert(all.d.end(), more.d.begin(), more.d.end());
+    RaySet rays;
+    for (std::size_t k = 0; k < all.o.size() && rays.o.size() < 1024; ++k)
+        if (hits(all.o[k], all.d[k]) == hit) {
+            rays.o.push_back(all.o[k]);
+            rays.d.push_back(all.d[k]);
+        }
+    while (!rays.o.empty() && rays.o.size() < 1024) {  // power of two for the index mask
+        rays.o.push_back(rays.o[rays.o.size() % 512]);
+        rays.d.push_back(rays.d[rays.d.size() % 512]);
+    }
+    if (rays.o.size() != 1024) rays = {};
+    return rays;
+}
+
 const bool prisms_registered = [] {
     std::uint64_t seed = 100;
     const Shape around{"prism", PrimKind::Box, {-0.5, -0.5, 0, 0.5, 0.5, 1}, dvec3(0, 0, 0.5), 0.87};
@@ -129,27 +151,66 @@ const bool prisms_registered = [] {
         box.kind = PrimKind::Box;
         for (int k = 0; k < 6; ++k) box.p[k] = around.p[k];
         for (bool hit : {true, false}) {
-            RaySet all = make_rays(box, around, true, seed), more = make_rays(box, around, false, seed + 1);
-            all.o.insert(all.o.end(), more.o.begin(), more.o.end());
-            all.d.insert(all.d.end(), more.d.begin(), more.d.end());
-            seed += 2;
             const double p[6] = {0, 1, 0, 0, 0, 0};
             std::vector<kerf::csg::PrismSpan<double>> sp(kerf::csg::prism_span_room(poly.edges.size()));
             std::vector<kerf::csg::PrismCrossing<double>> sc(poly.edges.size());
-            RaySet rays;
-            for (std::size_t k = 0; k < all.o.size() && rays.o.size() < 1024; ++k)
-                if ((kerf::csg::intersect_prism<double>(poly, p, all.o[k], all.d[k], sp.data(), sc.data()) > 0) == hit) {
-                    rays.o.push_back(all.o[k]);
-                    rays.d.push_back(all.d[k]);
-                }
-            while (!rays.o.empty() && rays.o.size() < 1024) {  // power of two for the index mask
-                rays.o.push_back(rays.o[rays.o.size() % 512]);
-                rays.d.push_back(rays.d[rays.d.size() % 512]);
-            }
-            if (rays.o.size() != 1024) continue;
+            const RaySet rays = sorted_rays(box, around, hit, seed, [&](const dvec3& o, const dvec3& d) {
+                return kerf::csg::intersect_prism<double>(poly, p, o, d, sp.data(), sc.data()) > 0;
+            });
+            seed += 2;
+            if (rays.o.empty()) continue;
             const std::string base = std::string(c.name) + (hit ? "/hit" : "/miss");
             benchmark::RegisterBenchmark((base + "/float").c_str(), run_prism<float>, poly, rays);
             benchmark::RegisterBenchmark((base + "/double").c_str(), run_prism<double>, poly, rays);
+        }
+    }
+    return true;
+}();
+
+// Lathe leaves (intersect_lathe): the profile of a tube (a 4-edge
+// rectangle, radius 0.3 … 0.5, 0 < z < 1) and a 32-gon ring (a torus-like
+// profile of radius 0.15 around (0.35, 0.5)), rays around the box of both.
+template <typename T>
+void run_lathe(benchmark::State& state, kerf::csg::Polygon2 poly, RaySet rays) {
+    using V = glm::vec<3, T>;
+    std::vector<V> o(rays.o.begin(), rays.o.end()), d(rays.d.begin(), rays.d.end());
+    std::vector<kerf::csg::PrismSpan<T>> spans(kerf::csg::lathe_span_room(poly.edges.size()));
+    std::vector<kerf::csg::PrismCrossing<T>> scratch(kerf::csg::lathe_crossing_room(poly.edges.size()));
+    const std::size_t mask = o.size() - 1;
+    std::size_t i = 0;
+    for (auto _ : state) {
+        const int n = kerf::csg::intersect_lathe<T>(poly, o[i], d[i], spans.data(), scratch.data());
+        benchmark::DoNotOptimize(n);
+        benchmark::DoNotOptimize(spans.data());
+        i = (i + 1) & mask;
+    }
+}
+
+const bool lathes_registered = [] {
+    std::uint64_t seed = 200;
+    const Shape around{"lathe", PrimKind::Box, {-0.5, -0.5, 0, 0.5, 0.5, 1}, dvec3(0, 0, 0.5), 0.87};
+    Leaf box;
+    box.kind = PrimKind::Box;
+    for (int k = 0; k < 6; ++k) box.p[k] = around.p[k];
+    kerf::csg::Polygon2 tube;
+    tube.edges = {{0.3, 0, 0.5, 0}, {0.5, 0, 0.5, 1}, {0.5, 1, 0.3, 1}, {0.3, 1, 0.3, 0}};
+    tube.lo = {0.3, 0}, tube.hi = {0.5, 1};
+    kerf::csg::Polygon2 ring = ngon(32, false);
+    for (glm::dvec4& e : ring.edges) e = e * 0.3 + glm::dvec4(0.35, 0.5, 0.35, 0.5);
+    ring.lo = {0.2, 0.35}, ring.hi = {0.5, 0.65};
+    for (const auto& [name, poly] : {std::pair{"lathe4", tube}, std::pair{"lathe32", ring}}) {
+        for (bool hit : {true, false}) {
+            std::vector<kerf::csg::PrismSpan<double>> sp(kerf::csg::lathe_span_room(poly.edges.size()));
+            std::vector<kerf::csg::PrismCrossing<double>> sc(kerf::csg::lathe_crossing_room(poly.edges.size()));
+            const kerf::csg::Polygon2& section = poly;
+            const RaySet rays = sorted_rays(box, around, hit, seed, [&](const dvec3& o, const dvec3& d) {
+                return kerf::csg::intersect_lathe<double>(section, o, d, sp.data(), sc.data()) > 0;
+            });
+            seed += 2;
+            if (rays.o.empty()) continue;
+            const std::string base = std::string(name) + (hit ? "/hit" : "/miss");
+            benchmark::RegisterBenchmark((base + "/float").c_str(), run_lathe<float>, poly, rays);
+            benchmark::RegisterBenchmark((base + "/double").c_str(), run_lathe<double>, poly, rays);
         }
     }
     return true;

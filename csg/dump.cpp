@@ -93,6 +93,7 @@ void leaf_shape(std::string& out, const Leaf& l) {
             field(out, "z0", p[0]); field(out, "z1", p[1]);
             if (p[2] != 0) field(out, "top_scale", 1 + p[2]);
             break;
+        case PrimKind::Lathe: out += "lathe polygon=" + std::to_string(l.polygon); break;
     }
 }
 

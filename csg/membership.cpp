@@ -43,18 +43,17 @@ bool contains(const Leaf& leaf, const glm::dvec3& x) {
             return std::abs(x.z) < 0.5 * c[0] && rho * rho < hyper_radius2(c, x.z);
         }
         case PrimKind::Mesh:
-        case PrimKind::Prism: return false;  // need their data: contains(Scene, ...), contains_prism
+        case PrimKind::Prism:
+        case PrimKind::Lathe: return false;  // need their data: contains(Scene, ...), contains_prism/_lathe
     }
     return false;
 }
 
 // Even-odd point in polygon the textbook way (a ray towards +x from the
 // point, an edge counted when its end points lie on either side of the
-// point's y, half-open) on the section at the point's z, strictly inside the slab.
-bool contains_prism(const Polygon2& poly, const double* c, const glm::dvec3& x) {
-    if (!(c[0] < x.z && x.z < c[1])) return false;
-    const double k = 1 + c[2] * (x.z - c[0]) / (c[1] - c[0]);  // the section's scale at this z
-    const double px = x.x / k, py = x.y / k;
+// point's y, half-open); a prism asks it of the section at the point's z,
+// strictly inside the slab.
+bool even_odd(const Polygon2& poly, double px, double py) {
     bool odd = false;
     for (const glm::dvec4& e : poly.edges) {
         if ((e.y > py) == (e.w > py)) continue;
@@ -63,6 +62,15 @@ bool contains_prism(const Polygon2& poly, const double* c, const glm::dvec3& x) 
     }
     return odd;
 }
+
+bool contains_prism(const Polygon2& poly, const double* c, const glm::dvec3& x) {
+    if (!(c[0] < x.z && x.z < c[1])) return false;
+    const double k = 1 + c[2] * (x.z - c[0]) / (c[1] - c[0]);  // the section's scale at this z
+    return even_odd(poly, x.x / k, x.y / k);
+}
+
+// Revolved back into the (ρ, z) half-plane: the section's rule there.
+bool contains_lathe(const Polygon2& poly, const glm::dvec3& x) { return even_odd(poly, std::hypot(x.x, x.y), x.z); }
 
 double surface_distance(const Leaf& leaf, const glm::dvec3& x) {
     const double* c = leaf.p;
@@ -101,7 +109,8 @@ double surface_distance(const Leaf& leaf, const glm::dvec3& x) {
             return std::max(side, std::abs(x.z) - half);
         }
         case PrimKind::Mesh:
-        case PrimKind::Prism: break;
+        case PrimKind::Prism:
+        case PrimKind::Lathe: break;
     }
     return std::numeric_limits<double>::infinity();
 }
@@ -116,6 +125,9 @@ bool node_contains(const Scene& s, std::uint32_t node, const glm::dvec3& p) {
             if (l.kind == PrimKind::Prism)
                 return l.polygon < s.polygons.size() &&
                        contains_prism(s.polygons[l.polygon], l.p, l.object_from_world.point(p));
+            if (l.kind == PrimKind::Lathe)
+                return l.polygon < s.polygons.size() &&
+                       contains_lathe(s.polygons[l.polygon], l.object_from_world.point(p));
             return contains(l, l.object_from_world.point(p));
         }
         case Op::Union:

@@ -16,6 +16,13 @@ bool contains(const Leaf& leaf, const glm::dvec3& p_object);
 // Prism leaves (PrimKind::Prism, parameters c) over section `poly`.
 bool contains_prism(const Polygon2& poly, const double* c, const glm::dvec3& p_object);
 
+// Lathe leaves (PrimKind::Lathe) over section `poly`: the point turned back
+// into the (ρ, z) half-plane, then the even-odd rule.
+bool contains_lathe(const Polygon2& poly, const glm::dvec3& p_object);
+
+// The even-odd rule for the point (px, py) and the polygon set.
+bool even_odd(const Polygon2& poly, double px, double py);
+
 // True when the world point p is strictly inside the scene's solid: each
 // node's defining rule applied to its children (union: any; intersection:
 // all, and at least one child; difference: the minuend and no subtrahend).

@@ -65,6 +65,8 @@ enum class PrimKind : std::uint8_t {
     Prism,        // p[0] = z0, p[1] = z1 (> z0): a polygon set (even-odd) times the slab z0 < z < z1,
                   //   the section at z scaled by 1 + p[2]·(z − z0)/(z1 − z0) (p[2] > −1; 0: straight);
                   //   graph: index into SceneGraph::polygons; Leaf: Leaf::polygon
+    Lathe,        // a polygon set (even-odd) in the half-plane x >= 0 (x = radius, y = height) revolved
+                  //   about Z; no parameters; graph: SceneGraph::polygons; Leaf: Leaf::polygon
 };
 
 // A 2D polygon set filled by the even-odd rule (docs/spec.md §10: OpenSCAD's
@@ -80,7 +82,7 @@ struct Leaf {
     PrimKind kind = PrimKind::Sphere;
     std::uint32_t material = 0;
     std::uint32_t mesh = kNone;        // Mesh only
-    std::uint32_t polygon = kNone;     // Prism only: into Scene::polygons
+    std::uint32_t polygon = kNone;     // Prism and Lathe only: into Scene::polygons
     std::uint32_t source = kNone;      // into Scene::sources
     double p[6] = {0, 0, 0, 0, 0, 0};  // shape parameters, object space
     Affine object_from_world;          // world point -> object point
@@ -158,7 +160,7 @@ struct Scene {
 
     std::vector<Material> materials;      // at least one (the default light grey)
     std::vector<Mesh> meshes;
-    std::vector<Polygon2> polygons;       // Prism leaves' sections, each stored once
+    std::vector<Polygon2> polygons;       // Prism and Lathe leaves' sections, each stored once
     Camera camera;                        // always resolved (docs/spec.md §6 defaults applied)
     std::vector<Light> lights;            // always resolved (defaults applied)
     glm::dvec3 background{0.2, 0.2, 0.2};

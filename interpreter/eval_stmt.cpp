@@ -17,7 +17,7 @@ const char* unimplemented_openscad_module(std::string_view name) {
     static constexpr std::pair<std::string_view, const char*> kMissing[] = {
         {"circle", "a 2D shape"},        {"square", "a 2D shape"},         {"polygon", "a 2D shape"},
         {"text", "a 2D shape"},          {"offset", "a 2D operation"},     {"projection", "a 2D operation"},
-        {"linear_extrude", "an extrusion"}, {"rotate_extrude", "an extrusion"}, {"surface", "a height map"},
+        {"linear_extrude", "an extrusion"}, {"surface", "a height map"},
         {"hull", "a 3D operation"},      {"minkowski", "a 3D operation"},  {"resize", "a 3D operation"},
         {"intersection_for", "a loop"},
     };

@@ -124,14 +124,18 @@ private:
             points = &g_.meshes[gn.index].points;
         }
         std::vector<glm::dvec3> corners;
-        if (gn.prim == csg::PrimKind::Prism) {
+        const csg::Polygon2* section = nullptr;
+        if (gn.prim == csg::PrimKind::Prism || gn.prim == csg::PrimKind::Lathe) {
             if (gn.index >= g_.polygons.size())
                 throw std::invalid_argument("lower_to_csg: malformed scene graph (bad polygon index)");
             leaf.polygon = gn.index;
-            corners = prism_corners(g_.polygons[gn.index], gn.p);
-            points = &corners;
+            section = &g_.polygons[gn.index];
+            if (gn.prim == csg::PrimKind::Prism) {
+                corners = prism_corners(*section, gn.p);
+                points = &corners;
+            }
         }
-        place_leaf(leaf, xf, points, gn.loc);
+        place_leaf(leaf, xf, points, gn.loc, section);
         if (leaf.bounds.empty()) {  // e.g. a mesh without points
             leaves.pop_back();
             return kNone;

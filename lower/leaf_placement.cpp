@@ -43,7 +43,7 @@ std::string format_range(double x) {
 }  // namespace
 
 void place_leaf(csg::Leaf& leaf, const csg::Affine& wfo, const std::vector<glm::dvec3>* mesh_points,
-                const SourceLoc& loc) {
+                const SourceLoc& loc, const csg::Polygon2* lathe_section) {
     if (!all_finite(wfo)) throw SourceError(loc, "the transforms around this primitive are not finite");
     if (!(volume_ratio(wfo.linear) > 1e-12))
         throw SourceError(loc, "the transforms around this primitive are singular (they flatten it to zero volume)");
@@ -62,6 +62,8 @@ void place_leaf(csg::Leaf& leaf, const csg::Affine& wfo, const std::vector<glm::
     leaf.normal_to_world = glm::transpose(leaf.object_from_world.linear);
     if (leaf.kind == csg::PrimKind::Mesh || leaf.kind == csg::PrimKind::Prism)
         leaf.bounds = mesh_points ? mesh_bounds(*mesh_points, wfo) : csg::Aabb{};
+    else if (leaf.kind == csg::PrimKind::Lathe)
+        leaf.bounds = lathe_section ? lathe_bounds(*lathe_section, wfo) : csg::Aabb{};
     else if (leaf.kind == csg::PrimKind::Plane)
         leaf.bounds = clip_by_halfspace(csg::Aabb::everything(), world_halfspace(leaf));
     else

@@ -10,11 +10,13 @@ namespace kerf {
 
 // Fills leaf.world_from_object, object_from_world, normal_to_world and
 // bounds (leaf.kind and leaf.p must be set; mesh_points for Mesh leaves,
-// prism_corners for Prism leaves: the box of a point set's image is exact).
+// prism_corners for Prism leaves: the box of a point set's image is exact;
+// the section for Lathe leaves).
 // A singular or non-finite composed transform is a SourceError at `loc`, and
 // so is a box outside the renderable range (check_range).
 void place_leaf(csg::Leaf& leaf, const csg::Affine& world_from_object,
-                const std::vector<glm::dvec3>* mesh_points, const SourceLoc& loc);
+                const std::vector<glm::dvec3>* mesh_points, const SourceLoc& loc,
+                const csg::Polygon2* lathe_section = nullptr);
 
 // The vertices of a prism's section on both caps (parameters p: the top one scaled by 1 + p[2]).
 std::vector<glm::dvec3> prism_corners(const csg::Polygon2& poly, const double* p);

@@ -23,6 +23,20 @@ double paraboloid_support(double h, double r, const glm::dvec3& w) {
     return a * a * r * r / (4 * h * -w.z);
 }
 
+// The box [c_i − h(−row_i L), c_i + h(row_i L)] of support function h under the map.
+template <class Support>
+csg::Aabb support_bounds(const csg::Affine& world_from_object, const Support& h) {
+    csg::Aabb box;
+    const glm::dmat3& m = world_from_object.linear;
+    for (int i = 0; i < 3; ++i) {
+        // Row i of L (GLM is column-major: m[col][row]).
+        const glm::dvec3 row(m[0][i], m[1][i], m[2][i]);
+        box.hi[i] = world_from_object.offset[i] + h(row);
+        box.lo[i] = world_from_object.offset[i] - h(-row);
+    }
+    return box;
+}
+
 }  // namespace
 
 double primitive_support(csg::PrimKind kind, const double p[6], const glm::dvec3& w) {
@@ -50,7 +64,8 @@ double primitive_support(csg::PrimKind kind, const double p[6], const glm::dvec3
             return std::max(p[1], p[2]) * len_xy(w) + 0.5 * p[0] * std::abs(w.z);
         case csg::PrimKind::Plane:
         case csg::PrimKind::Mesh:
-        case csg::PrimKind::Prism:  // bounded from its own 2D data (leaf_placement)
+        case csg::PrimKind::Prism:  // bounded from its own 2D data (leaf_placement, lathe_bounds)
+        case csg::PrimKind::Lathe:
             break;
     }
     return std::numeric_limits<double>::infinity();
@@ -67,15 +82,18 @@ csg::Aabb primitive_bounds(csg::PrimKind kind, const double p[6], const csg::Aff
         leaf.object_from_world.offset = -(leaf.object_from_world.linear * world_from_object.offset);
         return clip_by_halfspace(csg::Aabb::everything(), world_halfspace(leaf));
     }
-    csg::Aabb box;
-    const glm::dmat3& m = world_from_object.linear;
-    for (int i = 0; i < 3; ++i) {
-        // Row i of L (GLM is column-major: m[col][row]).
-        const glm::dvec3 row(m[0][i], m[1][i], m[2][i]);
-        box.hi[i] = world_from_object.offset[i] + primitive_support(kind, p, row);
-        box.lo[i] = world_from_object.offset[i] - primitive_support(kind, p, -row);
-    }
-    return box;
+    return support_bounds(world_from_object, [&](const glm::dvec3& w) { return primitive_support(kind, p, w); });
+}
+
+// The hull of a solid of revolution is the hull of its vertices' circles,
+// and the circle of radius r at height z has support r·|w_xy| + z·w_z.
+csg::Aabb lathe_bounds(const csg::Polygon2& poly, const csg::Affine& world_from_object) {
+    return support_bounds(world_from_object, [&](const glm::dvec3& w) {
+        double h = -std::numeric_limits<double>::infinity();
+        const double a = len_xy(w);
+        for (const glm::dvec4& e : poly.edges) h = std::max({h, e.x * a + e.y * w.z, e.z * a + e.w * w.z});
+        return h;
+    });
 }
 
 HalfSpace world_halfspace(const csg::Leaf& leaf) {

@@ -17,6 +17,9 @@ double primitive_support(csg::PrimKind kind, const double p[6], const glm::dvec3
 // unbounded except along an axis its world normal is exactly parallel to).
 csg::Aabb primitive_bounds(csg::PrimKind kind, const double p[6], const csg::Affine& world_from_object);
 
+// Exact world box of a Lathe leaf over section `poly`.
+csg::Aabb lathe_bounds(const csg::Polygon2& poly, const csg::Affine& world_from_object);
+
 // A world half-space {x : dot(normal, x) <= offset}.
 struct HalfSpace {
     glm::dvec3 normal{0, 0, 1};

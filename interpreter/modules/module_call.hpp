@@ -65,6 +65,7 @@ std::span<const ModuleEntry> transform_modules();
 std::span<const ModuleEntry> appearance_modules();
 std::span<const ModuleEntry> setup_modules();
 std::span<const ModuleEntry> shape2d_modules();  // shapes2d.cpp
+std::span<const ModuleEntry> revolve_modules();  // rotate_extrude.cpp
 std::span<const ModuleEntry> text_modules();     // text.cpp
 
 // The built-in module called `name`, or null.

@@ -17,7 +17,8 @@ int intersect_leaf(const Leaf& leaf, const glm::vec<3, T>& o, const glm::vec<3, 
         case PrimKind::Paraboloid: return intersect_paraboloid(leaf.p, o, d, out);
         case PrimKind::Hyperboloid: return intersect_hyperboloid(leaf.p, o, d, out);
         case PrimKind::Mesh: return 0;  // triangle meshes are Embree geometry, not analytic
-        case PrimKind::Prism: return 0;  // any number of spans: intersect_prism (prism.hpp)
+        case PrimKind::Prism:  // any number of spans: intersect_prism (prism.hpp)
+        case PrimKind::Lathe: return 0;  // and intersect_lathe (lathe.hpp)
     }
     return 0;
 }
@@ -32,7 +33,8 @@ glm::dvec3 object_normal(const Leaf& leaf, const glm::dvec3& p, std::uint8_t par
         case PrimKind::Paraboloid: return normal_paraboloid(leaf.p, p, part);
         case PrimKind::Hyperboloid: return normal_hyperboloid(leaf.p, p, part);
         case PrimKind::Mesh:
-        case PrimKind::Prism: break;  // by triangle / edge: build.hpp, prism.hpp
+        case PrimKind::Prism:
+        case PrimKind::Lathe: break;  // by triangle / edge: build.hpp, prism.hpp, lathe.hpp
     }
     return {0, 0, 1};
 }

@@ -20,33 +20,6 @@ namespace {
 template <typename T>
 T cross2(T ax, T ay, T bx, T by) { return ax * by - ay * bx; }
 
-// One end of a span: its position and part.
-template <typename T>
-struct End {
-    T s;
-    std::uint8_t part;
-    std::uint32_t edge;
-};
-
-// The side part whose outward normal faces against the ray at an entry
-// (along it at an exit): perp(e) faces along d exactly when cross(d, e) > 0.
-inline std::uint8_t edge_part(bool plus, bool entering) {
-    return plus != entering ? kPartEdge : kPartEdgeFlipped;
-}
-
-template <typename T>
-void emit(PrismSpan<T>* out, int& n, T tc, const End<T>& a, const End<T>& b) {
-    const T t0 = tc + a.s, t1 = tc + b.s;
-    if (!(t0 < t1)) return;  // zero length (degenerate rule)
-    if (n > 0 && !(out[n - 1].s.t1 < t0)) {  // a zero-length gap: one span
-        out[n - 1].s.t1 = t1;
-        out[n - 1].s.part1 = b.part;
-        out[n - 1].edge1 = b.edge;
-        return;
-    }
-    out[n++] = PrismSpan<T>{Span<T>{t0, t1, a.part, b.part}, a.edge, b.edge};
-}
-
 template <typename T>
 int straight_prism(const Polygon2& poly, const double* p, const glm::vec<3, T>& o, const glm::vec<3, T>& d,
                    PrismSpan<T>* out, PrismCrossing<T>* scratch, T wa, T wb) {
@@ -74,7 +47,7 @@ int straight_prism(const Polygon2& poly, const double* p, const glm::vec<3, T>& 
     }
     const T lo = std::max(sa, wa - tc), hi = std::min(sb, wb - tc);
     if (!(lo <= hi)) return 0;
-    const End<T> cap0{sa, pa, 0}, cap1{sb, pb, 0};
+    const PrismEnd<T> cap0{sa, pa, 0}, cap1{sb, pb, 0};
     int n = 0;
     if (d.x == T(0) && d.y == T(0)) {
         // Parallel to the sides: inside the whole chord or not at all (a ray
@@ -87,13 +60,13 @@ int straight_prism(const Polygon2& poly, const double* p, const glm::vec<3, T>& 
             // x where the edge meets y = c.y, compared with c.x by sign alone.
             inside ^= (cross2(ax, ay, bx, by) > T(0)) == (by > ay);
         }
-        if (inside) emit(out, n, tc, cap0, cap1);
+        if (inside) emit_prism_span(out, n, tc, cap0, cap1);
         return n;
     }
     // Crossings: before lo they only set the parity at lo (and the last one
     // may start the first span); after hi only the first may end the last.
     bool inside = false;
-    End<T> before{-inf, kPartNone, 0}, after{inf, kPartNone, 0};
+    PrismEnd<T> before{-inf, kPartNone, 0}, after{inf, kPartNone, 0};
     bool before_plus = false, after_plus = false;
     int k = 0;
     const T inv_dd = T(1) / (d.x * d.x + d.y * d.y);
@@ -122,21 +95,21 @@ int straight_prism(const Polygon2& poly, const double* p, const glm::vec<3, T>& 
         }
     }
     std::sort(scratch, scratch + k, [](const PrismCrossing<T>& x, const PrismCrossing<T>& y) { return x.s < y.s; });
-    End<T> start = cap0;
+    PrismEnd<T> start = cap0;
     if (inside && before.s > sa) start = {before.s, edge_part(before_plus, true), before.edge};
     for (int j = 0; j < k; ++j) {
         const PrismCrossing<T>& x = scratch[j];
         if (!inside) {
-            start = x.s > sa ? End<T>{x.s, edge_part(x.plus, true), x.edge} : cap0;
+            start = x.s > sa ? PrismEnd<T>{x.s, edge_part(x.plus, true), x.edge} : cap0;
         } else {
-            const End<T> end = x.s < sb ? End<T>{x.s, edge_part(x.plus, false), x.edge} : cap1;
-            emit(out, n, tc, start, end);
+            const PrismEnd<T> end = x.s < sb ? PrismEnd<T>{x.s, edge_part(x.plus, false), x.edge} : cap1;
+            emit_prism_span(out, n, tc, start, end);
         }
         inside = !inside;
     }
     if (inside) {
-        const End<T> end = after.s < sb ? End<T>{after.s, edge_part(after_plus, false), after.edge} : cap1;
-        emit(out, n, tc, start, end);
+        const PrismEnd<T> end = after.s < sb ? PrismEnd<T>{after.s, edge_part(after_plus, false), after.edge} : cap1;
+        emit_prism_span(out, n, tc, start, end);
     }
     return n;
 }

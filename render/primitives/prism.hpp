@@ -34,6 +34,36 @@ struct PrismCrossing {
     bool plus;          // cross(d_xy, edge) > 0
 };
 
+// One end of a span (prism and lathe leaves): its position and part.
+template <typename T>
+struct PrismEnd {
+    T s;
+    std::uint8_t part;
+    std::uint32_t edge;
+};
+
+// The side part whose outward normal faces against the ray at an entry
+// (along it at an exit): +perp(e) faces along d exactly when `plus`.
+inline std::uint8_t edge_part(bool plus, bool entering) {
+    return plus != entering ? kPartEdge : kPartEdgeFlipped;
+}
+
+// Appends the span [tc + a.s, tc + b.s] (spans come in increasing order) if
+// it keeps a positive length; a gap that rounds to nothing merges it with
+// the previous span (degenerate rule, docs/accuracy.md).
+template <typename T>
+void emit_prism_span(PrismSpan<T>* out, int& n, T tc, const PrismEnd<T>& a, const PrismEnd<T>& b) {
+    const T t0 = tc + a.s, t1 = tc + b.s;
+    if (!(t0 < t1)) return;
+    if (n > 0 && !(out[n - 1].s.t1 < t0)) {
+        out[n - 1].s.t1 = t1;
+        out[n - 1].s.part1 = b.part;
+        out[n - 1].edge1 = b.edge;
+        return;
+    }
+    out[n++] = PrismSpan<T>{Span<T>{t0, t1, a.part, b.part}, a.edge, b.edge};
+}
+
 // Room intersect_prism needs: spans and crossings for a section of n edges.
 inline std::size_t prism_span_room(std::size_t edges) { return edges / 2 + 2; }
 

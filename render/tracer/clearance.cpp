@@ -58,7 +58,8 @@ double object_clearance(const csg::Leaf& leaf, const glm::dvec3& q) {
         case PrimKind::Paraboloid:
         case PrimKind::Hyperboloid:
         case PrimKind::Mesh:
-        case PrimKind::Prism: return 0;
+        case PrimKind::Prism:
+        case PrimKind::Lathe: return 0;
     }
     return 0;
 }

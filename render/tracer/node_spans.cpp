@@ -50,7 +50,7 @@ bool box_hit(const RayState& es, const csg::Aabb& box, double a, double b) {
 std::uint32_t leaf_spans(RayState& es, const Node& n, double a, double b) {
     const csg::Leaf& leaf = es.impl->scene.leaves[n.first];
     if (leaf.kind == csg::PrimKind::Mesh) return es.mesh_spans(n.first, a, b);
-    if (leaf.kind == csg::PrimKind::Prism) return prism_spans(es, n.first, a, b);
+    if (leaf.kind == csg::PrimKind::Prism || leaf.kind == csg::PrimKind::Lathe) return prism_spans(es, n.first, a, b);
     const glm::dvec3 lo = leaf.object_from_world.point(es.o);
     const glm::dvec3 ld = leaf.object_from_world.vector(es.d);
     csg::Span<double> spans[csg::kMaxSpans];

@@ -1,4 +1,5 @@
-// Prism leaves in the tracer: intersect_prism in object space with
+// Prism and lathe leaves in the tracer: intersect_prism / intersect_lathe
+// in object space with
 // per-thread buffers sized for the largest section seen (they only grow: no
 // allocation per ray once warm), spans shorter than the degenerate rule's
 // eps dropped (a zero-area section's edges cross in pairs a rounding apart),
@@ -7,6 +8,7 @@
 
 #include <vector>
 
+#include "render/primitives/lathe.hpp"
 #include "render/primitives/prism.hpp"
 #include "render/tracer/ray_state.hpp"
 
@@ -18,9 +20,9 @@ template <typename T>
 struct PrismBuffers {
     std::vector<csg::PrismSpan<T>> spans;
     std::vector<csg::PrismCrossing<T>> crossings;
-    void fit(std::size_t edges) {
-        if (crossings.size() < edges) crossings.resize(edges);
-        if (spans.size() < csg::prism_span_room(edges)) spans.resize(csg::prism_span_room(edges));
+    void fit(std::size_t crossing_room, std::size_t span_room) {
+        if (crossings.size() < crossing_room) crossings.resize(crossing_room);
+        if (spans.size() < span_room) spans.resize(span_room);
     }
 };
 
@@ -28,9 +30,16 @@ template <typename T>
 int prism_in(const csg::Polygon2& poly, const csg::Leaf& leaf, const glm::dvec3& o, const glm::dvec3& d, double wa,
              double wb, std::vector<csg::PrismSpan<double>>& out) {
     thread_local PrismBuffers<T> buf;
-    buf.fit(poly.edges.size());
-    const int n = csg::intersect_prism<T>(poly, leaf.p, glm::vec<3, T>(o), glm::vec<3, T>(d), buf.spans.data(),
-                                          buf.crossings.data(), T(wa), T(wb));
+    const std::size_t edges = poly.edges.size();
+    int n;
+    if (leaf.kind == csg::PrimKind::Lathe) {
+        buf.fit(csg::lathe_crossing_room(edges), csg::lathe_span_room(edges));
+        n = csg::intersect_lathe<T>(poly, glm::vec<3, T>(o), glm::vec<3, T>(d), buf.spans.data(), buf.crossings.data());
+    } else {
+        buf.fit(edges, csg::prism_span_room(edges));
+        n = csg::intersect_prism<T>(poly, leaf.p, glm::vec<3, T>(o), glm::vec<3, T>(d), buf.spans.data(),
+                                    buf.crossings.data(), T(wa), T(wb));
+    }
     if (out.size() < buf.spans.size()) out.resize(buf.spans.size());
     for (int i = 0; i < n; ++i) {
         const csg::PrismSpan<T>& s = buf.spans[std::size_t(i)];

@@ -2,6 +2,7 @@
 // span end names the leaf surface (and mesh triangle) and whether the CSG
 // flipped it (a subtrahend's surface faces into the minuend).
 #include "render/primitives/primitives.hpp"
+#include "render/primitives/lathe.hpp"
 #include "render/primitives/prism.hpp"
 #include "render/tracer/build.hpp"
 
@@ -13,6 +14,8 @@ glm::dvec3 CsgTracer::normal(const TraceHit& hit, const glm::dvec3& world_point)
         leaf.kind == csg::PrimKind::Mesh    ? triangle_normal(impl_->scene.meshes[leaf.mesh], hit.surface.prim)
         : leaf.kind == csg::PrimKind::Prism ? csg::normal_prism(impl_->scene.polygons[leaf.polygon], leaf.p, hit.surface.part,
                                                                 hit.surface.prim)
+        : leaf.kind == csg::PrimKind::Lathe ? csg::normal_lathe(impl_->scene.polygons[leaf.polygon], hit.surface.part,
+                                                                hit.surface.prim, leaf.object_from_world.point(world_point))
                                             : csg::object_normal(leaf, leaf.object_from_world.point(world_point),
                                                                  hit.surface.part);
     glm::dvec3 n = leaf.normal_to_world * n_obj;

@@ -127,3 +127,18 @@ TEST_CASE("examples/gear.sdl: teeth, bore, keyway and lightening holes where the
     CHECK_FALSE(csg::contains(s, at(6, 60, 2)));       // a lightening hole
     CHECK_FALSE(csg::contains(s, at(8.5, gap, 4.01))); // above the top
 }
+
+TEST_CASE("examples/vase.sdl: the wall where the profile puts it, the quarter after 270 degrees open") {
+    const csg::Scene s = lower_example("vase.sdl");
+    // At z = 6 the profile's outer radius is 3 + 1.6·sin 90° = 4.6, the wall 0.4 thick.
+    auto at = [](double deg, double rho, double z) {
+        return glm::dvec3(rho * std::cos(deg * M_PI / 180), rho * std::sin(deg * M_PI / 180), z);
+    };
+    CHECK(csg::contains(s, at(90, 4.4, 6)));
+    CHECK(csg::contains(s, at(200, 4.4, 6)));
+    CHECK_FALSE(csg::contains(s, at(90, 4.7, 6)));
+    CHECK_FALSE(csg::contains(s, at(90, 4.1, 6)));
+    CHECK_FALSE(csg::contains(s, at(315, 4.4, 6)));  // the open quarter
+    CHECK(csg::contains(s, at(45, 1, 0.3)));         // the foot
+    CHECK(s.bounds().lo.z == 0);
+}

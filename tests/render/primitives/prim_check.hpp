@@ -58,7 +58,8 @@ inline Ball bounding_ball(const Leaf& l, double size) {
         case PrimKind::Paraboloid: return {dvec3(0, 0, 0.5 * p[0]), std::hypot(0.5 * p[0], p[1])};
         case PrimKind::Hyperboloid: return {dvec3(0), std::hypot(0.5 * p[0], std::max(p[1], p[2]))};
         case PrimKind::Mesh:
-        case PrimKind::Prism: break;  // not generated here: their own tests
+        case PrimKind::Prism:
+        case PrimKind::Lathe: break;  // not generated here: their own tests
     }
     return {dvec3(0), size};
 }
@@ -346,7 +347,8 @@ inline dvec3 surface_point(const Leaf& l, RayGen& g) {
             return radial * std::sqrt(p[2] * p[2] + (p[1] * p[1] - p[2] * p[2]) * s * s) + dvec3(0, 0, z);
         }
         case PrimKind::Mesh:
-        case PrimKind::Prism: break;  // not generated here: their own tests
+        case PrimKind::Prism:
+        case PrimKind::Lathe: break;  // not generated here: their own tests
     }
     return dvec3(0);
 }
@@ -412,7 +414,8 @@ inline std::vector<dvec3> special_points(const Leaf& l) {
             v.push_back({0, 0, -0.5 * p[0]});
             break;
         case PrimKind::Mesh:
-        case PrimKind::Prism: break;  // their own tests (test_mesh_leaves, test_prism)
+        case PrimKind::Prism:
+        case PrimKind::Lathe: break;  // their own tests (test_mesh_leaves, test_prism, test_lathe)
     }
     return v;
 }

@@ -15,45 +15,19 @@
 #include <vector>
 
 #include "csg/membership.hpp"
+#include "tests/render/primitives/polygon_sections.hpp"
 #include "render/primitives/prism.hpp"
 
 using namespace kerf;
+using test::add_path;
+using test::finish;
+using test::Section;
+using test::seg_distance;
+using test::star;
 using glm::dvec2;
 using glm::dvec3;
 
 namespace {
-
-struct Section {
-    csg::Polygon2 poly;
-    std::vector<dvec2> vertices;
-};
-
-void add_path(Section& s, const std::vector<dvec2>& path) {
-    for (std::size_t i = 0; i < path.size(); ++i) {
-        const dvec2 p = path[i], q = path[(i + 1) % path.size()];
-        if (p != q) s.poly.edges.emplace_back(p.x, p.y, q.x, q.y);
-        s.vertices.push_back(p);
-    }
-}
-
-void finish(Section& s) {
-    s.poly.lo = dvec2(1e300);
-    s.poly.hi = dvec2(-1e300);
-    for (const dvec2& v : s.vertices) {
-        s.poly.lo = glm::min(s.poly.lo, v);
-        s.poly.hi = glm::max(s.poly.hi, v);
-    }
-}
-
-std::vector<dvec2> star(std::mt19937_64& rng, dvec2 c, double r, int n) {
-    std::uniform_real_distribution<double> u(0.3, 1.0);
-    std::vector<dvec2> out;
-    for (int i = 0; i < n; ++i) {
-        const double a = 2 * M_PI * i / n, rr = r * u(rng);
-        out.push_back(c + rr * dvec2(std::cos(a), std::sin(a)));
-    }
-    return out;
-}
 
 // Kinds of section, scaled by `scale`.
 Section make_section(std::mt19937_64& rng, int kind, double scale) {
@@ -81,12 +55,6 @@ Section make_section(std::mt19937_64& rng, int kind, double scale) {
     for (dvec2& v : s.vertices) v *= scale;
     finish(s);
     return s;
-}
-
-double seg_distance(const glm::dvec4& e, dvec2 p) {
-    const dvec2 a(e.x, e.y), b(e.z, e.w), ab = b - a;
-    const double t = std::clamp(glm::dot(p - a, ab) / glm::dot(ab, ab), 0.0, 1.0);
-    return glm::length(p - (a + t * ab));
 }
 
 // Distance from p to the prism's surface, by brute force (no ray code):
