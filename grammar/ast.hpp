@@ -44,6 +44,7 @@ enum class ExprKind {
     Assert,     // args; items = {body}            (`assert(c, "m") expr`)
     // Generators, only as list elements:
     ListFor,    // bindings (several = nested loops); items = {element}
+    ListForC,   // `for (init; cond; incr)`: bindings = init, args = incr; items = {cond, element}
     ListIf,     // items = {cond, then} or {cond, then, else}
     ListLet,    // bindings; items = {element}
 };

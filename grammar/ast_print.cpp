@@ -85,6 +85,13 @@ void print(std::string& out, const Expr& e) {
         case ExprKind::Echo: out += "(echo "; print_list(out, e.args); print_items(out, e); break;
         case ExprKind::Assert: out += "(assert "; print_list(out, e.args); print_items(out, e); break;
         case ExprKind::ListFor: out += "(list-for "; print_list(out, e.bindings); print_items(out, e); break;
+        case ExprKind::ListForC:
+            out += "(list-for-c ";
+            print_list(out, e.bindings);
+            out += ' ';
+            print_list(out, e.args);
+            print_items(out, e);
+            break;
         case ExprKind::ListIf: out += "(list-if"; print_items(out, e); break;
         case ExprKind::ListLet: out += "(list-let "; print_list(out, e.bindings); print_items(out, e); break;
     }

@@ -63,7 +63,17 @@ struct list_expr : nest<list_open, pg::must<list_body>> {};
 
 // Generators (list comprehension elements), only inside `[...]`.
 struct gen_for_kw : kw<'f', 'o', 'r'> {};
-struct gen_for : nest<gen_for_kw, pg::must<bind_list>, pg::must<list_element>> {};
+// `for (init; cond; incr)`, OpenSCAD's C-style loop: after the first
+// binding list comes `;` instead of `)`; `cfor_tail` marks the loop as one.
+struct cfor_semi : pg::seq<pg::one<';'>, ws> {};
+struct cfor_cond : pg::seq<expr> {};
+struct cfor_incr_open : pg::success {};  // the increment's binding list starts here
+struct cfor_incr : pg::seq<cfor_incr_open, pg::must<binding_next>, pg::star<pg::if_must<comma, binding_next>>> {};
+struct cfor_tail : pg::if_must<cfor_semi, cfor_cond, cfor_semi, cfor_incr, rparen> {};
+struct for_header_end : pg::sor<rparen, cfor_tail> {};
+struct for_bindings : nest<args_open, pg::must<binding_next>, pg::star<pg::if_must<comma, binding_next>>,
+                           pg::must<for_header_end>> {};
+struct gen_for : nest<gen_for_kw, pg::must<for_bindings>, pg::must<list_element>> {};
 struct gen_if_kw : kw<'i', 'f'> {};  // marks where the items start
 struct gen_else : pg::if_must<kw<'e', 'l', 's', 'e'>, list_element> {};
 struct gen_if

@@ -262,6 +262,39 @@ void Evaluator::expand_for(const ast::Expr& e, std::size_t k, Scope& loop, Value
     else loop.truncate(slot);
 }
 
+// `for (init; cond; incr) element`, as OpenSCAD runs it: init binds in
+// order, then while cond holds, the element, then incr evaluated in order
+// (each sees the ones before it) and applied over the loop's variables; a
+// name only incr binds joins them. Every pass counts one iteration.
+void Evaluator::expand_for_c(const ast::Expr& e, Scope& s, ValueList& out) {
+    DynRestore restore(dyn_);
+    Scope loop(&s);
+    bind_sequential(e.bindings, loop, "for");
+    const std::size_t dyn_loop = dyn_.size();
+    while (eval(*e.items[0], loop).truthy()) {
+        count_iterations(1, e.loc);
+        count_step(e.loc);
+        expand_element(*e.items[1], loop, out);
+        const std::size_t dyn_before = dyn_.size();
+        Scope next(&loop);
+        bind_sequential(e.args, next, "for");
+        for (VarSlot& v : next.vars) {
+            if (VarSlot* old = loop.find_local(v.name)) old->value = std::move(v.value);
+            else loop.add(std::move(v));
+        }
+        // `$` names went to the dynamic stack: replace the loop's earlier
+        // entries instead of growing it by one per pass.
+        std::size_t kept = dyn_before;
+        for (std::size_t i = dyn_before; i < dyn_.size(); ++i) {
+            std::size_t j = dyn_loop;
+            while (j < dyn_before && dyn_[j].name != dyn_[i].name) ++j;
+            if (j < dyn_before) dyn_[j].value = std::move(dyn_[i].value);
+            else dyn_[kept++] = std::move(dyn_[i]);
+        }
+        dyn_.resize(kept);
+    }
+}
+
 void Evaluator::expand_element(const ast::Expr& e, Scope& s, ValueList& out) {
     switch (e.kind) {
         case ast::ExprKind::ListFor: {
@@ -276,6 +309,7 @@ void Evaluator::expand_element(const ast::Expr& e, Scope& s, ValueList& out) {
             if (!e.bindings.empty()) expand_for(e, 0, loop, out);
             return;
         }
+        case ast::ExprKind::ListForC: expand_for_c(e, s, out); return;
         case ast::ExprKind::ListIf:
             if (eval(*e.items[0], s).truthy()) expand_element(*e.items[1], s, out);
             else if (e.items.size() > 2) expand_element(*e.items[2], s, out);
@@ -376,6 +410,7 @@ Value Evaluator::eval(const ast::Expr& e, Scope& s) {
             do_assert(e.args, s, e.loc);
             return e.items.empty() || !e.items[0] ? Value() : eval(*e.items[0], s);
         case K::ListFor:
+        case K::ListForC:
         case K::ListIf:
         case K::ListLet: throw SourceError(e.loc, "a list generator is only allowed inside [ ]");
     }

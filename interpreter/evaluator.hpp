@@ -92,6 +92,7 @@ private:
     Value call_function(const ast::Expr& e, Scope& s);
     void expand_element(const ast::Expr& e, Scope& s, ValueList& out);
     void expand_for(const ast::Expr& e, std::size_t k, Scope& s, ValueList& out);
+    void expand_for_c(const ast::Expr& e, Scope& s, ValueList& out);
     void push_element(ValueList& out, Value v, const SourceLoc& loc);
     void do_echo(const std::vector<ast::Binding>& args, Scope& s);
     Value call_builtin(const ast::Expr& e, Scope& s);
