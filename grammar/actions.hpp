@@ -78,6 +78,7 @@ KERF_AT(gen_if_kw, b.mark_items());
 KERF_AT(gen_if, b.list_if(at));
 KERF_AT(gen_let, b.list_let(at));
 KERF_AT(let_expr, b.let(at));
+KERF_AT(empty_body, b.undef(at));
 KERF_AT(echo_expr, b.echo(at));
 KERF_AT(assert_expr, b.assert_(at));
 

@@ -85,9 +85,13 @@ struct list_element : pg::sor<generator, expr> {};
 // Expression prefixes `let (...) e`, `echo (...) e`, `assert (...) e`.
 struct let_expr : nest<kw<'l', 'e', 't'>, pg::must<bind_list>, pg::must<expr>> {};
 struct echo_head : pg::seq<pg::keyword<'e', 'c', 'h', 'o'>, ws, pg::at<pg::one<'('>>> {};
-struct echo_expr : nest<echo_head, pg::must<call_args>, pg::must<expr>> {};
+// OpenSCAD lets the expression after `echo(...)`/`assert(...)` be empty
+// (`x = echo("hi");` is undef); kerf's own dialect requires it.
+struct empty_body : pg::seq<openscad_on, pg::success> {};
+struct prefix_body : pg::sor<expr, empty_body> {};
+struct echo_expr : nest<echo_head, pg::must<call_args>, pg::must<prefix_body>> {};
 struct assert_head : pg::seq<pg::keyword<'a', 's', 's', 'e', 'r', 't'>, ws, pg::at<pg::one<'('>>> {};
-struct assert_expr : nest<assert_head, pg::must<call_args>, pg::must<expr>> {};
+struct assert_expr : nest<assert_head, pg::must<call_args>, pg::must<prefix_body>> {};
 
 struct callee : name {};
 struct call_expr : pg::if_must<pg::seq<pg::at<name, ws, pg::one<'('>>, callee, ws>, call_args> {};
