@@ -242,7 +242,26 @@ void Builder::generator(ExprKind kind, SourceLoc at) {
 
 void Builder::list_let(SourceLoc at) { generator(ExprKind::ListLet, std::move(at)); }
 
+void Builder::list_each(SourceLoc at) {
+    std::uint32_t h = 0;
+    auto e = make(ExprKind::ListEach, std::move(at));
+    e->items.push_back(pop(h));
+    push(std::move(e), h + 1);
+}
+
 void Builder::let(SourceLoc at) { generator(ExprKind::Let, std::move(at)); }
+
+void Builder::function_literal(SourceLoc at) { generator(ExprKind::Function, std::move(at)); }
+
+void Builder::apply(SourceLoc at) {
+    BindingList b = pop_bindings();
+    std::uint32_t h = 0;
+    auto callee = pop(h);
+    auto e = make(ExprKind::Apply, std::move(at));
+    e->items.push_back(std::move(callee));
+    e->args = std::move(b.items);
+    push(std::move(e), std::max(h, b.height) + 1);
+}
 
 void Builder::echo(SourceLoc at) {
     std::uint32_t h = 0;

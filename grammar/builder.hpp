@@ -47,7 +47,10 @@ public:
     void for_header();   // a `for` header is complete (plain or C-style)
     void list_for(SourceLoc at);
     void list_let(SourceLoc at);
+    void list_each(SourceLoc at);
     void let(SourceLoc at);
+    void function_literal(SourceLoc at);  // pops the body and the parameter list
+    void apply(SourceLoc at);             // pops the argument list and the callee
     void echo(SourceLoc at);
     void assert_(SourceLoc at);
     void push_name(std::string_view name, SourceLoc at);

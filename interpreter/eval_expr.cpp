@@ -165,6 +165,10 @@ void Evaluator::do_assert(const std::vector<ast::Binding>& args, Scope& s, const
 
 Value Evaluator::call_function(const ast::Expr& e, Scope& s) {
     std::string_view name = e.text;
+    // OpenSCAD calls a variable holding a function before a function of
+    // that name (only once a literal exists can a variable hold one).
+    if (function_values_)
+        if (const Value* v = find_value(name, s); v && v->is_function()) return call_closure(*v, e.args, s, e.loc, e.text);
     for (Scope* sc = &s; sc; sc = sc->parent) {
         auto try_scope = [&](Scope* def_scope) -> const ast::Stmt* {
             for (const ast::Stmt* f : def_scope->functions)
@@ -187,6 +191,18 @@ Value Evaluator::call_function(const ast::Expr& e, Scope& s) {
         return eval(*def->value, callee);
     }
     return call_builtin(e, s);
+}
+
+// A function value's call (function_values.cpp makes them).
+Value Evaluator::call_closure(const Value& f, const std::vector<ast::Binding>& args, Scope& caller,
+                              const SourceLoc& loc, const std::string& name) {
+    Value keep = f;  // the closure lives while it runs, even if rebound
+    const Closure& c = keep.as_function();
+    DepthGuard guard(*this, loc);
+    DynRestore restore(dyn_);
+    Scope callee(&c.env);
+    bind_params(c.literal->bindings, args, name, caller, callee, loc);
+    return eval(*c.literal->items[0], callee);
 }
 
 Value Evaluator::call_builtin(const ast::Expr& e, Scope& s) {
@@ -310,6 +326,23 @@ void Evaluator::expand_element(const ast::Expr& e, Scope& s, ValueList& out) {
             return;
         }
         case ast::ExprKind::ListForC: expand_for_c(e, s, out); return;
+        case ast::ExprKind::ListEach: {
+            // OpenSCAD: a list, range or string is spliced, undef adds
+            // nothing, any other value is added as it is.
+            ValueList inner;
+            expand_element(*e.items[0], s, inner);
+            for (Value& v : inner) {
+                if (v.is_undef()) continue;
+                if (!v.is_list() && !v.is_range() && !v.is_string()) {
+                    push_element(out, std::move(v), e.loc);
+                    continue;
+                }
+                std::uint64_t n = iteration_count(v, e.loc);
+                for (std::uint64_t i = 0; i < n; ++i)
+                    push_element(out, v.is_range() ? Value(v.as_range().at(i)) : v.as_list()[i], e.loc);
+            }
+            return;
+        }
         case ast::ExprKind::ListIf:
             if (eval(*e.items[0], s).truthy()) expand_element(*e.items[1], s, out);
             else if (e.items.size() > 2) expand_element(*e.items[2], s, out);
@@ -397,6 +430,8 @@ Value Evaluator::eval(const ast::Expr& e, Scope& s) {
             return index_value(obj, Value(i), e.loc);
         }
         case K::Call: return call_function(e, s);
+        case K::Function: return make_closure(e, s);
+        case K::Apply: return apply(e, s);
         case K::Let: {
             DynRestore restore(dyn_);
             Scope ls(&s);
@@ -411,6 +446,7 @@ Value Evaluator::eval(const ast::Expr& e, Scope& s) {
             return e.items.empty() || !e.items[0] ? Value() : eval(*e.items[0], s);
         case K::ListFor:
         case K::ListForC:
+        case K::ListEach:
         case K::ListIf:
         case K::ListLet: throw SourceError(e.loc, "a list generator is only allowed inside [ ]");
     }

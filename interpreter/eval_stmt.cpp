@@ -85,6 +85,7 @@ Scope* Evaluator::load_use(const ast::Stmt& st) {
     } restore{files_.includes, outer_includes};
     ChainGuard in_file(files_.includes, path, st.loc);
     auto scope = std::make_unique<Scope>(&root_);
+    scope->file = true;
     bind_block(prepare(prog.stmts), *scope, false);  // its solids are not used
     Scope* raw = scope.get();
     use_scopes_[key] = std::move(scope);
@@ -192,6 +193,7 @@ void Evaluator::eval_block(const std::vector<ast::StmtPtr>& stmts, Scope& s, boo
     std::optional<Scope> own;
     if (info.needs_scope) {
         own.emplace(&s);
+        own->file = top_level;  // the main file's scope lives through the run
         bind_block(info, *own, top_level);
     }
     Scope& scope = own ? *own : s;

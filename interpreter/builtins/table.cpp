@@ -19,6 +19,7 @@ std::string describe(const Value& v) {
         case ValueType::String: return "a string";
         case ValueType::List: return "a list";
         case ValueType::Range: return "a range";
+        case ValueType::Function: return "a function";
     }
     return "a value";
 }
