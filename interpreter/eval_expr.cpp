@@ -77,7 +77,7 @@ Value Evaluator::lookup(const ast::Expr& e, Scope& s) {
         if (name == "$fs") return Value(2);
         if (name == "$preview") return Value(false);
         if (lenient_) return unknown_variable(e);
-        throw SourceError(e.loc, "undefined name '" + e.text + "'");
+        throw SourceError(e.loc, "undefined name '" + e.text + "'" + did_you_mean(e.text, s, NameKind::Variable));
     }
     for (Scope* sc = &s; sc; sc = sc->parent) {
         if (VarSlot* v = sc->find_local(name)) {
@@ -89,7 +89,7 @@ Value Evaluator::lookup(const ast::Expr& e, Scope& s) {
         }
     }
     if (lenient_) return unknown_variable(e);
-    throw SourceError(e.loc, "undefined name '" + e.text + "'");
+    throw SourceError(e.loc, "undefined name '" + e.text + "'" + did_you_mean(e.text, s, NameKind::Variable));
 }
 
 Value Evaluator::unknown_variable(const ast::Expr& e) {
@@ -208,7 +208,8 @@ Value Evaluator::call_closure(const Value& f, const std::vector<ast::Binding>& a
 Value Evaluator::call_builtin(const ast::Expr& e, Scope& s) {
     const Builtin* fn = find_builtin(e.text);
     if (!fn) {
-        if (!lenient_) throw SourceError(e.loc, "undefined function '" + e.text + "'");
+        if (!lenient_)
+            throw SourceError(e.loc, "undefined function '" + e.text + "'" + did_you_mean(e.text, s, NameKind::Function));
         warn(e.loc, "Ignoring unknown function '" + e.text + "'");
         return Value();
     }

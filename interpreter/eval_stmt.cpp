@@ -427,7 +427,7 @@ void Evaluator::instantiate(const ast::Stmt& st, Scope& s, bool top_level) {
     if (builtin_module(st, s, top_level)) return;
     if (const char* what = unimplemented_openscad_module(name))
         throw SourceError(st.loc, "'" + name + "' (" + what + ") is not implemented in kerf yet");
-    if (!lenient_) throw SourceError(st.loc, "unknown module '" + name + "'");
+    if (!lenient_) throw SourceError(st.loc, "unknown module '" + name + "'" + did_you_mean(name, s, NameKind::Module));
     warn(st.loc, "Ignoring unknown module '" + name + "'");
 }
 

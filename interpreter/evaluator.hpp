@@ -102,6 +102,10 @@ private:
                        const std::string& name);
     Value apply(const ast::Expr& e, Scope& s);
     const Value* find_value(std::string_view name, Scope& s);  // quiet lookup: null if unbound
+    // suggest.cpp: "; did you mean 'x'?" from the names visible in s of
+    // one kind (or ""), for the strict "undefined" errors.
+    enum class NameKind { Variable, Function, Module };
+    std::string did_you_mean(std::string_view name, Scope& s, NameKind kind);
     void check_builtin_name(const Builtin& fn, const ast::Binding& a, std::size_t i, std::size_t count);
     // The OpenSCAD dialect's answer to an operator that threw a SoftError.
     Value lenient_operator(const ast::Expr& e, const Value& a, const Value* b);
