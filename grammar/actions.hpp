@@ -70,11 +70,18 @@ KERF_AT(list_empty, b.list_kind(ast::ExprKind::List));
 KERF_AT(list_tail, b.list_kind(ast::ExprKind::List));
 KERF_AT(range_tail, b.list_kind(ast::ExprKind::Range));
 KERF_AT(list_expr, b.list(at));
+KERF_AT(cfor_incr_open, b.open_bindings());
+KERF_AT(cfor_tail, b.c_style_for());
+KERF_AT(for_bindings, b.for_header());
 KERF_AT(gen_for, b.list_for(at));
 KERF_AT(gen_if_kw, b.mark_items());
 KERF_AT(gen_if, b.list_if(at));
 KERF_AT(gen_let, b.list_let(at));
+KERF_AT(gen_each, b.list_each(at));
 KERF_AT(let_expr, b.let(at));
+KERF_AT(function_lit, b.function_literal(at));
+KERF_AT(call_op, b.apply(at));
+KERF_AT(empty_body, b.undef(at));
 KERF_AT(echo_expr, b.echo(at));
 KERF_AT(assert_expr, b.assert_(at));
 

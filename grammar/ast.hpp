@@ -42,10 +42,14 @@ enum class ExprKind {
     Let,        // bindings; items = {body}
     Echo,       // args; items = {body}            (`echo(...) expr`)
     Assert,     // args; items = {body}            (`assert(c, "m") expr`)
+    Function,   // bindings = parameters; items = {body}   (`function (x) x * 2`)
+    Apply,      // items = {callee}; args              (`f(1)(2)`, `fs[0](3)`)
     // Generators, only as list elements:
     ListFor,    // bindings (several = nested loops); items = {element}
+    ListForC,   // `for (init; cond; incr)`: bindings = init, args = incr; items = {cond, element}
     ListIf,     // items = {cond, then} or {cond, then, else}
     ListLet,    // bindings; items = {element}
+    ListEach,   // items = {element}: its lists, ranges and strings spliced (`each v`)
 };
 
 struct Expr {
@@ -54,8 +58,8 @@ struct Expr {
     double number = 0;
     std::string text;
     std::vector<ExprPtr> items;
-    std::vector<Binding> args;      // Call, Echo, Assert
-    std::vector<Binding> bindings;  // Let, ListFor, ListLet
+    std::vector<Binding> args;      // Call, Echo, Assert, Apply, ListForC
+    std::vector<Binding> bindings;  // Let, ListFor, ListForC, ListLet, Function
 };
 
 enum class StmtKind {

@@ -4,16 +4,7 @@
 
 namespace kerf::ast {
 
-namespace {
-void print(std::string& out, const Expr& e);
-void print(std::string& out, const Stmt& s);
-
-std::string number_text(double v) {
-    char buf[64];
-    const auto r = std::to_chars(buf, buf + sizeof buf, v);  // shortest round-trip form
-    return std::string(buf, r.ptr);
-}
-
+// A string literal as written in source: quotes and \\ \" \n \t \r escaped.
 void quoted(std::string& out, const std::string& text) {
     out += '"';
     for (char c : text) {
@@ -27,6 +18,16 @@ void quoted(std::string& out, const std::string& text) {
         }
     }
     out += '"';
+}
+
+namespace {
+void print(std::string& out, const Expr& e);
+void print(std::string& out, const Stmt& s);
+
+std::string number_text(double v) {
+    char buf[64];
+    const auto r = std::to_chars(buf, buf + sizeof buf, v);  // shortest round-trip form
+    return std::string(buf, r.ptr);
 }
 
 void print(std::string& out, const Binding& b) {
@@ -85,6 +86,16 @@ void print(std::string& out, const Expr& e) {
         case ExprKind::Echo: out += "(echo "; print_list(out, e.args); print_items(out, e); break;
         case ExprKind::Assert: out += "(assert "; print_list(out, e.args); print_items(out, e); break;
         case ExprKind::ListFor: out += "(list-for "; print_list(out, e.bindings); print_items(out, e); break;
+        case ExprKind::Function: out += "(function "; print_list(out, e.bindings); print_items(out, e); break;
+        case ExprKind::Apply: out += "(apply"; print_items(out, e); print_args(out, e.args); break;
+        case ExprKind::ListForC:
+            out += "(list-for-c ";
+            print_list(out, e.bindings);
+            out += ' ';
+            print_list(out, e.args);
+            print_items(out, e);
+            break;
+        case ExprKind::ListEach: out += "(list-each"; print_items(out, e); break;
         case ExprKind::ListIf: out += "(list-if"; print_items(out, e); break;
         case ExprKind::ListLet: out += "(list-let "; print_list(out, e.bindings); print_items(out, e); break;
     }

@@ -12,6 +12,9 @@ namespace kerf::ast {
 
 std::string to_sexpr(const Expr& e);
 std::string to_sexpr(const Stmt& s);
+// Appends text as a quoted string literal, escaping \ " and \n \t \r
+// (also OpenSCAD's way of printing a string inside an expression).
+void quoted(std::string& out, const std::string& text);
 // Top-level statements separated by newlines.
 std::string to_sexpr(const Program& p);
 

@@ -197,9 +197,41 @@ void Builder::list_if(SourceLoc at) {
     push(std::move(e), h + 1);
 }
 
+void Builder::c_style_for() { c_style_pending_ = true; }
+
+// Set here, after the header, and read by list_for: a `for` inside the
+// condition or the element has completed its own header by then.
+void Builder::for_header() {
+    for_kinds_.push_back(c_style_pending_);
+    c_style_pending_ = false;
+}
+
 void Builder::list_for(SourceLoc at) {
+    if (for_kinds_.empty()) internal_error("for header");
+    const bool c_style = for_kinds_.back();
+    for_kinds_.pop_back();
+    if (!c_style) {
+        generator(ExprKind::ListFor, std::move(at));
+        return;
+    }
+    // Stacks: exprs [.., cond, element], bindings [.., init, incr].
+    std::uint32_t h = 0, hc = 0;
+    auto e = make(ExprKind::ListForC, std::move(at));
+    auto element = pop(h);
+    auto cond = pop(hc);
+    BindingList incr = pop_bindings();
+    BindingList init = pop_bindings();
+    e->bindings = std::move(init.items);
+    e->args = std::move(incr.items);
+    e->items.reserve(2);
+    e->items.push_back(std::move(cond));
+    e->items.push_back(std::move(element));
+    push(std::move(e), std::max({h, hc, init.height, incr.height}) + 1);
+}
+
+void Builder::generator(ExprKind kind, SourceLoc at) {
     std::uint32_t h = 0;
-    auto e = make(ExprKind::ListFor, std::move(at));
+    auto e = make(kind, std::move(at));
     auto element = pop(h);
     BindingList b = pop_bindings();
     e->bindings = std::move(b.items);
@@ -208,14 +240,27 @@ void Builder::list_for(SourceLoc at) {
     push(std::move(e), std::max(h, b.height) + 1);
 }
 
-void Builder::list_let(SourceLoc at) {
-    list_for(std::move(at));
-    exprs_.back().expr->kind = ExprKind::ListLet;
+void Builder::list_let(SourceLoc at) { generator(ExprKind::ListLet, std::move(at)); }
+
+void Builder::list_each(SourceLoc at) {
+    std::uint32_t h = 0;
+    auto e = make(ExprKind::ListEach, std::move(at));
+    e->items.push_back(pop(h));
+    push(std::move(e), h + 1);
 }
 
-void Builder::let(SourceLoc at) {
-    list_for(std::move(at));
-    exprs_.back().expr->kind = ExprKind::Let;
+void Builder::let(SourceLoc at) { generator(ExprKind::Let, std::move(at)); }
+
+void Builder::function_literal(SourceLoc at) { generator(ExprKind::Function, std::move(at)); }
+
+void Builder::apply(SourceLoc at) {
+    BindingList b = pop_bindings();
+    std::uint32_t h = 0;
+    auto callee = pop(h);
+    auto e = make(ExprKind::Apply, std::move(at));
+    e->items.push_back(std::move(callee));
+    e->args = std::move(b.items);
+    push(std::move(e), std::max(h, b.height) + 1);
 }
 
 void Builder::echo(SourceLoc at) {

@@ -43,9 +43,14 @@ public:
     void list_kind(ast::ExprKind kind);  // List or Range, known at the closing `]`
     void list(SourceLoc at);              // builds that kind from the marked items
     void list_if(SourceLoc at);
+    void c_style_for();  // the `for` header being read is `(init; cond; incr)`
+    void for_header();   // a `for` header is complete (plain or C-style)
     void list_for(SourceLoc at);
     void list_let(SourceLoc at);
+    void list_each(SourceLoc at);
     void let(SourceLoc at);
+    void function_literal(SourceLoc at);  // pops the body and the parameter list
+    void apply(SourceLoc at);             // pops the argument list and the callee
     void echo(SourceLoc at);
     void assert_(SourceLoc at);
     void push_name(std::string_view name, SourceLoc at);
@@ -96,6 +101,8 @@ private:
     BindingList pop_bindings();
     Name pop_name();
     void append(ast::StmtPtr s);
+    // A node of `kind` from the element on top and the binding list below it.
+    void generator(ast::ExprKind kind, SourceLoc at);
 
     std::shared_ptr<const SourceFile> file_;
     std::vector<Slot> exprs_;
@@ -105,6 +112,8 @@ private:
     std::vector<Name> names_;
     std::vector<std::string> ops_;
     std::vector<ast::StmtPtr> open_;  // open_[0] is the program's root block
+    bool c_style_pending_ = false;
+    std::vector<bool> for_kinds_;  // per open list `for`: C-style?
     char member_ = 'x';
     ast::ExprKind list_kind_ = ast::ExprKind::List;
     ast::Modifier modifier_ = ast::Modifier::None;

@@ -37,6 +37,13 @@ struct binding_next : pg::sor<pg::at<rparen>, binding> {};
 struct bind_list
     : nest<args_open, pg::must<binding_next>, pg::star<pg::if_must<comma, binding_next>>, pg::must<rparen>> {};
 
+// `(a, b = 2)`: parameters of a function or module definition or literal.
+struct param_name : name {};
+struct param_default : pg::if_must<assign_eq, expr> {};
+struct param : pg::seq<param_name, ws, pg::opt<param_default>> {};
+struct param_next : pg::sor<pg::at<rparen>, param> {};
+struct params : nest<args_open, pg::must<param_next>, pg::star<pg::if_must<comma, param_next>>, pg::must<rparen>> {};
+
 // ---- primaries ------------------------------------------------------------
 struct number_tok : pg::seq<number_lit, ws> {};
 struct string_tok : pg::seq<string_lit, ws> {};
@@ -63,21 +70,41 @@ struct list_expr : nest<list_open, pg::must<list_body>> {};
 
 // Generators (list comprehension elements), only inside `[...]`.
 struct gen_for_kw : kw<'f', 'o', 'r'> {};
-struct gen_for : nest<gen_for_kw, pg::must<bind_list>, pg::must<list_element>> {};
+// `for (init; cond; incr)`, OpenSCAD's C-style loop: after the first
+// binding list comes `;` instead of `)`; `cfor_tail` marks the loop as one.
+struct cfor_semi : pg::seq<pg::one<';'>, ws> {};
+struct cfor_cond : pg::seq<expr> {};
+struct cfor_incr_open : pg::success {};  // the increment's binding list starts here
+struct cfor_incr : pg::seq<cfor_incr_open, pg::must<binding_next>, pg::star<pg::if_must<comma, binding_next>>> {};
+struct cfor_tail : pg::if_must<cfor_semi, cfor_cond, cfor_semi, cfor_incr, rparen> {};
+struct for_header_end : pg::sor<rparen, cfor_tail> {};
+struct for_bindings : nest<args_open, pg::must<binding_next>, pg::star<pg::if_must<comma, binding_next>>,
+                           pg::must<for_header_end>> {};
+struct gen_for : nest<gen_for_kw, pg::must<for_bindings>, pg::must<list_element>> {};
 struct gen_if_kw : kw<'i', 'f'> {};  // marks where the items start
 struct gen_else : pg::if_must<kw<'e', 'l', 's', 'e'>, list_element> {};
 struct gen_if
     : nest<gen_if_kw, pg::must<lparen>, pg::must<expr>, pg::must<rparen>, pg::must<list_element>, pg::opt<gen_else>> {};
 struct gen_let : nest<kw<'l', 'e', 't'>, pg::must<bind_list>, pg::must<list_element>> {};
-struct generator : pg::sor<gen_for, gen_if, gen_let> {};
+struct gen_each : nest<kw<'e', 'a', 'c', 'h'>, pg::must<list_element>> {};
+struct generator : pg::sor<gen_for, gen_if, gen_let, gen_each> {};
 struct list_element : pg::sor<generator, expr> {};
 
 // Expression prefixes `let (...) e`, `echo (...) e`, `assert (...) e`.
 struct let_expr : nest<kw<'l', 'e', 't'>, pg::must<bind_list>, pg::must<expr>> {};
 struct echo_head : pg::seq<pg::keyword<'e', 'c', 'h', 'o'>, ws, pg::at<pg::one<'('>>> {};
-struct echo_expr : nest<echo_head, pg::must<call_args>, pg::must<expr>> {};
+// OpenSCAD lets the expression after `echo(...)`/`assert(...)` be empty
+// (`x = echo("hi");` is undef); kerf's own dialect requires it.
+struct empty_body : pg::seq<openscad_on, pg::success> {};
+struct prefix_body : pg::sor<expr, empty_body> {};
+struct echo_expr : nest<echo_head, pg::must<call_args>, pg::must<prefix_body>> {};
 struct assert_head : pg::seq<pg::keyword<'a', 's', 's', 'e', 'r', 't'>, ws, pg::at<pg::one<'('>>> {};
-struct assert_expr : nest<assert_head, pg::must<call_args>, pg::must<expr>> {};
+struct assert_expr : nest<assert_head, pg::must<call_args>, pg::must<prefix_body>> {};
+
+// A function literal `function (x) x * 2` (a value, docs/language.md §6).
+struct function_lit_head
+    : pg::seq<pg::keyword<'f', 'u', 'n', 'c', 't', 'i', 'o', 'n'>, ws, pg::at<pg::one<'('>>> {};
+struct function_lit : nest<function_lit_head, pg::must<params>, pg::must<expr>> {};
 
 struct callee : name {};
 struct call_expr : pg::if_must<pg::seq<pg::at<name, ws, pg::one<'('>>, callee, ws>, call_args> {};
@@ -85,7 +112,7 @@ struct ident_name : name {};
 struct ident_expr : pg::seq<ident_name, ws> {};
 
 // Everything that starts with a letter is tried only after a one-byte test.
-struct word_primary : pg::sor<literal_tok, let_expr, echo_expr, assert_expr, call_expr, ident_expr> {};
+struct word_primary : pg::sor<literal_tok, let_expr, echo_expr, assert_expr, function_lit, call_expr, ident_expr> {};
 struct primary : pg::sor<pg::seq<pg::at<pg::digit>, pg::at<name>, word_primary>,  // `608_dia` (OpenSCAD)
                          number_tok, string_tok, paren_expr, list_expr,
                          pg::seq<pg::at<pg::ranges<'a', 'z', 'A', 'Z', '_', '_', '$', '$'>>, word_primary>> {};
@@ -95,7 +122,9 @@ struct index_op : nest<lbracket, pg::must<expr>, pg::must<rbracket>> {};
 struct member_name : pg::seq<pg::one<'x', 'y', 'z'>, pg::not_at<pg::identifier_other>> {};
 struct member_tok : pg::seq<member_name, ws> {};
 struct member_op : pg::if_must<pg::seq<pg::one<'.'>, ws>, member_tok> {};
-struct postfix : pg::seq<primary, pg::star<pg::sor<index_op, member_op>>> {};
+// A call of whatever value an expression has: `f(1)(2)`, `fs[0](3)`.
+struct call_op : pg::seq<pg::at<pg::one<'('>>, call_args> {};
+struct postfix : pg::seq<primary, pg::star<pg::sor<index_op, member_op, call_op>>> {};
 
 struct unary;
 struct unary_op : pg::one<'-', '+', '!'> {};

@@ -52,11 +52,6 @@ struct child_stmt : pg::sor<child_empty, child_block, instantiation> {};
 struct child : counted<child_stmt> {};
 
 // ---- definitions and bindings -----------------------------------------------
-struct param_name : name {};
-struct param_default : pg::if_must<assign_eq, expr> {};
-struct param : pg::seq<param_name, ws, pg::opt<param_default>> {};
-struct param_next : pg::sor<pg::at<rparen>, param> {};
-struct params : nest<args_open, pg::must<param_next>, pg::star<pg::if_must<comma, param_next>>, pg::must<rparen>> {};
 
 struct module_kw : kw<'m', 'o', 'd', 'u', 'l', 'e'> {};
 struct module_name : name {};

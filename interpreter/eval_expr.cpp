@@ -77,7 +77,7 @@ Value Evaluator::lookup(const ast::Expr& e, Scope& s) {
         if (name == "$fs") return Value(2);
         if (name == "$preview") return Value(false);
         if (lenient_) return unknown_variable(e);
-        throw SourceError(e.loc, "undefined name '" + e.text + "'");
+        throw SourceError(e.loc, "undefined name '" + e.text + "'" + did_you_mean(e.text, s, NameKind::Variable));
     }
     for (Scope* sc = &s; sc; sc = sc->parent) {
         if (VarSlot* v = sc->find_local(name)) {
@@ -89,7 +89,7 @@ Value Evaluator::lookup(const ast::Expr& e, Scope& s) {
         }
     }
     if (lenient_) return unknown_variable(e);
-    throw SourceError(e.loc, "undefined name '" + e.text + "'");
+    throw SourceError(e.loc, "undefined name '" + e.text + "'" + did_you_mean(e.text, s, NameKind::Variable));
 }
 
 Value Evaluator::unknown_variable(const ast::Expr& e) {
@@ -165,6 +165,10 @@ void Evaluator::do_assert(const std::vector<ast::Binding>& args, Scope& s, const
 
 Value Evaluator::call_function(const ast::Expr& e, Scope& s) {
     std::string_view name = e.text;
+    // OpenSCAD calls a variable holding a function before a function of
+    // that name (only once a literal exists can a variable hold one).
+    if (function_values_)
+        if (const Value* v = find_value(name, s); v && v->is_function()) return call_closure(*v, e.args, s, e.loc, e.text);
     for (Scope* sc = &s; sc; sc = sc->parent) {
         auto try_scope = [&](Scope* def_scope) -> const ast::Stmt* {
             for (const ast::Stmt* f : def_scope->functions)
@@ -189,10 +193,23 @@ Value Evaluator::call_function(const ast::Expr& e, Scope& s) {
     return call_builtin(e, s);
 }
 
+// A function value's call (function_values.cpp makes them).
+Value Evaluator::call_closure(const Value& f, const std::vector<ast::Binding>& args, Scope& caller,
+                              const SourceLoc& loc, const std::string& name) {
+    Value keep = f;  // the closure lives while it runs, even if rebound
+    const Closure& c = keep.as_function();
+    DepthGuard guard(*this, loc);
+    DynRestore restore(dyn_);
+    Scope callee(&c.env);
+    bind_params(c.literal->bindings, args, name, caller, callee, loc);
+    return eval(*c.literal->items[0], callee);
+}
+
 Value Evaluator::call_builtin(const ast::Expr& e, Scope& s) {
     const Builtin* fn = find_builtin(e.text);
     if (!fn) {
-        if (!lenient_) throw SourceError(e.loc, "undefined function '" + e.text + "'");
+        if (!lenient_)
+            throw SourceError(e.loc, "undefined function '" + e.text + "'" + did_you_mean(e.text, s, NameKind::Function));
         warn(e.loc, "Ignoring unknown function '" + e.text + "'");
         return Value();
     }
@@ -262,6 +279,39 @@ void Evaluator::expand_for(const ast::Expr& e, std::size_t k, Scope& loop, Value
     else loop.truncate(slot);
 }
 
+// `for (init; cond; incr) element`, as OpenSCAD runs it: init binds in
+// order, then while cond holds, the element, then incr evaluated in order
+// (each sees the ones before it) and applied over the loop's variables; a
+// name only incr binds joins them. Every pass counts one iteration.
+void Evaluator::expand_for_c(const ast::Expr& e, Scope& s, ValueList& out) {
+    DynRestore restore(dyn_);
+    Scope loop(&s);
+    bind_sequential(e.bindings, loop, "for");
+    const std::size_t dyn_loop = dyn_.size();
+    while (eval(*e.items[0], loop).truthy()) {
+        count_iterations(1, e.loc);
+        count_step(e.loc);
+        expand_element(*e.items[1], loop, out);
+        const std::size_t dyn_before = dyn_.size();
+        Scope next(&loop);
+        bind_sequential(e.args, next, "for");
+        for (VarSlot& v : next.vars) {
+            if (VarSlot* old = loop.find_local(v.name)) old->value = std::move(v.value);
+            else loop.add(std::move(v));
+        }
+        // `$` names went to the dynamic stack: replace the loop's earlier
+        // entries instead of growing it by one per pass.
+        std::size_t kept = dyn_before;
+        for (std::size_t i = dyn_before; i < dyn_.size(); ++i) {
+            std::size_t j = dyn_loop;
+            while (j < dyn_before && dyn_[j].name != dyn_[i].name) ++j;
+            if (j < dyn_before) dyn_[j].value = std::move(dyn_[i].value);
+            else dyn_[kept++] = std::move(dyn_[i]);
+        }
+        dyn_.resize(kept);
+    }
+}
+
 void Evaluator::expand_element(const ast::Expr& e, Scope& s, ValueList& out) {
     switch (e.kind) {
         case ast::ExprKind::ListFor: {
@@ -274,6 +324,24 @@ void Evaluator::expand_element(const ast::Expr& e, Scope& s, ValueList& out) {
                         throw SourceError(e.bindings[i].loc, "'" + e.bindings[i].name + "' is already defined at " +
                                                                  line_ref(e.bindings[i].loc, e.bindings[j].loc));
             if (!e.bindings.empty()) expand_for(e, 0, loop, out);
+            return;
+        }
+        case ast::ExprKind::ListForC: expand_for_c(e, s, out); return;
+        case ast::ExprKind::ListEach: {
+            // OpenSCAD: a list, range or string is spliced, undef adds
+            // nothing, any other value is added as it is.
+            ValueList inner;
+            expand_element(*e.items[0], s, inner);
+            for (Value& v : inner) {
+                if (v.is_undef()) continue;
+                if (!v.is_list() && !v.is_range() && !v.is_string()) {
+                    push_element(out, std::move(v), e.loc);
+                    continue;
+                }
+                std::uint64_t n = iteration_count(v, e.loc);
+                for (std::uint64_t i = 0; i < n; ++i)
+                    push_element(out, v.is_range() ? Value(v.as_range().at(i)) : v.as_list()[i], e.loc);
+            }
             return;
         }
         case ast::ExprKind::ListIf:
@@ -363,6 +431,8 @@ Value Evaluator::eval(const ast::Expr& e, Scope& s) {
             return index_value(obj, Value(i), e.loc);
         }
         case K::Call: return call_function(e, s);
+        case K::Function: return make_closure(e, s);
+        case K::Apply: return apply(e, s);
         case K::Let: {
             DynRestore restore(dyn_);
             Scope ls(&s);
@@ -376,6 +446,8 @@ Value Evaluator::eval(const ast::Expr& e, Scope& s) {
             do_assert(e.args, s, e.loc);
             return e.items.empty() || !e.items[0] ? Value() : eval(*e.items[0], s);
         case K::ListFor:
+        case K::ListForC:
+        case K::ListEach:
         case K::ListIf:
         case K::ListLet: throw SourceError(e.loc, "a list generator is only allowed inside [ ]");
     }

@@ -85,6 +85,7 @@ Scope* Evaluator::load_use(const ast::Stmt& st) {
     } restore{files_.includes, outer_includes};
     ChainGuard in_file(files_.includes, path, st.loc);
     auto scope = std::make_unique<Scope>(&root_);
+    scope->file = true;
     bind_block(prepare(prog.stmts), *scope, false);  // its solids are not used
     Scope* raw = scope.get();
     use_scopes_[key] = std::move(scope);
@@ -192,6 +193,7 @@ void Evaluator::eval_block(const std::vector<ast::StmtPtr>& stmts, Scope& s, boo
     std::optional<Scope> own;
     if (info.needs_scope) {
         own.emplace(&s);
+        own->file = top_level;  // the main file's scope lives through the run
         bind_block(info, *own, top_level);
     }
     Scope& scope = own ? *own : s;
@@ -425,7 +427,7 @@ void Evaluator::instantiate(const ast::Stmt& st, Scope& s, bool top_level) {
     if (builtin_module(st, s, top_level)) return;
     if (const char* what = unimplemented_openscad_module(name))
         throw SourceError(st.loc, "'" + name + "' (" + what + ") is not implemented in kerf yet");
-    if (!lenient_) throw SourceError(st.loc, "unknown module '" + name + "'");
+    if (!lenient_) throw SourceError(st.loc, "unknown module '" + name + "'" + did_you_mean(name, s, NameKind::Module));
     warn(st.loc, "Ignoring unknown module '" + name + "'");
 }
 

@@ -92,9 +92,20 @@ private:
     Value call_function(const ast::Expr& e, Scope& s);
     void expand_element(const ast::Expr& e, Scope& s, ValueList& out);
     void expand_for(const ast::Expr& e, std::size_t k, Scope& s, ValueList& out);
+    void expand_for_c(const ast::Expr& e, Scope& s, ValueList& out);
     void push_element(ValueList& out, Value v, const SourceLoc& loc);
     void do_echo(const std::vector<ast::Binding>& args, Scope& s);
     Value call_builtin(const ast::Expr& e, Scope& s);
+    // function_values.cpp: function literals, their captures and calls.
+    Value make_closure(const ast::Expr& e, Scope& s);
+    Value call_closure(const Value& f, const std::vector<ast::Binding>& args, Scope& caller, const SourceLoc& loc,
+                       const std::string& name);
+    Value apply(const ast::Expr& e, Scope& s);
+    const Value* find_value(std::string_view name, Scope& s);  // quiet lookup: null if unbound
+    // suggest.cpp: "; did you mean 'x'?" from the names visible in s of
+    // one kind (or ""), for the strict "undefined" errors.
+    enum class NameKind { Variable, Function, Module };
+    std::string did_you_mean(std::string_view name, Scope& s, NameKind kind);
     void check_builtin_name(const Builtin& fn, const ast::Binding& a, std::size_t i, std::size_t count);
     // The OpenSCAD dialect's answer to an operator that threw a SoftError.
     Value lenient_operator(const ast::Expr& e, const Value& a, const Value* b);
@@ -140,6 +151,9 @@ private:
     std::uint64_t depth_ = 0, steps_ = 0, iterations_ = 0;
 
     std::unordered_map<const void*, BlockInfo> blocks_;
+    // Per function literal: the names its body reads or calls (what a closure copies).
+    std::unordered_map<const ast::Expr*, std::vector<std::string_view>> free_names_;
+    bool function_values_ = false;  // a literal was evaluated: calls look at variables first
     Loader files_;                                           // every parsed file, kept alive
     std::unordered_map<std::string, std::unique_ptr<Scope>> use_scopes_;  // by Loader::identity
 

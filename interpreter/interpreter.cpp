@@ -21,6 +21,7 @@ Evaluator::Evaluator(const EvalOptions& options)
     : opt_(options), lenient_(options.dialect == Dialect::Lenient), files_(options) {
     static const SourceLoc builtin_loc{};
     root_.add(VarSlot{"PI", Value(M_PI), &builtin_loc, true});
+    root_.file = true;
     // Typical large scenes: a transform (and maybe an appearance) per leaf.
     std::size_t prims = static_cast<std::size_t>(std::min<std::uint64_t>(options.limits.primitives, 1u << 24));
     out_.max_nodes = 3 * prims + 1024;

@@ -15,6 +15,7 @@ const char* openscad_type_name(const Value& v) {
         case ValueType::String: return "string";
         case ValueType::List: return "vector";
         case ValueType::Range: return "range";
+        case ValueType::Function: return "function";
     }
     return "undefined";
 }

@@ -1,8 +1,9 @@
 // Lexical scopes of the evaluator (docs/spec.md §3). A Scope lives on the C++ stack
 // of the block, call or loop that made it and points to its parent, so a
-// binding costs no heap allocation beyond its slot; functions and modules
-// are not first-class values, so no definition can outlive its scope, and
-// `use`d files' scopes live as long as the evaluator.
+// binding costs no heap allocation beyond its slot; `use`d files' scopes
+// live as long as the evaluator. A function value (Closure) cannot point
+// into the stack: it copies the bindings its body may read from the scopes
+// between it and its file, and keeps only the file's scope as parent.
 #pragma once
 #include <cstdint>
 #include <memory>
@@ -40,6 +41,7 @@ struct Scope {
     std::vector<const ast::Stmt*> functions;
     std::vector<const ast::Stmt*> modules;
     std::vector<Scope*> used;  // top-level scopes of `use`d files
+    bool file = false;         // a file's top level: lives as long as the run
 
     Scope() = default;
     explicit Scope(Scope* p) : parent(p), module(p ? p->module : nullptr) {}
@@ -81,6 +83,16 @@ private:
         index_->reserve(2 * vars.size());
         for (std::size_t i = 0; i < vars.size(); ++i) index_->emplace(vars[i].name, std::uint32_t(i));
     }
+};
+
+// A function literal's value: the literal (parameters, body) and what it
+// captured. env's parent is the scope of the file the literal is in, which
+// lives as long as the run; env itself holds copies of the inner bindings
+// and function definitions the body names.
+struct Closure {
+    const ast::Expr* literal;
+    mutable Scope env;  // a call's scope points to it; calls never change it
+    Closure(const ast::Expr* lit, Scope* file_scope) : literal(lit), env(file_scope) { env.module = nullptr; }
 };
 
 // `$` variables are dynamically scoped, as in OpenSCAD: one stack per

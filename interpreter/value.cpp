@@ -6,6 +6,9 @@
 #include <algorithm>
 #include <limits>
 
+#include "interpreter/expr_text.hpp"
+#include "interpreter/scope.hpp"
+
 namespace kerf {
 
 std::uint64_t Range::size() const {
@@ -32,6 +35,7 @@ const char* type_name(ValueType t) {
         case ValueType::String: return "string";
         case ValueType::List: return "list";
         case ValueType::Range: return "range";
+        case ValueType::Function: return "function";
     }
     return "value";
 }
@@ -48,6 +52,12 @@ Value Value::list(ValueList items) {
     return v;
 }
 
+Value Value::function(ClosurePtr f) {
+    Value v;
+    v.v_ = std::move(f);
+    return v;
+}
+
 Value Value::list_shared(std::shared_ptr<const ValueList> items) {
     Value v;
     v.v_ = items ? std::move(items) : std::make_shared<const ValueList>();
@@ -61,7 +71,8 @@ bool Value::truthy() const {
         case ValueType::Number: return as_number() != 0;
         case ValueType::String: return !as_string().empty();
         case ValueType::List: return !as_list().empty();
-        case ValueType::Range: return true;
+        case ValueType::Range:
+        case ValueType::Function: return true;
     }
     return false;
 }
@@ -83,6 +94,7 @@ bool Value::operator==(const Value& o) const {
             return true;
         }
         case ValueType::Range: return as_range() == o.as_range();
+        case ValueType::Function: return &as_function() == &o.as_function();
     }
     return false;
 }
@@ -173,6 +185,7 @@ bool append(std::string& out, const Value& v, bool quote_strings, std::size_t ma
                    format_number(r.end) + ']';
             break;
         }
+        case ValueType::Function: out += openscad_text(*v.as_function().literal); break;
     }
     return out.size() <= max;
 }

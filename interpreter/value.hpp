@@ -1,5 +1,5 @@
 // The values of the language (docs/spec.md §2): undef, bool, number, string, list,
-// range. Copying a Value is cheap: strings and lists are shared, immutable
+// range, function (a function literal with what it captured, scope.hpp). Copying a Value is cheap: strings and lists are shared, immutable
 // arrays (bindings are immutable, so sharing is safe), ranges stay lazy
 // (three doubles) so `[0:1e12]` costs nothing until someone iterates it.
 #pragma once
@@ -14,6 +14,11 @@
 #include "grammar/source.hpp"
 
 namespace kerf {
+
+namespace eval {
+struct Closure;
+}
+using ClosurePtr = std::shared_ptr<const eval::Closure>;
 
 // An error that OpenSCAD's rules turn into undef and a warning with the
 // same message (docs/openscad.md): a built-in function given the wrong
@@ -43,9 +48,9 @@ struct Range {
     bool operator==(const Range&) const = default;
 };
 
-enum class ValueType : std::uint8_t { Undef, Bool, Number, String, List, Range };
+enum class ValueType : std::uint8_t { Undef, Bool, Number, String, List, Range, Function };
 
-// "undef", "bool", "number", "string", "list", "range" (for error messages).
+// "undef", "bool", "number", "string", "list", "range", "function" (for error messages).
 const char* type_name(ValueType t);
 
 class Value {
@@ -64,6 +69,7 @@ public:
     static Value list_shared(std::shared_ptr<const ValueList> items);
     static Value range(double start, double step, double end) { return Value(Range{start, step, end}); }
     static Value range(const Range& r) { return Value(r); }
+    static Value function(ClosurePtr f);
 
     ValueType type() const { return static_cast<ValueType>(v_.index()); }
     const char* type_name() const { return kerf::type_name(type()); }
@@ -73,6 +79,7 @@ public:
     bool is_string() const { return type() == ValueType::String; }
     bool is_list() const { return type() == ValueType::List; }
     bool is_range() const { return type() == ValueType::Range; }
+    bool is_function() const { return type() == ValueType::Function; }
 
     // Accessors: precondition is the matching is_*() (checked by std::get).
     double as_number() const { return std::get<double>(v_); }
@@ -81,13 +88,15 @@ public:
     const ValueList& as_list() const { return *std::get<ListPtr>(v_); }
     const std::shared_ptr<const ValueList>& list_ptr() const { return std::get<ListPtr>(v_); }
     const Range& as_range() const { return std::get<Range>(v_); }
+    const eval::Closure& as_function() const { return *std::get<ClosurePtr>(v_); }
 
     // docs/spec.md §2: false, 0, "", [], undef are false; everything else is true
     // (any range, and NaN, as in OpenSCAD where a number is true if != 0).
     bool truthy() const;
 
     // Structural equality as OpenSCAD's `==`: same type and same contents;
-    // numbers compare as doubles (NaN != NaN); a bool never equals a number.
+    // numbers compare as doubles (NaN != NaN); a bool never equals a number;
+    // a function equals only itself.
     bool operator==(const Value& o) const;
     bool operator!=(const Value& o) const { return !(*this == o); }
 
@@ -101,7 +110,7 @@ private:
     using ListPtr = std::shared_ptr<const ValueList>;
     explicit Value(Range r) : v_(r) {}
     // Order matches ValueType.
-    std::variant<std::monostate, bool, double, StrPtr, ListPtr, Range> v_;
+    std::variant<std::monostate, bool, double, StrPtr, ListPtr, Range, ClosurePtr> v_;
 };
 
 // OpenSCAD 2021's number text, byte for byte: 6 significant digits
@@ -110,7 +119,8 @@ private:
 std::string format_number(double n);
 
 // The text `str(v)` produces: strings as-is at the top level; inside lists
-// strings are quoted (`["a", 1]`); `undef`, `true`; ranges `[0 : 1 : 5]`.
+// strings are quoted (`["a", 1]`); `undef`, `true`; ranges `[0 : 1 : 5]`;
+// a function as OpenSCAD prints its literal (`function(x) (x * 2)`).
 std::string to_str(const Value& v);
 
 // The text `echo(v)` shows: like to_str, but a top-level string is quoted

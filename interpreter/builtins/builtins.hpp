@@ -37,6 +37,8 @@ struct Builtin {
 
 // The builtin called `name`, or null when there is none.
 const Builtin* find_builtin(std::string_view name);
+// Every built-in function's name (for "did you mean").
+std::vector<std::string_view> builtin_names();
 
 // The name of parameter `i` of `b` when called with `count` arguments, or
 // empty when that position has no name (variadic, or too many arguments).

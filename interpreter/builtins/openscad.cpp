@@ -244,10 +244,9 @@ Value ord_fn(std::span<const Value> args, const BuiltinContext& ctx) {
     return Value(static_cast<double>(c));
 }
 
-// kerf has no function values yet, so nothing is a function.
 Value is_function_fn(std::span<const Value> args, const BuiltinContext& ctx) {
     expect_count(args, ctx, "is_function", 1);
-    return Value(false);
+    return Value(args[0].is_function());
 }
 
 const Entry kEntries[] = {

@@ -35,6 +35,7 @@ std::uint64_t text_length(const Value& v, bool quoted, std::uint64_t cap) {
             const Range& r = v.as_range();
             return 8 + format_number(r.start).size() + format_number(r.step).size() + format_number(r.end).size();
         }
+        case ValueType::Function: return to_str(v).size();
     }
     return 0;
 }

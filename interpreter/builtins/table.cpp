@@ -19,6 +19,7 @@ std::string describe(const Value& v) {
         case ValueType::String: return "a string";
         case ValueType::List: return "a list";
         case ValueType::Range: return "a range";
+        case ValueType::Function: return "a function";
     }
     return "a value";
 }
@@ -41,7 +42,8 @@ double number_arg(std::span<const Value> args, std::size_t i, const BuiltinConte
 
 }  // namespace builtin
 
-const Builtin* find_builtin(std::string_view name) {
+namespace {
+const std::vector<builtin::Entry>& builtin_table() {
     static const std::vector<builtin::Entry> table = [] {
         std::vector<builtin::Entry> all;
         for (auto group : {builtin::math_entries(), builtin::list_entries(), builtin::string_entries(),
@@ -50,6 +52,18 @@ const Builtin* find_builtin(std::string_view name) {
         std::sort(all.begin(), all.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
         return all;
     }();
+    return table;
+}
+}  // namespace
+
+std::vector<std::string_view> builtin_names() {
+    std::vector<std::string_view> out;
+    for (const builtin::Entry& e : builtin_table()) out.push_back(e.name);
+    return out;
+}
+
+const Builtin* find_builtin(std::string_view name) {
+    const auto& table = builtin_table();
     auto it = std::lower_bound(table.begin(), table.end(), name,
                                [](const builtin::Entry& e, std::string_view n) { return e.name < n; });
     return it != table.end() && it->name == name ? &*it : nullptr;

@@ -70,5 +70,7 @@ std::span<const ModuleEntry> text_modules();     // text.cpp
 
 // The built-in module called `name`, or null.
 const ModuleEntry* find_module(std::string_view name);
+// Every built-in module's name (for "did you mean").
+std::vector<std::string_view> module_names();
 
 }  // namespace kerf::eval

@@ -68,13 +68,26 @@ void frustum(ModuleCall& c, double h, double r1, double r2, bool center) {
     c.add_primitive(P::Cylinder, {z0, z0 + h, r1, r2});
 }
 
+// In the OpenSCAD dialect, a cylinder given both takes what OpenSCAD 2021
+// takes, with its warnings: d over r (and d1 over r1, d2 over r2), then
+// r1/r2 over r (docs/openscad.md "Built-in modules").
+std::optional<double> openscad_radius(ModuleCall& c, std::size_t ri, std::size_t di, const char* rn, const char* dn) {
+    const Args& a = c.args;
+    if (!c.lenient() || !a.has(ri) || !a.has(di)) return radius(a, ri, di, rn, dn);
+    c.warn(std::string("Ignoring radius variable '") + rn + "' as diameter '" + dn + "' is defined too.");
+    return arg_number(a, di, dn, 0) / 2;
+}
+
 void cylinder(ModuleCall& c) {
     const Args& a = c.args;
     double h = arg_positive(a, 0, "h", 1);
-    auto general = radius(a, 4, 5, "r", "d");
-    auto end1 = radius(a, 1, 6, "r1", "d1");
-    auto end2 = radius(a, 2, 7, "r2", "d2");
-    if (general && (end1 || end2)) arg_error(a, "give r/d or r1/r2/d1/d2, not both");
+    auto general = openscad_radius(c, 4, 5, "r", "d");
+    auto end1 = openscad_radius(c, 1, 6, "r1", "d1");
+    auto end2 = openscad_radius(c, 2, 7, "r2", "d2");
+    if (general && (end1 || end2)) {
+        if (!c.lenient()) arg_error(a, "give r/d or r1/r2/d1/d2, not both");
+        c.warn("Cylinder parameters ambiguous");
+    }
     double r1 = end1.value_or(general.value_or(1));
     double r2 = end2.value_or(general.value_or(1));
     bool center = arg_bool(a, 3, "center", false);

@@ -46,7 +46,8 @@ Args match_args(Evaluator& ev, const ModuleEntry& e, const ast::Stmt& st, Scope&
 
 }  // namespace
 
-const ModuleEntry* find_module(std::string_view name) {
+namespace {
+const std::vector<const ModuleEntry*>& module_table() {
     static const std::vector<const ModuleEntry*> table = [] {
         std::vector<const ModuleEntry*> all;
         for (auto group : {solid_modules(), transform_modules(), appearance_modules(), setup_modules(), shape2d_modules(),
@@ -56,6 +57,18 @@ const ModuleEntry* find_module(std::string_view name) {
                   [](const ModuleEntry* a, const ModuleEntry* b) { return std::string_view(a->name) < b->name; });
         return all;
     }();
+    return table;
+}
+}  // namespace
+
+std::vector<std::string_view> module_names() {
+    std::vector<std::string_view> out;
+    for (const ModuleEntry* e : module_table()) out.push_back(e->name);
+    return out;
+}
+
+const ModuleEntry* find_module(std::string_view name) {
+    const auto& table = module_table();
     auto it = std::lower_bound(table.begin(), table.end(), name,
                                [](const ModuleEntry* e, std::string_view n) { return e->name < n; });
     return it != table.end() && (*it)->name == name ? *it : nullptr;

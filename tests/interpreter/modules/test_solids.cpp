@@ -259,3 +259,25 @@ TEST_CASE("the scene graph lists children before parents", "[scene]") {
         for (std::uint32_t i = 0; i < g.nodes[id].child_count; ++i) CHECK(g.child_refs[g.nodes[id].first_child + i] < id);
     CHECK(g.nodes[0].loc.line == 1);
 }
+
+// OpenSCAD's precedence in the .scad dialect: d over r, then r1/r2 over r.
+// Expected radii measured from OpenSCAD 2021's own STL: for each argument
+// list, `echo 'cylinder(h=1, ARGS, $fn=64);' > cy.scad; openscad -o cy.stl cy.scad`
+// and the largest vertex radius at z = 0 and z = 1.
+TEST_CASE("cylinder given r with r1/r2/d in the OpenSCAD dialect", "[solids][openscad]") {
+    auto radii = [](const std::string& args) {
+        kerf::EvalOptions opt;
+        opt.dialect = kerf::Dialect::Lenient;
+        opt.echo = [](const std::string&) {};
+        auto r = kerf::evaluate_source(kerf::test::source("cylinder(h = 1, " + args + ");", "test.scad"), opt);
+        auto l = kerf::test::leaves(r.graph);
+        REQUIRE(l.size() == 1);
+        REQUIRE(r.warnings.size() == 1);
+        return std::vector<double>{l[0].p[2], l[0].p[3]};
+    };
+    CHECK(radii("r = 2, r1 = 1") == std::vector<double>{1, 2});           // Cylinder parameters ambiguous
+    CHECK(radii("r = 2, d = 2") == std::vector<double>{1, 1});            // Ignoring radius variable 'r' ...
+    CHECK(radii("r1 = 1, d1 = 6") == std::vector<double>{3, 1});
+    CHECK(radii("d = 4, r2 = 3") == std::vector<double>{2, 3});
+    CHECK(radii("r = 2, r2 = 3, d1 = 1") == std::vector<double>{0.5, 3});
+}
