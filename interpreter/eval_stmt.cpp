@@ -15,9 +15,7 @@ namespace {
 // different solid with exit 0). Null for any other name.
 const char* unimplemented_openscad_module(std::string_view name) {
     static constexpr std::pair<std::string_view, const char*> kMissing[] = {
-        {"circle", "a 2D shape"},        {"square", "a 2D shape"},         {"polygon", "a 2D shape"},
-        {"text", "a 2D shape"},          {"offset", "a 2D operation"},     {"projection", "a 2D operation"},
-        {"linear_extrude", "an extrusion"}, {"surface", "a height map"},
+        {"offset", "a 2D operation"},    {"projection", "a 2D operation"}, {"surface", "a height map"},
         {"hull", "a 3D operation"},      {"minkowski", "a 3D operation"},  {"resize", "a 3D operation"},
         {"intersection_for", "a loop"},
     };
