@@ -12,6 +12,10 @@ void arg_error(const Args& a, const std::string& message) {
     throw SoftError(a.call->loc, std::string(a.callee) + ": " + message);
 }
 
+void arg_unsupported(const Args& a, const std::string& message) {
+    throw SourceError(a.call->loc, std::string(a.callee) + ": " + message);
+}
+
 namespace {
 std::string describe(const Value& v) {
     if (v.is_number()) return format_number(v.as_number());

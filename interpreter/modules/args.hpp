@@ -12,6 +12,9 @@
 namespace kerf::eval {
 
 [[noreturn]] void arg_error(const Args& a, const std::string& message);
+// An argument value kerf cannot render yet: an error in both dialects (the
+// OpenSCAD dialect's warning-and-go-on would render another solid).
+[[noreturn]] void arg_unsupported(const Args& a, const std::string& message);
 
 // A finite number (default when not given).
 double arg_number(const Args& a, std::size_t i, const char* name, double fallback);

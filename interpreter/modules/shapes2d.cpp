@@ -141,7 +141,7 @@ void linear_extrude(ModuleCall& c) {
     const Args& a = c.args;
     const double h = arg_positive(a, 0, "height", 100);
     const bool center = arg_bool(a, 1, "center", false);
-    if (arg_number(a, 3, "twist", 0) != 0) arg_error(a, "twist is not implemented yet (only twist = 0)");
+    if (arg_number(a, 3, "twist", 0) != 0) arg_unsupported(a, "twist is not implemented yet (only twist = 0)");
     if (a.has(4)) arg_positive(a, 4, "slices", 1);  // accepted: kerf extrudes exactly, not in slices
     double top = 1;  // the top section's scale
     if (a.has(5)) {
@@ -149,9 +149,9 @@ void linear_extrude(ModuleCall& c) {
         if (!s.is_number() && !s.is_vector(2)) arg_error(a, "scale must be a number or [sx, sy], got " + to_repr(s));
         top = s.is_number() ? s.as_number() : s.as_list()[0].as_number();
         if (s.is_vector(2) && s.as_list()[1].as_number() != top)
-            arg_error(a, "a scale that differs in x and y is not implemented yet, got " + to_repr(s));
+            arg_unsupported(a, "a scale that differs in x and y is not implemented yet, got " + to_repr(s));
         if (!std::isfinite(top) || top < 0) arg_error(a, "scale must be a finite number >= 0, got " + to_repr(s));
-        if (top == 0) arg_error(a, "scale = 0 (a pointed top) is not implemented yet");
+        if (top == 0) arg_unsupported(a, "scale = 0 (a pointed top) is not implemented yet");
     }
     GraphBuilder& g = c.graph();
     const std::size_t mark = g.mark();
