@@ -17,7 +17,6 @@ const char* unimplemented_openscad_module(std::string_view name) {
     static constexpr std::pair<std::string_view, const char*> kMissing[] = {
         {"offset", "a 2D operation"},    {"projection", "a 2D operation"}, {"surface", "a height map"},
         {"hull", "a 3D operation"},      {"minkowski", "a 3D operation"},  {"resize", "a 3D operation"},
-        {"intersection_for", "a loop"},
     };
     for (const auto& [n, what] : kMissing)
         if (n == name) return what;
@@ -347,6 +346,7 @@ void Evaluator::stmt_for(const ast::Stmt& st, std::size_t k, Scope& loop, Scope&
         Value item = seq.is_range() ? Value(seq.as_range().at(i)) : seq.as_list()[i];
         if (dollar) dyn_[slot].value = std::move(item);
         else loop.vars[slot].value = std::move(item);
+        const std::size_t pass = out_.mark();
         if (k + 1 < st.args.size()) {
             stmt_for(st, k + 1, loop, s);
         } else if (!body.needs_scope) {
@@ -357,6 +357,8 @@ void Evaluator::stmt_for(const ast::Stmt& st, std::size_t k, Scope& loop, Scope&
             bind_block(body, scope, false);
             for (const ast::Stmt* c : body.children) eval_stmt(*c, scope, false);
         }
+        // intersection_for intersects its passes: each pass is one solid.
+        if (k + 1 == st.args.size() && st.name == "intersection_for") out_.group(pass, st.loc);
     }
     if (dollar) dyn_.resize(slot);
     else loop.truncate(slot);
@@ -367,7 +369,7 @@ void Evaluator::stmt_for(const ast::Stmt& st, std::size_t k, Scope& loop, Scope&
 void Evaluator::instantiate(const ast::Stmt& st, Scope& s, bool top_level) {
     const std::string& name = st.name;
     std::size_t mark = out_.mark();
-    if (name == "for") {
+    if (name == "for" || name == "intersection_for") {
         count_step(st.loc);
         for (std::size_t i = 0; i < st.args.size(); ++i)
             for (std::size_t j = 0; j < i; ++j)
@@ -378,7 +380,8 @@ void Evaluator::instantiate(const ast::Stmt& st, Scope& s, bool top_level) {
         Scope loop(&s);
         loop.vars.reserve(st.args.size());
         if (!st.args.empty()) stmt_for(st, 0, loop, s);
-        out_.group(mark, st.loc);
+        if (name == "for") out_.group(mark, st.loc);
+        else if (out_.produced_since(mark) > 1) out_.make_node(mark, graph::NodeKind::Intersection, st.loc);
         return;
     }
     if (name == "let") {
