@@ -64,6 +64,7 @@ struct Args {
     const ast::Stmt* call;
     std::vector<Value> values;
     std::vector<bool> given;
+    double fn = 0;  // a $fn given in the call itself (docs/openscad.md, "Facets")
 
     bool has(std::size_t i) const { return given[i]; }
     const Value& operator[](std::size_t i) const { return values[i]; }

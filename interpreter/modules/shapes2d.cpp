@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "interpreter/modules/args.hpp"
+#include "interpreter/modules/facets.hpp"
 #include "interpreter/modules/module_call.hpp"
 
 namespace kerf::eval {
@@ -40,6 +41,7 @@ void circle(ModuleCall& c) {
     if (a.has(0) && a.has(1)) arg_error(a, "give r or d, not both");
     const double r = a.has(1) ? arg_number(a, 1, "d", 2) / 2 : arg_number(a, 0, "r", 1);
     if (!(r > 0)) arg_error(a, "radius must be positive, got " + format_number(r));
+    if (const int n = honoured_facets(c)) return add_regular_prism(c, n, r);
     c.add_primitive(P::Cylinder, {0, 1, r, r});
     mark_flat(c);
 }

@@ -4,6 +4,7 @@
 
 #include "interpreter/import/mesh_import.hpp"
 #include "interpreter/modules/args.hpp"
+#include "interpreter/modules/facets.hpp"
 #include "interpreter/modules/mesh_check.hpp"
 #include "interpreter/modules/module_call.hpp"
 
@@ -47,6 +48,8 @@ void sphere(ModuleCall& c) {
     const Args& a = c.args;
     double r = radius(a, 0, 1, "r", "d").value_or(1);
     if (!(r > 0)) arg_error(a, "radius must be positive, got " + format_number(r));
+    if (honoured_facets(c))  // OpenSCAD's rings of facets are not built: say so, the sphere is round
+        c.warn("$fn = " + format_number(c.args.fn) + " is not honoured on a sphere; the sphere is exact");
     c.add_primitive(P::Sphere, {r});
 }
 
@@ -93,6 +96,16 @@ void cylinder(ModuleCall& c) {
     bool center = arg_bool(a, 3, "center", false);
     if (r1 < 0 || r2 < 0) arg_error(a, "radius must not be negative, got " + format_number(std::min(r1, r2)));
     if (r1 == 0 && r2 == 0) arg_error(a, "radius must be positive, got 0");
+    if (const int n = honoured_facets(c); n && r1 > 0 && r2 > 0) {
+        // OpenSCAD's n-sided prism or frustum: the n-gon extruded, tapered to r2.
+        GraphBuilder& g = c.graph();
+        const std::size_t mark = g.mark();
+        add_regular_prism(c, n, r1, r2 / r1 - 1);
+        const double z0 = center ? -h / 2 : 0;
+        g.extrude(mark, z0, z0 + h, c.st.loc);
+        return;
+    }
+    if (honoured_facets(c)) c.warn("$fn = " + format_number(c.args.fn) + " is not honoured on a cone's tip; the cone is exact");
     frustum(c, h, r1, r2, center);
 }
 

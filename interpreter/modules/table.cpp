@@ -26,7 +26,13 @@ Args match_args(Evaluator& ev, const ModuleEntry& e, const ast::Stmt& st, Scope&
             }
             i = positional++;
         } else {
-            if (b.name[0] == '$') continue;  // $fn, $fa, $fs...: accepted and ignored
+            if (b.name[0] == '$') {  // $fa, $fs...: accepted and ignored; $fn read by circle and cylinder
+                if (b.name == "$fn" && b.value) {
+                    const Value v = ev.eval(*b.value, s);
+                    if (v.is_number()) a.fn = v.as_number();
+                }
+                continue;
+            }
             for (std::size_t j = 0; j < n; ++j)
                 if (b.name == e.params[j]) i = j;
             if (i == n && ev.lenient()) {
