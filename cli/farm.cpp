@@ -53,8 +53,7 @@ bool finished(const std::string& path, const std::string& text, int width, int h
 // Renders one frame or band to `path` unless --resume finds it finished.
 void render_one(const Options& o, const csg::Scene& scene, render::RenderOptions ro, const std::string& path,
                 const std::string& text) {
-    const int w = ro.crop ? (*ro.crop)[2] - (*ro.crop)[0] : ro.width;
-    const int h = ro.crop ? (*ro.crop)[3] - (*ro.crop)[1] : ro.height;
+    const auto [w, h] = output_size(ro);
     if (o.farm.resume && finished(path, text, w, h)) return;
     ro.srgb8 = render::is_8bit_output(path);
     render::RenderStats stats;
@@ -69,8 +68,7 @@ void render_one(const Options& o, const csg::Scene& scene, render::RenderOptions
 int render_frames(const Options& o) {
     const FarmOptions& f = o.farm;
     const int first = f.frame > 0 ? f.frame : 1, last = f.frame > 0 ? f.frame : f.frames;
-    const auto& crop = o.render.crop;
-    const int w = crop ? (*crop)[2] - (*crop)[0] : o.render.width, h = crop ? (*crop)[3] - (*crop)[1] : o.render.height;
+    const auto [w, h] = output_size(o.render);
     for (int i = first; i <= last; ++i) render::check_output_path(frame_path(o.output, i, f.frames), w, h, {o.scene});
     const auto piped = o.scene == "-" ? stdin_source(o.base) : nullptr;
     for (int i = first; i <= last; ++i) {

@@ -18,9 +18,8 @@ std::shared_ptr<const SourceFile> stdin_source(const std::string& base) {
 }
 
 void check_output(const Options& o) {
-    const auto& crop = o.render.crop;  // the image written is the crop
-    render::check_output_path(o.output, crop ? (*crop)[2] - (*crop)[0] : o.render.width,
-                              crop ? (*crop)[3] - (*crop)[1] : o.render.height, {o.scene});
+    const auto [w, h] = output_size(o.render);
+    render::check_output_path(o.output, w, h, {o.scene});
 }
 
 csg::Scene evaluate_and_lower(const Options& o, const EvalOptions& eval, ProgressBar& bar,

@@ -1,6 +1,7 @@
 // The steps of one run from scene file to image file, shared by `kerf
 // render` and `kerf watch`; each names its phase on the progress bar.
 #pragma once
+#include <array>
 #include <memory>
 #include <string>
 #include <utility>
@@ -12,6 +13,12 @@
 #include "render/render.hpp"
 
 namespace kerf::cli {
+
+// The size of the image a render with `ro` writes: its crop, or the whole.
+inline std::array<int, 2> output_size(const render::RenderOptions& ro) {
+    if (!ro.crop) return {ro.width, ro.height};
+    return {(*ro.crop)[2] - (*ro.crop)[0], (*ro.crop)[3] - (*ro.crop)[1]};
+}
 
 // Throws render::ImageWriteError when the output named by `o` cannot be
 // written: checked before evaluating, so a typo in -o costs nothing.

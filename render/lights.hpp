@@ -16,9 +16,10 @@ namespace kerf::render {
 
 // The spot's cone: 1 within spot_angle of its axis, 0 beyond spot_angle +
 // spot_falloff, smoothstep between (a hard edge when the falloff is 0).
-// `to_point`: unit vector from the light to the lit point.
+// `to_point`: unit vector from the light to the lit point; the light's
+// direction is of unit length too (the shader normalises it once).
 inline double spot_factor(const csg::Light& light, const glm::dvec3& to_point) {
-    const double angle = std::acos(std::clamp(glm::dot(glm::normalize(light.direction), to_point), -1.0, 1.0)) * (180 / M_PI);
+    const double angle = std::acos(std::clamp(glm::dot(light.direction, to_point), -1.0, 1.0)) * (180 / M_PI);
     if (angle <= light.spot_angle) return 1;
     if (angle >= light.spot_angle + light.spot_falloff) return 0;
     const double t = (light.spot_angle + light.spot_falloff - angle) / light.spot_falloff;

@@ -29,7 +29,11 @@ double highlight(double x, double s) {
 
 Shader::Shader(const csg::Scene& scene, const CsgTracer& tracer, int max_reflect_depth)
     : scene_(scene), tracer_(tracer), max_depth_(max_reflect_depth) {
-    for (const csg::Light& l : scene.lights) patterns_.emplace_back(int(l.samples));
+    for (csg::Light l : scene.lights) {
+        l.direction = glm::normalize(l.direction);  // once, not per shading point
+        lights_.push_back(l);
+        patterns_.emplace_back(int(l.samples));
+    }
 }
 
 glm::dvec3 Shader::radiance(const TraceRay& ray, int depth, ThreadState& ts, std::uint32_t* surface) const {
@@ -55,12 +59,12 @@ glm::dvec3 Shader::radiance(const TraceRay& ray, int depth, ThreadState& ts, std
         const glm::dvec3 h = glm::normalize(l + view);
         return m.diffuse * ndl * albedo + m.specular * highlight(std::max(0.0, glm::dot(n, h)), m.shininess);
     };
-    for (std::size_t li = 0; li < scene_.lights.size(); ++li) {
-        const csg::Light& light = scene_.lights[li];
+    for (std::size_t li = 0; li < lights_.size(); ++li) {
+        const csg::Light& light = lights_[li];
         glm::dvec3 l;
         double dist, k;
         if (light.directional) {
-            l = -glm::normalize(light.direction);
+            l = -light.direction;
             dist = std::numeric_limits<double>::infinity();
             k = light.intensity;
         } else {

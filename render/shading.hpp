@@ -35,6 +35,7 @@ private:
     const csg::Scene& scene_;
     const CsgTracer& tracer_;
     int max_depth_;
+    std::vector<csg::Light> lights_;       // the scene's, directions of unit length
     std::vector<SamplePattern> patterns_;  // per light: where its shadow rays go
 };
 

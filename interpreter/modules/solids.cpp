@@ -96,7 +96,8 @@ void cylinder(ModuleCall& c) {
     bool center = arg_bool(a, 3, "center", false);
     if (r1 < 0 || r2 < 0) arg_error(a, "radius must not be negative, got " + format_number(std::min(r1, r2)));
     if (r1 == 0 && r2 == 0) arg_error(a, "radius must be positive, got 0");
-    if (const int n = honoured_facets(c); n && r1 > 0 && r2 > 0) {
+    const int n = honoured_facets(c);
+    if (n && r1 > 0 && r2 > 0) {
         // OpenSCAD's n-sided prism or frustum: the n-gon extruded, tapered to r2.
         GraphBuilder& g = c.graph();
         const std::size_t mark = g.mark();
@@ -105,7 +106,7 @@ void cylinder(ModuleCall& c) {
         g.extrude(mark, z0, z0 + h, c.st.loc);
         return;
     }
-    if (honoured_facets(c)) c.warn("$fn = " + format_number(c.args.fn) + " is not honoured on a cone's tip; the cone is exact");
+    if (n) c.warn("$fn = " + format_number(c.args.fn) + " is not honoured on a cone's tip; the cone is exact");
     frustum(c, h, r1, r2, center);
 }
 

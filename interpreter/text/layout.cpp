@@ -160,22 +160,23 @@ TextShape layout_text(const TextParams& p) {
 
     const double outline_scale = p.size * 100.0 / 72.0 / face->units_per_EM;  // font units -> kerf
     const double position_scale = kPositionScale * p.size / kReferenceSize;   // 26.6 -> kerf
-    struct Glyph {
-        FT_UInt index;
-        FT_BBox box;  // font units
-    };
-    std::vector<Glyph> glyphs(count);
+    const double box_scale = outline_scale * 1000.0 / 1024.0;                  // OpenSCAD's /1024 of the box
+    FT_Outline_Funcs funcs{};
+    funcs.move_to = &Outliner::move_to;
+    funcs.line_to = &Outliner::line_to;
+    funcs.conic_to = &Outliner::conic_to;
+    funcs.cubic_to = &Outliner::cubic_to;
+    // Each glyph is loaded once: its box feeds the alignment, its outline is
+    // flattened at the pen, and the alignment shifts every glyph after.
     double width = 0, ascend = 0, descend = 0;
-    const double box_scale = outline_scale * 1000.0 / 1024.0;  // OpenSCAD's /1024 of the box
+    glm::dvec2 pen(0);
     for (unsigned i = 0; i < count; ++i) {
-        glyphs[i].index = info[i].codepoint;
-        if (FT_Load_Glyph(face, glyphs[i].index, FT_LOAD_NO_SCALE) != 0 ||
-            face->glyph->format != FT_GLYPH_FORMAT_OUTLINE)
-            throw std::invalid_argument("the font '" + font.family + "' has no outline for glyph " +
-                                        std::to_string(glyphs[i].index));
-        FT_Outline_Get_CBox(&face->glyph->outline, &glyphs[i].box);
-        if (face->glyph->outline.n_points == 0) glyphs[i].box = FT_BBox{0, 0, 0, 0};
-        const FT_BBox& b = glyphs[i].box;
+        const FT_UInt index = info[i].codepoint;
+        if (FT_Load_Glyph(face, index, FT_LOAD_NO_SCALE) != 0 || face->glyph->format != FT_GLYPH_FORMAT_OUTLINE)
+            throw std::invalid_argument("the font '" + font.family + "' has no outline for glyph " + std::to_string(index));
+        FT_BBox b;
+        FT_Outline_Get_CBox(&face->glyph->outline, &b);
+        if (face->glyph->outline.n_points == 0) b = FT_BBox{0, 0, 0, 0};
         if (horizontal) {
             width += pos[i].x_advance * position_scale * p.spacing;
             ascend = std::max(ascend, std::max(0.0, b.yMax * box_scale));
@@ -184,35 +185,30 @@ TextShape layout_text(const TextParams& p) {
             width = std::max(width, (b.xMax - b.xMin) * box_scale);
             ascend += pos[i].y_advance * position_scale * p.spacing;
         }
-    }
-    const double x0 = p.halign == "right" ? -width : p.halign == "center" ? -width / 2 : 0;
-    const double y0 = p.valign == "top"      ? -ascend
-                      : p.valign == "center" ? descend / 2 - ascend / 2
-                      : p.valign == "bottom" ? descend
-                                             : 0;
-
-    FT_Outline_Funcs funcs{};
-    funcs.move_to = &Outliner::move_to;
-    funcs.line_to = &Outliner::line_to;
-    funcs.conic_to = &Outliner::conic_to;
-    funcs.cubic_to = &Outliner::cubic_to;
-    glm::dvec2 pen(0);
-    for (unsigned i = 0; i < count; ++i) {
         Outliner o;
-        o.origin = glm::dvec2(x0, y0) + pen +
-                   position_scale * glm::dvec2(static_cast<double>(pos[i].x_offset), static_cast<double>(pos[i].y_offset));
+        o.origin = pen + position_scale * glm::dvec2(static_cast<double>(pos[i].x_offset),
+                                                     static_cast<double>(pos[i].y_offset));
         o.scale = outline_scale;
         o.tol = p.tolerance * p.size;
         o.poly.lo = glm::dvec2(std::numeric_limits<double>::infinity());
         o.poly.hi = -o.poly.lo;
         pen += p.spacing * position_scale *
                glm::dvec2(static_cast<double>(pos[i].x_advance), static_cast<double>(pos[i].y_advance));
-        if (FT_Load_Glyph(face, glyphs[i].index, FT_LOAD_NO_SCALE) != 0) continue;  // loaded above
         if (FT_Outline_Decompose(&face->glyph->outline, &funcs, &o) != 0)
-            throw std::invalid_argument("the outline of glyph " + std::to_string(glyphs[i].index) + " of '" +
-                                        font.family + "' is malformed");
+            throw std::invalid_argument("the outline of glyph " + std::to_string(index) + " of '" + font.family +
+                                        "' is malformed");
         if (!o.poly.edges.empty()) out.glyphs.push_back(std::move(o.poly));
     }
+    const glm::dvec2 shift(p.halign == "right" ? -width : p.halign == "center" ? -width / 2 : 0,
+                           p.valign == "top"      ? -ascend
+                           : p.valign == "center" ? descend / 2 - ascend / 2
+                           : p.valign == "bottom" ? descend
+                                                  : 0);
+    if (shift != glm::dvec2(0))
+        for (csg::Polygon2& g : out.glyphs) {
+            for (glm::dvec4& e : g.edges) e += glm::dvec4(shift, shift);
+            g.lo += shift, g.hi += shift;
+        }
     return out;
 }
 

@@ -163,9 +163,10 @@ void check_output_path(const std::string& path, int width, int height, const std
 bool is_8bit_output(const std::string& path) { return path == "-" || !is_float_format(lower_extension(fs::path(path))); }
 
 void write_image(const Image& given, const std::string& path, const PngText& text) {
-    const std::string given_ext = path == "-" ? ".png" : lower_extension(fs::path(path));
+    const bool to_stdout = path == "-";
+    const std::string ext = to_stdout ? ".png" : lower_extension(fs::path(path));
     // A PGM is grey by its name: a colour image becomes its luminance.
-    const bool grey = given_ext == ".pgm" && given.channels == 3;
+    const bool grey = ext == ".pgm" && given.channels == 3;
     const Image converted = grey ? grey_image(given) : Image{};
     const Image& image = grey ? converted : given;
     const std::size_t size = std::size_t(image.width) * image.height * image.channels;
@@ -174,9 +175,6 @@ void write_image(const Image& given, const std::string& path, const PngText& tex
         (as_bytes ? image.srgb8.size() != size || image.content != ImageContent::Color
                   : image.pixels.size() != size))
         throw ImageWriteError("cannot write " + path + ": the image is empty or inconsistent");
-    const fs::path target(path);
-    const bool to_stdout = path == "-";
-    const std::string ext = to_stdout ? ".png" : lower_extension(target);
     const bool as_float = is_float_format(ext);
     if (as_float && as_bytes)
         throw ImageWriteError("cannot write " + path + ": the image was rendered in 8 bits, the format holds floats");

@@ -113,7 +113,7 @@ TEST_CASE("a spot lights its cone, fades over the falloff, and leaves the rest d
     for (int i = 20; i < 41; ++i) {
         const double x = ground_x(i), angle = std::atan2(std::abs(x), 4.0) * 180 / M_PI;
         const double ndl = 4 / std::hypot(x, 4.0);
-        double k = angle <= 20 ? 1 : angle >= 40 ? 0 : 0;
+        double k = angle <= 20 ? 1 : 0;
         if (angle > 20 && angle < 40) {
             const double t = (40 - angle) / 20;
             k = t * t * (3 - 2 * t);
