@@ -12,7 +12,6 @@
 #include <stdexcept>
 #include <string>
 
-#include <tbb/global_control.h>
 
 #include "render/adaptive.hpp"
 #include "render/aov.hpp"
@@ -150,19 +149,8 @@ Image render(const csg::Scene& scene, const RenderOptions& options, RenderStats*
     // The tracer recurses once per tree level (tracer/stack_depth.hpp):
     // refuse what no stack is sized for, and give every thread that traces
     // the stack this tree needs rather than let a deep one overflow it.
-    const std::uint32_t depth = tree_depth(scene);
-    if (depth > csg::kMaxDepth)
-        throw std::runtime_error("the CSG tree is " + std::to_string(depth) + " levels deep; kerf renders trees up to " +
-                                 std::to_string(csg::kMaxDepth) + " levels deep");
-    const std::size_t need = stack_needed(depth);
-    // TBB's workers are started with this stack (when this is the process's
-    // first render; otherwise a worker that has too little traces nothing
-    // and the render fails with a message).
-    const std::size_t worker_stack = std::max(need + kStackBase, tbb::global_control::active_value(tbb::global_control::thread_stack_size));
-    tbb::global_control stack_size(tbb::global_control::thread_stack_size, worker_stack);
-    if (stack_left() >= need) return render_tiles(scene, options, stats, progress, need);
     Image image;
-    run_with_stack(need + kStackBase, [&] { image = render_tiles(scene, options, stats, progress, need); });
+    with_tracer_stack(scene, "renders", [&](std::size_t need) { image = render_tiles(scene, options, stats, progress, need); });
     return image;
 }
 

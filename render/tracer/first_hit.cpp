@@ -38,6 +38,7 @@ bool try_unit_entry(TopContext& ctx, std::uint32_t unit_index, std::uint32_t nod
 void top_intersect_callback(const RTCIntersectFunctionNArguments* args) {
     if (!args->valid[0]) return;
     auto* ctx = reinterpret_cast<TopContext*>(args->context);
+    if (ctx->gather) return gather_unit(*ctx, ctx->accel->items[args->primID]);
     if (try_unit_entry(*ctx, args->primID, ctx->accel->items[args->primID])) {
         RTCRayHit* rh = reinterpret_cast<RTCRayHit*>(args->rayhit);
         rh->ray.tfar = std::min(rh->ray.tfar, embree_t(*ctx->state, ctx->best));

@@ -173,11 +173,16 @@ struct TopContext {
     std::uint32_t best_unit;
     SpanEnd best_end;
     bool found;
+    bool gather = false;      // inside_spans: keep every unit's spans on the stack
+    double gather_eps = 0;    // inside_spans: the largest degenerate rule met
 
     TopContext(RayState& st, const TraceRay& ray)
         : state(&st), accel(&st.impl->top), tnear(ray.tnear), best(ray.tfar), best_unit(0), found(false) {
         rtcInitIntersectContext(&rtc);
     }
 };
+
+// inside_spans.cpp: pushes every span of the unit `node` on (tnear, best).
+void gather_unit(TopContext& ctx, std::uint32_t node);
 
 }  // namespace kerf::render

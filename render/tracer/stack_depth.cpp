@@ -5,7 +5,10 @@
 #include <stdexcept>
 #include <vector>
 
+#include <string>
+
 #include <pthread.h>
+#include <tbb/global_control.h>
 
 namespace kerf::render {
 
@@ -62,6 +65,18 @@ void run_with_stack(std::size_t bytes, const std::function<void()>& fn) {
     if (!started) throw std::runtime_error("cannot start a render thread with the stack this scene's depth needs");
     pthread_join(thread, nullptr);
     if (task.error) std::rethrow_exception(task.error);
+}
+
+void with_tracer_stack(const csg::Scene& scene, const char* what, const std::function<void(std::size_t)>& fn) {
+    const std::uint32_t depth = tree_depth(scene);
+    if (depth > csg::kMaxDepth)
+        throw std::runtime_error("the CSG tree is " + std::to_string(depth) + " levels deep; kerf " + what +
+                                 " trees up to " + std::to_string(csg::kMaxDepth) + " levels deep");
+    const std::size_t need = stack_needed(depth);
+    const std::size_t worker_stack = std::max(need + kStackBase, tbb::global_control::active_value(tbb::global_control::thread_stack_size));
+    tbb::global_control stack_size(tbb::global_control::thread_stack_size, worker_stack);
+    if (stack_left() >= need) return fn(need);
+    run_with_stack(need + kStackBase, [&] { fn(need); });
 }
 
 }  // namespace kerf::render

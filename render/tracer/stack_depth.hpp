@@ -34,4 +34,12 @@ std::size_t stack_left();
 // as touched) and rethrows what it threw.
 void run_with_stack(std::size_t bytes, const std::function<void()>& fn);
 
+// Refuses a tree deeper than csg::kMaxDepth (std::runtime_error naming
+// `what`, e.g. "renders"), then runs fn(stack_need) where every thread that
+// traces has the stack the tree needs: TBB's workers are started with it
+// (when this is the process's first query; otherwise a worker with too
+// little traces nothing and the query fails with a message), and the
+// calling thread is replaced by one with enough if it has too little.
+void with_tracer_stack(const csg::Scene& scene, const char* what, const std::function<void(std::size_t)>& fn);
+
 }  // namespace kerf::render

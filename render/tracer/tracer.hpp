@@ -47,6 +47,9 @@ public:
     bool intersect(const TraceRay& ray, TraceHit& hit, TraceScratch& scratch) const;
     // Whether the root solid has a span of positive length inside (tnear, tfar).
     bool occluded(const TraceRay& ray, TraceScratch& scratch) const;
+    // Every span of the root solid on (tnear, tfar), sorted and disjoint,
+    // clipped to the window (`kerf measure`: chord lengths, inside_spans.cpp).
+    void inside_spans(const TraceRay& ray, TraceScratch& scratch, std::vector<Span>& out) const;
 
     // True if every ray whose origin and direction are convex combinations
     // of these four corner rays (in order round a quad) misses the solid:
