@@ -9,6 +9,7 @@
 
 #include "cli/assemble.hpp"
 #include "cli/farm.hpp"
+#include "cli/measure.hpp"
 #include "cli/memory_cap.hpp"
 #include "cli/options.hpp"
 #include "cli/pipeline.hpp"
@@ -27,6 +28,7 @@ using namespace kerf::cli;
 int run(const Options& o) {
     if (o.command == Command::Watch) return run_watch(o);
     if (o.command == Command::Assemble) return assemble(o);
+    if (o.command == Command::Measure) return run_measure(o);
     if (o.command == Command::Render && o.farm.any()) return render_farm(o);
     if (o.command == Command::Render) {
         try {

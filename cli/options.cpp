@@ -11,6 +11,14 @@ namespace kerf::cli {
 
 namespace {
 
+// Options that shape an image: `kerf measure` writes none and refuses them.
+bool is_image_option(const std::string& a) {
+    for (const char* f : {"-o", "-W", "-H", "--spp", "--aa", "--aa-samples", "--aa-threshold", "--seed", "--preview",
+                          "--watch", "--crop", "--aov", "--stats"})
+        if (a == f) return true;
+    return false;
+}
+
 double parse_real(const std::string& flag, const std::string& text, double lo, double hi, const char* range) {
     double v = 0;
     auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
@@ -62,6 +70,8 @@ const char* usage_text() {
            "    scene or a file it includes, uses or imports is saved; Ctrl-C stops\n"
            "  kerf check  SCENE.sdl   parse, evaluate and lower; print diagnostics only\n"
            "  kerf dump   SCENE.sdl   print the lowered, flattened CSG tree\n"
+           "  kerf measure SCENE.sdl [--resolution 512] [--threads N] [--precision double|float]\n"
+           "    volume, area, centroid and bounds of the exact solid, with error estimates\n"
            "  kerf assemble OUT TILE...   join --tile bands into the bytes of a single render\n"
            "farm (docs/farm.md): --frames N renders OUT_0001..OUT_N ($t = (I-1)/N for frame I),\n"
            "    --frame I only frame I; --tile K/N band K (0..N-1) of N as OUT_tileKofN.png;\n"
@@ -85,13 +95,16 @@ Options parse_options(const std::vector<std::string>& args) {
     else if (cmd == "watch") o.command = Command::Watch;
     else if (cmd == "check") o.command = Command::Check;
     else if (cmd == "dump") o.command = Command::Dump;
-    else throw UsageError("unknown command '" + cmd + "' (expected render, watch, check, dump or assemble)");
+    else if (cmd == "measure") o.command = Command::Measure;
+    else throw UsageError("unknown command '" + cmd + "' (expected render, watch, check, dump, measure or assemble)");
 
     constexpr std::uint64_t big = std::numeric_limits<std::uint32_t>::max();
     o.render.adaptive = true;  // --aa auto is the default
     std::string aa_flag, aa_knob, spp_flag;  // as given, to refuse contradictions
+    std::string image_flag;  // the first option that only an image uses (refused by measure)
     for (std::size_t i = 1; i < args.size(); ++i) {
         const std::string& a = args[i];
+        if (image_flag.empty() && is_image_option(a)) image_flag = a;
         auto value = [&]() -> const std::string& {
             if (i + 1 >= args.size()) throw UsageError(a + " needs a value");
             return args[++i];
@@ -115,6 +128,10 @@ Options parse_options(const std::vector<std::string>& args) {
         } else if (a == "--aa-threshold") {
             o.render.aa_threshold = parse_fraction(a, value());
             aa_knob = a;
+        }
+        else if (a == "--resolution" && o.command == Command::Measure) {
+            o.measure.resolution = parse_int<int>(a, value(), 8, 16384);
+            if (o.measure.resolution % 2 != 0) throw UsageError("--resolution must be even, got " + args[i]);
         }
         else if (a == "--threads") o.render.threads = parse_int<int>(a, value(), 0, 1024);
         else if (a == "--seed") o.render.seed = parse_int<std::uint64_t>(a, value(), 0, UINT64_MAX);
@@ -158,6 +175,14 @@ Options parse_options(const std::vector<std::string>& args) {
         else throw UsageError("more than one scene given ('" + o.scene + "' and '" + a + "')");
     }
     if (o.scene.empty()) throw UsageError(cmd + " needs a scene file");
+    if (o.command == Command::Measure) {
+        if (!image_flag.empty() || o.farm.any())
+            throw UsageError("measure writes no image; " + (image_flag.empty() ? std::string("the farm options do") : image_flag) +
+                             " does not apply to it");
+        o.measure.threads = o.render.threads;
+        o.measure.double_precision = o.render.double_precision;
+        return o;
+    }
     // Sampling: adaptive unless --spp, --aa off, --preview or an AOV; a knob
     // that would then be ignored is an error, never silence.
     if (aa_flag == "--aa auto" && !spp_flag.empty())

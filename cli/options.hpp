@@ -6,11 +6,12 @@
 #include <vector>
 
 #include "interpreter/interpreter.hpp"
+#include "render/measure/measure.hpp"
 #include "render/render.hpp"
 
 namespace kerf::cli {
 
-enum class Command { Render, Watch, Check, Dump, Assemble, Help, Version };
+enum class Command { Render, Watch, Check, Dump, Measure, Assemble, Help, Version };
 
 // Rendering on many machines (docs/farm.md): an animation's frames, an
 // image's horizontal bands.
@@ -36,6 +37,7 @@ struct Options {
     std::vector<std::string> tiles;  // assemble: the band files (output: OUT)
     EvalOptions eval;
     render::RenderOptions render;
+    render::MeasureOptions measure;  // kerf measure: resolution; threads and precision as for render
 };
 
 // A bad command line: printed as "kerf: error: MESSAGE", exit status 2.
