@@ -84,10 +84,10 @@ def main():
             volume = re.search(r"volume: (\S+) ± (\S+)", out)
             kerf, error = float(volume.group(1)), volume.group(2)
             closed = f"{exact:.3f}" if exact is not None else "—"
-            def rel(v):
-                return f" ({(v - exact) / exact:+.2%})" if exact is not None else f" ({(v - kerf) / kerf:+.2%})"
-            print(f"| {name} | {closed} | {kerf:.3f} ± {error} | {meshes[0]:.3f}{rel(meshes[0])} "
-                  f"| {meshes[1]:.3f}{rel(meshes[1])} |")
+            # The mesh's error against the closed form, or against kerf without one.
+            reference = exact if exact is not None else kerf
+            cells = " | ".join(f"{v:.3f} ({(v - reference) / reference:+.2%})" for v in meshes)
+            print(f"| {name} | {closed} | {kerf:.3f} ± {error} | {cells} |")
 
 
 if __name__ == "__main__":
