@@ -64,8 +64,9 @@ std::vector<std::size_t> polygon_hull(const std::vector<glm::dvec3>& pts, const 
     return out;
 }
 
-// qhull over a full-dimensional set.
-void polytope(const std::vector<glm::dvec3>& pts, ConvexHull& out) {
+// qhull over a full-dimensional set; false (and qhull's first message
+// line in `failure`) when qhull gives up.
+bool polytope(const std::vector<glm::dvec3>& pts, ConvexHull& out, const char* opts, std::string& failure) {
     std::vector<coordT> coords;
     coords.reserve(pts.size() * 3);
     for (const glm::dvec3& p : pts) coords.insert(coords.end(), {p.x, p.y, p.z});
@@ -75,9 +76,8 @@ void polytope(const std::vector<glm::dvec3>& pts, ConvexHull& out) {
     qhT qh_storage;
     qhT* qh = &qh_storage;
     qh_zero(qh, err);
-    char options[] = "qhull Qs";  // Qs: search all points for the first simplex (nearly flat sets)
-    const int code = qh_new_qhull(qh, 3, int(pts.size()), coords.data(), False, options, nullptr, err);
-    std::string failure;
+    std::string options = opts;
+    const int code = qh_new_qhull(qh, 3, int(pts.size()), coords.data(), False, options.data(), nullptr, err);
     if (code == 0) {
         std::vector<std::uint32_t> remap(pts.size(), UINT32_MAX);
         facetT* facet;
@@ -85,6 +85,7 @@ void polytope(const std::vector<glm::dvec3>& pts, ConvexHull& out) {
         FORALLfacets {
             const glm::dvec3 n(facet->normal[0], facet->normal[1], facet->normal[2]);
             std::vector<std::uint32_t> loop;
+            loop.reserve(std::size_t(qh_setsize(qh, facet->vertices)));
             glm::dvec3 centre(0);
             FOREACHvertex_(facet->vertices) {
                 const std::size_t id = std::size_t(qh_pointid(qh, vertex->point));
@@ -95,16 +96,21 @@ void polytope(const std::vector<glm::dvec3>& pts, ConvexHull& out) {
                 loop.push_back(remap[id]);
                 centre += pts[id];
             }
-            centre /= double(loop.size());
-            // Counter-clockwise about the outward normal: by angle in the facet's plane.
-            const glm::dvec3 e1 = perpendicular(n), e2 = glm::cross(n, e1);
-            std::vector<std::pair<double, std::uint32_t>> by_angle;
-            for (std::uint32_t v : loop) {
-                const glm::dvec3 d = out.points[v] - centre;
-                by_angle.push_back({std::atan2(glm::dot(d, e2), glm::dot(d, e1)), v});
+            if (loop.size() == 3) {  // a triangle: one turn tells its orientation
+                const glm::dvec3 a = out.points[loop[0]], b = out.points[loop[1]], c = out.points[loop[2]];
+                if (glm::dot(glm::cross(b - a, c - a), n) < 0) std::swap(loop[1], loop[2]);
+            } else {
+                // Counter-clockwise about the outward normal: by angle in the facet's plane.
+                centre /= double(loop.size());
+                const glm::dvec3 e1 = perpendicular(n), e2 = glm::cross(n, e1);
+                std::vector<std::pair<double, std::uint32_t>> by_angle;
+                for (std::uint32_t v : loop) {
+                    const glm::dvec3 d = out.points[v] - centre;
+                    by_angle.push_back({std::atan2(glm::dot(d, e2), glm::dot(d, e1)), v});
+                }
+                std::sort(by_angle.begin(), by_angle.end());
+                for (std::size_t i = 0; i < loop.size(); ++i) loop[i] = by_angle[i].second;
             }
-            std::sort(by_angle.begin(), by_angle.end());
-            for (std::size_t i = 0; i < loop.size(); ++i) loop[i] = by_angle[i].second;
             out.faces.push_back(std::move(loop));
             out.normals.push_back(n);
         }
@@ -113,12 +119,12 @@ void polytope(const std::vector<glm::dvec3>& pts, ConvexHull& out) {
     int curlong = 0, totlong = 0;
     qh_memfreeshort(qh, &curlong, &totlong);
     std::fclose(err);
-    if (code != 0) failure = message ? std::string(message) : std::string("qhull error");
-    std::free(message);
     if (code != 0) {
-        const std::size_t nl = failure.find('\n', 1);
-        throw std::runtime_error("qhull failed: " + failure.substr(0, nl));
+        failure = message ? std::string(message) : std::string("qhull error");
+        failure = failure.substr(0, failure.find('\n', 1));
     }
+    std::free(message);
+    return code == 0;
 }
 
 }  // namespace
@@ -157,7 +163,13 @@ ConvexHull convex_hull(const std::vector<glm::dvec3>& pts) {
         return out;
     }
     out.dim = 3;
-    polytope(pts, out);
+    // Nearly flat sets (above kFlat) can make qhull's first simplex too
+    // thin for its default search; Qs searches all points for it.
+    std::string failure;
+    if (polytope(pts, out, "qhull", failure)) return out;
+    out = ConvexHull{};
+    out.dim = 3;
+    if (!polytope(pts, out, "qhull Qs", failure)) throw std::runtime_error("qhull failed: " + failure);
     return out;
 }
 

@@ -61,10 +61,13 @@ TEST_CASE("convex_hull of flat sets: a point, a segment, a polygon", "[hull]") {
     // Nearly coplanar: a 1e-12 bump on a unit square stays flat, a 1e-6 one does not.
     std::vector<glm::dvec3> bumped{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5, 0.5, 1e-12}};
     CHECK(convex_hull(bumped).dim == 2);
-    bumped.back().z = 1e-6;
-    h = convex_hull(bumped);
-    CHECK(h.dim == 3);
-    CHECK(kerf::hull_volume(h) == Approx(1e-6 / 3).epsilon(1e-9));
+    for (double bump : {1e-6, 1e-9}) {
+        bumped.back().z = bump;
+        h = convex_hull(bumped);
+        CHECK(h.dim == 3);
+        CHECK(h.points.size() == 5);
+        CHECK(kerf::hull_volume(h) == Approx(bump / 3).epsilon(1e-6));
+    }
     CHECK(convex_hull({}).dim == -1);
 }
 
