@@ -171,7 +171,12 @@ private:
         if (used == 0) return add_.empty(n.loc);
         std::vector<std::uint32_t> parts;
         for (const ConvexPiece& s : sums) parts.push_back(solid(s, n.loc));
-        return parts.size() == 1 ? parts[0] : add_.op(NodeKind::Union, parts, n.loc);
+        const std::uint32_t sum = parts.size() == 1 ? parts[0] : add_.op(NodeKind::Union, parts, n.loc);
+        if (!n.flat || used == 1) return sum;
+        // 2D: the sum of k unit slabs is the 2D sum times 0 < z < k; back to the unit slab.
+        glm::dmat4 m(1.0);
+        m[2][2] = 1.0 / double(used);
+        return add_.transform(m, sum, n.loc);
     }
 
     // OpenSCAD 2021's resize: per axis, scale = newsize / size where newsize
@@ -194,14 +199,15 @@ private:
         const glm::dvec3 want(n.p[0], n.p[1], n.p[2]);
         glm::dvec3 scale(1);
         int largest = 0;
-        for (int i = 0; i < 3; ++i) {
+        const int dims = n.flat ? 2 : 3;  // a 2D shape's slab keeps its z, as OpenSCAD's 2D resize
+        for (int i = 0; i < dims; ++i) {
             if (want[i] == 0) continue;
             if (size[i] == 0) return child;
             scale[i] = want[i] / size[i];
             if (want[i] > want[largest]) largest = i;
         }
         const double autoscale = want[largest] != 0 ? want[largest] / size[largest] : 1;
-        for (int i = 0; i < 3; ++i)
+        for (int i = 0; i < dims; ++i)
             if (n.p[3 + i] != 0 && want[i] == 0) scale[i] = autoscale;
         glm::dmat4 m(1.0);
         m[0][0] = scale.x, m[1][1] = scale.y, m[2][2] = scale.z;

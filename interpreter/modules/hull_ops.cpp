@@ -19,15 +19,15 @@ using NK = graph::NodeKind;
 using P = csg::PrimKind;
 
 // The children pending since `mark`, grouped into one node of `kind`
-// (nothing at all when there are none; 2D is not built yet).
+// (nothing at all when there are none). 2D children work on the unit slabs
+// they are carried on (scene_graph.hpp): the hull of slabs is the slab of
+// the hull, and lowering scales a sum of slabs back to one.
 bool make(ModuleCall& c, std::size_t mark, NK kind) {
     GraphBuilder& g = c.graph();
     if (g.mark() == mark) {
         c.warn("no children: nothing is made");
         return false;
     }
-    if (g.flat_since(mark))
-        arg_unsupported(c.args, "2D shapes are not supported yet (only 3D children)");
     g.make_node(mark, kind, c.st.loc);
     return true;
 }

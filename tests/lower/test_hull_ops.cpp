@@ -169,8 +169,6 @@ TEST_CASE("hull(), minkowski() and resize() refuse or warn about bad input, loca
     CHECK(first_message("cube(1);\n  hull() plane([0, 0, 1], 0);") ==
           "test.sdl:2:10: error: a half-space has no convex hull (it is unbounded): hull() and minkowski() need "
           "bounded solids");
-    CHECK(first_message("minkowski() { square(1); circle(1); }") ==
-          "test.sdl:1:1: error: minkowski: 2D shapes are not supported yet (only 3D children)");
     CHECK(first_message("hull() { cube(1); square(1); }") ==
           "test.sdl:1:19: error: a 2D shape cannot be combined with 3D solids in one operation");
     CHECK(first_message("resize(10) cube(1);") == "test.sdl:1:1: error: resize: newsize must be a list of up to 3 numbers");
@@ -185,4 +183,23 @@ TEST_CASE("hull(), minkowski() and resize() refuse or warn about bad input, loca
     CHECK(first_message("minkowski() { difference() { cube(2); cube(1); } sphere(1); }") ==
           "test.sdl:1:1: warning: minkowski: a difference is used as its first operand and an intersection as its "
           "first operand: the result may be larger than OpenSCAD's");
+}
+
+TEST_CASE("hull(), minkowski() and resize() of 2D shapes work on their unit slabs", "[hull][minkowski][resize]") {
+    // A top-level 2D model is a plate 1 thick: its volume is the shape's area.
+    volume_is("hull() { square(1); translate([3, 0]) square(1); }", 4);
+    volume_is("linear_extrude(height = 2) hull() { square(1); translate([3, 1]) square(1); }", 2 * 5);
+    // Tapered: the hull of the bottom section and the doubled top one.
+    volume_is("linear_extrude(height = 2, scale = 2) hull() { square(1); translate([2, 0]) square(1); }",
+              2 * 3 * (1 + 1 + 1.0 / 3));
+    // A stadium (tessellated circles) and a rounded square.
+    volume_is("hull() { circle(1); translate([4, 0]) circle(1); }", pi + 8, 1e-3);
+    volume_is("linear_extrude(height = 3) minkowski() { square([2, 3]); circle(0.5); }",
+              3 * (6 + 2 * 0.5 * 5 + pi * 0.25), 1e-3);
+    const auto b = lowered("linear_extrude(height = 5) resize([4, 0], auto = true) square([1, 2]);").bounds();
+    CHECK(b.hi == glm::dvec3(4, 8, 5));
+    CHECK(first_message("rotate_extrude() translate([2, 0]) hull() { square(1); }") ==
+          "test.sdl:1:36: error: rotate_extrude: hull(), minkowski() and resize() of 2D shapes cannot be revolved yet");
+    CHECK(first_message("linear_extrude(height = 1, scale = 2) minkowski() { square(1); circle(1); }") ==
+          "test.sdl:1:39: error: linear_extrude: scale is not implemented yet for minkowski() and resize() of 2D shapes");
 }
