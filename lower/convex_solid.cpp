@@ -1,5 +1,6 @@
 #include "lower/convex_solid.hpp"
 
+#include <algorithm>
 #include <set>
 #include <utility>
 
@@ -64,6 +65,11 @@ public:
     Offsetter(GraphAppender& out, double r, const SourceLoc& loc) : out_(out), r_(r), loc_(loc) {}
     std::vector<std::uint32_t> parts;
 
+    // A vertical cylinder of radius r standing on c, `height` tall (a disc's corner).
+    void post(const glm::dvec3& c, double height) {
+        parts.push_back(out_.transform(translation(c), out_.primitive(P::Cylinder, {0, height, r_, r_}, loc_), loc_));
+    }
+
     void ball(const glm::dvec3& c) { parts.push_back(out_.transform(translation(c), out_.primitive(P::Sphere, {r_}, loc_), loc_)); }
 
     // The cylinder of radius r around segment a–b (its axis frame right-handed).
@@ -103,10 +109,38 @@ private:
     SourceLoc loc_;
 };
 
+
+// hull ⊕ disc: the section (the hull's points seen from above) grown by
+// the disc, between the points' lowest and highest z.
+std::uint32_t grown_section(GraphAppender& out, const ConvexHull& h, double r, const SourceLoc& loc) {
+    double z0 = h.points[0].z, z1 = z0;
+    std::vector<glm::dvec3> flat;
+    for (const glm::dvec3& p : h.points) z0 = std::min(z0, p.z), z1 = std::max(z1, p.z), flat.push_back({p.x, p.y, 0});
+    if (!(z1 > z0)) return out.empty(loc);
+    ConvexHull section = convex_hull(flat);
+    if (section.dim == 2 && section.normal.z < 0) std::reverse(section.points.begin(), section.points.end());
+    std::vector<glm::dvec3> loop;
+    for (const glm::dvec3& p : section.points) loop.push_back({p.x, p.y, z0});
+    Offsetter o(out, r, loc);
+    const glm::dvec3 up(0, 0, z1 - z0);
+    if (section.dim == 2) o.slab(loop, glm::dvec3(0), up);
+    const std::size_t k = loop.size();
+    for (std::size_t i = 0; i < k && section.dim >= 1; ++i) {
+        const glm::dvec3 a = loop[i], b = loop[(i + 1) % k];
+        const glm::dvec3 n = r * glm::normalize(glm::cross(b - a, glm::dvec3(0, 0, 1)));  // outward: loop is counter-clockwise
+        o.slab({a, a + n, b + n, b}, glm::dvec3(0), up);
+        if (section.dim == 1) o.slab({b, b - n, a - n, a}, glm::dvec3(0), up);  // a segment: both sides
+        if (section.dim == 1) break;
+    }
+    for (const glm::dvec3& c : loop) o.post(c, z1 - z0);
+    return o.parts.size() == 1 ? o.parts[0] : out.op(NodeKind::Union, o.parts, loc);
+}
+
 }  // namespace
 
-std::uint32_t convex_solid(GraphAppender& out, const ConvexHull& h, double r, const SourceLoc& loc) {
+std::uint32_t convex_solid(GraphAppender& out, const ConvexHull& h, double r, bool disc, const SourceLoc& loc) {
     if (h.dim < 0 || (r == 0 && h.dim < 3)) return out.empty(loc);
+    if (disc && r > 0) return grown_section(out, h, r, loc);
     if (r == 0) return out.mesh(h.points, h.faces, loc);
     Offsetter o(out, r, loc);
     for (const glm::dvec3& v : h.points) o.ball(v);

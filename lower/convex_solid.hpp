@@ -33,7 +33,11 @@ private:
 };
 
 // The node of hull ⊕ ball(radius) (radius 0: the hull itself; a hull of
-// lower dimension then has no volume and is the empty solid).
-std::uint32_t convex_solid(GraphAppender& out, const ConvexHull& hull, double radius, const SourceLoc& loc);
+// lower dimension then has no volume and is the empty solid). With `disc`,
+// hull ⊕ disc(radius) in the XY plane, for a hull that is a vertical prism
+// (2D shapes on their slabs): the prism of the grown section, i.e. the
+// section's prism, one box-like prism per edge and one cylinder per corner.
+std::uint32_t convex_solid(GraphAppender& out, const ConvexHull& hull, double radius, bool disc,
+                           const SourceLoc& loc);
 
 }  // namespace kerf

@@ -75,7 +75,9 @@ private:
             todo.pop_back();
             const graph::Node& n = out_.nodes[at];
             double s = 0;
-            if (auto it = solved_.find(at); it != solved_.end() && (it->second.radius == 0 || similarity(glm::dmat3(m), s))) {
+            auto it = solved_.find(at);
+            if (it != solved_.end() && (it->second.radius == 0 || (it->second.disc ? planar_similarity(glm::dmat3(m), s)
+                                                                                   : similarity(glm::dmat3(m), s)))) {
                 ConvexPiece p = it->second;
                 for (glm::dvec3& q : p.points) q = glm::dvec3(m * glm::dvec4(q, 1));
                 p.radius *= s;
@@ -111,31 +113,46 @@ private:
     // The solid of a piece, remembered as that piece for outer operations.
     std::uint32_t solid(const ConvexPiece& p, const SourceLoc& loc) {
         const ConvexHull h = hull_of(p.points, loc);
-        const std::uint32_t id = convex_solid(add_, h, p.radius, loc);
-        solved_[id] = ConvexPiece{h.points, p.radius, p.exact};
+        const std::uint32_t id = convex_solid(add_, h, p.radius, p.disc, loc);
+        solved_[id] = ConvexPiece{h.points, p.radius, p.exact, p.disc};
         return id;
+    }
+
+    // A rounded piece as plain points: its corners each with a tessellated
+    // ball (or disc) around them.
+    ConvexPiece tessellated(const ConvexPiece& p, double tol, const SourceLoc& loc) {
+        if (p.radius == 0) return p;
+        std::vector<glm::dvec3> round = sphere_points(p.radius, tol);
+        if (p.disc) {
+            round.clear();
+            const int n = circle_segments(tol);
+            for (int i = 0; i < n; ++i) {
+                const double a = 2 * 3.14159265358979323846 * i / n;
+                round.push_back(p.radius * glm::dvec3(std::cos(a), std::sin(a), 0));
+            }
+        }
+        ConvexPiece out{{}, 0, false, false};
+        for (const glm::dvec3& c : reduced(p, loc).points)
+            for (const glm::dvec3& b : round) out.points.push_back(c + b);
+        return out;
     }
 
     std::uint32_t hull(const graph::Node& n, const std::vector<std::uint32_t>& kids) {
         std::vector<ConvexPiece> ps;
         for (std::uint32_t k : kids) pieces(k, glm::dmat4(1.0), n.p[0], ps);
         if (ps.empty()) return add_.empty(n.loc);
-        // Equal radii (0 included): the hull of the centres grown by the
-        // radius, exactly. Otherwise the balls are tessellated.
+        // Equal radii (0 included) of one kind: the hull of the centres grown
+        // by the ball or disc, exactly. Otherwise the rounding is tessellated.
         bool equal = true;
-        for (const ConvexPiece& p : ps) equal = equal && std::abs(p.radius - ps[0].radius) <= 1e-12 * ps[0].radius;
+        for (const ConvexPiece& p : ps)
+            equal = equal && std::abs(p.radius - ps[0].radius) <= 1e-12 * ps[0].radius && p.disc == ps[0].disc;
         ConvexPiece all;
         all.radius = equal ? ps[0].radius : 0;
-        std::vector<glm::dvec3> ball;
+        all.disc = equal && ps[0].disc;
         for (ConvexPiece& p : ps) {
-            if (equal || p.radius == 0) {
-                all.points.insert(all.points.end(), p.points.begin(), p.points.end());
-                continue;
-            }
-            if (ball.empty()) ball = sphere_points(1, n.p[0]);
-            for (const glm::dvec3& c : reduced(p, n.loc).points)
-                for (const glm::dvec3& b : ball) all.points.push_back(c + p.radius * b);
-            all.exact = false;
+            const ConvexPiece q = equal ? std::move(p) : tessellated(p, n.p[0], n.loc);
+            all.points.insert(all.points.end(), q.points.begin(), q.points.end());
+            all.exact = all.exact && q.exact;
         }
         return solid(all, n.loc);
     }
@@ -160,10 +177,14 @@ private:
                         throw SourceError(n.loc, "minkowski: a sum of " + std::to_string(a.points.size()) + " and " +
                                                      std::to_string(b.points.size()) +
                                                      " points is too large; a coarser --curve-tolerance makes fewer");
-                    ConvexPiece s{{}, a.radius + b.radius, a.exact && b.exact};
-                    s.points.reserve(a.points.size() * b.points.size());
-                    for (const glm::dvec3& x : a.points)
-                        for (const glm::dvec3& y : b.points) s.points.push_back(x + y);
+                    // A ball and a disc do not add up to either: the disc is tessellated.
+                    const bool clash = a.radius > 0 && b.radius > 0 && a.disc != b.disc;
+                    const ConvexPiece& x = clash && a.disc ? tessellated(a, n.p[0], n.loc) : a;
+                    const ConvexPiece& y = clash && b.disc ? tessellated(b, n.p[0], n.loc) : b;
+                    ConvexPiece s{{}, x.radius + y.radius, x.exact && y.exact, x.radius > 0 ? x.disc : y.disc};
+                    s.points.reserve(x.points.size() * y.points.size());
+                    for (const glm::dvec3& u : x.points)
+                        for (const glm::dvec3& v : y.points) s.points.push_back(u + v);
                     next.push_back(reduced(std::move(s), n.loc));
                 }
             sums = std::move(next);

@@ -36,6 +36,12 @@ bool similarity(const glm::dmat3& m, double& s) {
     return s > 0;
 }
 
+bool planar_similarity(const glm::dmat3& m, double& s) {
+    if (m[2] != glm::dvec3(0, 0, 1) || m[0].z != 0 || m[1].z != 0) return false;
+    s = glm::length(m[0]);
+    return s > 0 && std::abs(glm::length(m[1]) - s) <= 1e-12 * s && std::abs(glm::dot(m[0], m[1])) <= 1e-12 * s * s;
+}
+
 int circle_segments(double tolerance) {
     // A chord of angle 2π/n sags r(1 − cos(π/n)) below the circle.
     const double t = std::clamp(tolerance, 1e-9, 0.5);
@@ -74,11 +80,19 @@ ConvexPiece leaf_piece(const graph::SceneGraph& g, const graph::Node& leaf, cons
         case P::Box:
             for (int k = 0; k < 8; ++k) pts.push_back({p[k & 1 ? 3 : 0], p[k & 2 ? 4 : 1], p[k & 4 ? 5 : 2]});
             break;
-        case P::Cylinder:
+        case P::Cylinder: {
+            double s = 0;
+            if (leaf.flat && p[2] == p[3] && planar_similarity(linear, s)) {  // a 2D circle: its axis and a disc
+                piece.points = {glm::dvec3(xf * glm::dvec4(0, 0, p[0], 1)), glm::dvec3(xf * glm::dvec4(0, 0, p[1], 1))};
+                piece.radius = p[2] * s;
+                piece.disc = true;
+                return piece;
+            }
             ring(pts, p[2], p[0], n);
             ring(pts, p[3], p[1], n);
             piece.exact = false;
             break;
+        }
         case P::Hyperboloid:  // its hull is the hull of its two cap circles
             ring(pts, p[1], -p[0] / 2, n);
             ring(pts, p[1], p[0] / 2, n);

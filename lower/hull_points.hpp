@@ -17,6 +17,9 @@ struct ConvexPiece {
     std::vector<glm::dvec3> points;
     double radius = 0;
     bool exact = true;  // false: a tessellated curve
+    // The radius is a disc's in the XY plane, not a ball's: a 2D circle on
+    // its unit slab (scene_graph.hpp), the hull of its axis grown by it.
+    bool disc = false;
 };
 
 // The piece of primitive node `leaf` placed by `xf` (its linear part as
@@ -27,6 +30,10 @@ ConvexPiece leaf_piece(const graph::SceneGraph& g, const graph::Node& leaf, cons
 // True when m is a rotation (or mirror) times a uniform scale s (set): a
 // sphere under it stays a sphere of radius s·r.
 bool similarity(const glm::dmat3& m, double& s);
+
+// True when m keeps z and is a similarity s (set) in the XY plane: a 2D
+// transform under which a circle stays a circle.
+bool planar_similarity(const glm::dmat3& m, double& s);
 
 // The tessellation of a sphere of radius r about the origin: rings of
 // circle_segments(tolerance) points.

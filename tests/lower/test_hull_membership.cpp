@@ -111,3 +111,14 @@ TEST_CASE("degenerate hulls: collinear balls are a capsule, a hull of a flat set
                                           "[[0, 1, 2], [1, 3, 2], [0, 2, 1], [1, 2, 3]]); }");
     CHECK(flat.root == kerf::csg::kNone);
 }
+
+TEST_CASE("a 2D rounded rectangle from minkowski() with a circle, extruded, holds exactly its points", "[minkowski]") {
+    auto oracle = [](const glm::dvec3& p) {
+        const double d = box_distance({p.x, p.y, 0}, glm::dvec3(0), glm::dvec3(2, 3, 0)) - 0.5;
+        return std::max(d, std::max(-p.z, p.z - 2));
+    };
+    agree("linear_extrude(height = 2) rotate(0) minkowski() { square([2, 3]); circle(0.5); }",
+          {glm::dvec3(-0.7, -0.7, -0.3), glm::dvec3(2.7, 3.7, 2.3)}, 1e-7, oracle);
+    agree("linear_extrude(height = 2) hull() for (x = [0, 2], y = [0, 3]) translate([x, y]) circle(0.5);",
+          {glm::dvec3(-0.7, -0.7, -0.3), glm::dvec3(2.7, 3.7, 2.3)}, 1e-7, oracle);
+}

@@ -192,10 +192,26 @@ TEST_CASE("hull(), minkowski() and resize() of 2D shapes work on their unit slab
     // Tapered: the hull of the bottom section and the doubled top one.
     volume_is("linear_extrude(height = 2, scale = 2) hull() { square(1); translate([2, 0]) square(1); }",
               2 * 3 * (1 + 1 + 1.0 / 3));
-    // A stadium (tessellated circles) and a rounded square.
-    volume_is("hull() { circle(1); translate([4, 0]) circle(1); }", pi + 8, 1e-3);
-    volume_is("linear_extrude(height = 3) minkowski() { square([2, 3]); circle(0.5); }",
-              3 * (6 + 2 * 0.5 * 5 + pi * 0.25), 1e-3);
+    // Circles of one radius are exact (a disc round the hull of their
+    // centres): a stadium, a rounded rectangle, scaled and turned.
+    volume_is("hull() { circle(1); translate([4, 0]) circle(1); }", pi + 8);
+    const std::string rounded = "linear_extrude(height = 3) minkowski() { square([2, 3]); circle(0.5); }";
+    volume_is(rounded, 3 * (6 + 2 * 0.5 * 5 + pi * 0.25));
+    std::size_t points = 0;
+    const auto k = kinds(lowered(rounded), &points);
+    CHECK(k.at(kerf::csg::PrimKind::Cylinder) == 4);
+    CHECK(points <= 8);
+    volume_is("scale(2) rotate(30) hull() { circle(0.5); translate([2, 0]) circle(0.5); translate([0, 1.5]) "
+              "circle(0.5); }",
+              4 * (1.5 + 0.5 * (2 + 1.5 + 2.5) + pi * 0.25));  // (area + r·perimeter + πr²)·2²
+    // Unequal circles are tessellated within the tolerance.
+    volume_is("hull() { circle(2); translate([5, 0]) circle(1); }",
+              [] {  // two tangent segments and the arcs beyond them
+                  const double d = 5, s = 1.0 / d, c = std::sqrt(1 - s * s);
+                  const double a = std::acos(-s);  // half the big arc's angle beyond the tangents
+                  return a * 4 + (pi - a) * 1 + (2 + 1) * c * d;
+              }(),
+              1e-3);
     const auto b = lowered("linear_extrude(height = 5) resize([4, 0], auto = true) square([1, 2]);").bounds();
     CHECK(b.hi == glm::dvec3(4, 8, 5));
     CHECK(first_message("rotate_extrude() translate([2, 0]) hull() { square(1); }") ==
