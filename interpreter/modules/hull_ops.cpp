@@ -49,8 +49,8 @@ void warn_approximations(ModuleCall& c, std::uint32_t id, bool minkowski) {
         for (std::uint32_t k = 0; k < n.child_count; ++k) todo.push_back(g.child_refs[n.first_child + k]);
     }
     if (boolean)
-        c.warn("a difference is used as its first operand and an intersection as its first operand: the result "
-               "may be larger than OpenSCAD's");
+        c.warn("a difference() or intersection() inside is used as its first operand: the result may be larger "
+               "than OpenSCAD's");
     if (minkowski && concave)
         c.warn("a torus, rotate_extrude, polyhedron or extruded polygon child is used as its convex hull: exact only "
                "when it is convex");

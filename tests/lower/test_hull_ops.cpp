@@ -181,8 +181,8 @@ TEST_CASE("hull(), minkowski() and resize() refuse or warn about bad input, loca
     CHECK(first_message("resize([1, 1]) plane([0, 0, 1], 0);") ==
           "test.sdl:1:1: error: resize: the child is unbounded (a half-space), it has no size");
     CHECK(first_message("minkowski() { difference() { cube(2); cube(1); } sphere(1); }") ==
-          "test.sdl:1:1: warning: minkowski: a difference is used as its first operand and an intersection as its "
-          "first operand: the result may be larger than OpenSCAD's");
+          "test.sdl:1:1: warning: minkowski: a difference() or intersection() inside is used as its first operand: "
+          "the result may be larger than OpenSCAD's");
 }
 
 TEST_CASE("hull(), minkowski() and resize() of 2D shapes work on their unit slabs", "[hull][minkowski][resize]") {
