@@ -61,7 +61,7 @@ const char* usage_text() {
            "                        [--preview] [--aov depth|normal|hits] [--stats] [--no-progress]\n"
            "                        [-D name=value ...] [-I dir ...] [--crop x0,y0,x1,y1]\n"
            "                        [--seed N] [--precision double|float] [--base DIR]\n"
-           "                        [--curve-tolerance 1e-4]  (text(): flattening, a fraction of size)\n"
+           "                        [--curve-tolerance 1e-4]  (text(), hull(), minkowski(): flattening, a fraction of size)\n"
            "                        [--frames N [--frame I]] [--tile K/N] [--resume]\n"
            "    SCENE '-' reads standard input (includes resolve against --base DIR or the\n"
            "    working folder); -o - writes the PNG to standard output\n"

@@ -26,6 +26,12 @@ enum class NodeKind : std::uint8_t {
     Difference,    // children[0] minus the rest (0 children = empty solid)
     Transform,     // one child (a union of the block); matrix index
     Appearance,    // one child; material index applies to leaves without an inner one
+    // The 3D operations lowering resolves into ordinary nodes before it
+    // flattens (lower/geometry_ops.hpp, docs/lowering.md "Hull, Minkowski,
+    // resize"): they need the children's exact boxes or points.
+    Hull,          // any number of children; p[0] = tessellation tolerance of curved children
+    Minkowski,     // any number of children; p[0] = tessellation tolerance of curved children
+    Resize,        // one child; p[0..2] = newsize, p[3..5] = auto (1 or 0), OpenSCAD's rule
 };
 
 struct Node {

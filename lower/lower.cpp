@@ -4,6 +4,7 @@
 
 #include "lower/flat_tree.hpp"
 #include "lower/defaults.hpp"
+#include "lower/geometry_ops.hpp"
 
 namespace kerf {
 
@@ -24,7 +25,9 @@ void apply_scene_statements(const graph::SceneGraph& g, csg::Scene& s) {
 
 }  // namespace
 
-csg::Scene lower_to_csg(const graph::SceneGraph& graph) {
+csg::Scene lower_to_csg(const graph::SceneGraph& input) {
+    graph::SceneGraph resolved;  // hull(), minkowski(), resize() replaced, when there are any
+    const graph::SceneGraph& graph = resolve_geometry_ops(input, resolved) ? resolved : input;
     csg::Scene scene;
     const lowering::FlatTree tree = lowering::build_flat_tree(graph, scene.leaves);
     lowering::emit_flat_tree(graph, tree, scene);

@@ -67,6 +67,7 @@ std::span<const ModuleEntry> setup_modules();
 std::span<const ModuleEntry> shape2d_modules();  // shapes2d.cpp
 std::span<const ModuleEntry> revolve_modules();  // rotate_extrude.cpp
 std::span<const ModuleEntry> text_modules();     // text.cpp
+std::span<const ModuleEntry> hull_modules();     // hull_ops.cpp: hull, minkowski, resize
 
 // The built-in module called `name`, or null.
 const ModuleEntry* find_module(std::string_view name);

@@ -50,6 +50,10 @@ public:
             for (const glm::dvec2 p : outline(n, a)) extend(p.x);
             return;
         }
+        // Lowering builds these from their children's points and boxes,
+        // which a revolution does not carry over (a revolved hull is no hull).
+        if (n.kind == graph::NodeKind::Hull || n.kind == graph::NodeKind::Minkowski || n.kind == graph::NodeKind::Resize)
+            throw SourceError(n.loc, "rotate_extrude: hull(), minkowski() and resize() of 2D shapes cannot be revolved yet");
         const Map2 inner = n.kind == graph::NodeKind::Transform ? a * plane_part(g_.graph.matrices[n.index]) : a;
         for (std::uint32_t k = 0; k < n.child_count; ++k) measure(g_.graph.child_refs[n.first_child + k], inner);
     }

@@ -130,6 +130,11 @@ void taper(graph::SceneGraph& g, std::uint32_t root, double s) {
             }
             continue;
         }
+        // The taper commutes with a hull (the hull of the tapered pieces is
+        // the tapered hull: both are the hull of the bottom and the scaled
+        // top sections), not with a Minkowski sum or a resize's box.
+        if (n.kind == graph::NodeKind::Minkowski || n.kind == graph::NodeKind::Resize)
+            throw SourceError(n.loc, "linear_extrude: scale is not implemented yet for minkowski() and resize() of 2D shapes");
         if (n.kind == graph::NodeKind::Transform) {
             glm::dmat4& m = g.matrices[n.index];
             m[2][0] = (s - 1) * m[3][0];
