@@ -10,6 +10,7 @@ packages=(
   g++ cmake make pkg-config
   libembree-dev libtbb-dev tao-pegtl-dev libopenimageio-dev libpng-dev zlib1g-dev libglm-dev
   libfreetype-dev libfontconfig-dev libharfbuzz-dev fonts-liberation2   # text(): outlines, lookup, shaping, default font
+  libpolyclipping-dev   # offset(): Clipper's polygon booleans and offsets
 )
 if [[ "${1:-}" != "--render" ]]; then
   packages+=(
