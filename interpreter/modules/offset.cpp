@@ -132,7 +132,7 @@ void offset(ModuleCall& c) {
     }
     Region2 region;
     try {
-        region = flatten_region(g.graph, shapes, dist, c.curve_tolerance());
+        region = flatten_region(g.graph, shapes, dist, c.curve_tolerance(), c.st.loc);
         if (round) return round_offset(c, std::move(region), dist);
         // OpenSCAD's miter limit: high enough never to square a sharp corner.
         ClipperOffset off(1e6);

@@ -111,7 +111,7 @@ private:
 }  // namespace
 
 Region2 flatten_region(const graph::SceneGraph& g, std::span<const std::uint32_t> roots, double margin,
-                       double curve_tolerance) {
+                       double curve_tolerance, const SourceLoc& loc) {
     Flattener f(g, curve_tolerance);
     for (std::uint32_t id : roots) f.measure(id, Map2(1.0));
     const double extent = f.extent + 2 * std::abs(margin);
@@ -120,6 +120,8 @@ Region2 flatten_region(const graph::SceneGraph& g, std::span<const std::uint32_t
     // its products exact, and the offset's arithmetic, done in doubles, stays
     // within their 2^53 integers.
     r.scale = extent > 0 ? std::ldexp(1.0, 50 - std::ilogb(extent) - 1) : 1;
+    if (!std::isfinite(r.scale) || !std::isfinite(extent))  // below 2^-970 or past the doubles: no grid holds it
+        throw SourceError(loc, "the 2D shape's coordinates are out of the range this operation supports");
     f.frame.scale = r.scale;
     Paths all;
     for (std::uint32_t id : roots) {

@@ -32,9 +32,10 @@ struct Region2 {
 
 // The union of the 2D nodes `roots` as one region, on a grid that leaves
 // room for `margin` around it (an offset's distance). Throws SourceError
-// at a leaf that is not a 2D shape.
+// at a leaf that is not a 2D shape, and at `loc` for coordinates no grid of
+// doubles holds.
 Region2 flatten_region(const graph::SceneGraph& g, std::span<const std::uint32_t> roots, double margin,
-                       double curve_tolerance);
+                       double curve_tolerance, const SourceLoc& loc);
 
 // The region's paths as the even-odd edge set of a Prism section.
 csg::Polygon2 region_polygon(const Region2& r);
