@@ -9,9 +9,9 @@
 //   circle among them flattened within the curve tolerance); `delta` is
 //   Clipper's polygon offset of it; `r` is the region with the rectangle
 //   of width 2|r| around each boundary edge added (r > 0) or taken away
-//   (r < 0) by Clipper, then a disc of radius |r| at every boundary vertex
-//   added or subtracted as Cylinder leaves: the set of points within |r| of
-//   the boundary is exactly those rectangles and discs.
+//   (r < 0) by Clipper, then a disc of radius |r| at the corners added or
+//   subtracted as Cylinder leaves: the set of points within |r| of the
+//   boundary is exactly those rectangles and discs (round_offset).
 #include <cmath>
 
 #include "interpreter/modules/args.hpp"
@@ -69,22 +69,46 @@ void push_disc(ModuleCall& c, glm::dvec2 centre, double radius) {
 }
 
 // offset(r): the region and the rectangles around its edges merged by
-// Clipper, then the discs at its vertices as leaves.
-void round_offset(ModuleCall& c, Region2 region, double r) {
+// Clipper, then discs at the corners where the nearest boundary point can
+// be a vertex: the region's convex corners for r > 0, its reflex corners
+// for r < 0 (a point's nearest point is never a corner the region wraps
+// around). A corner that turns by less than the curve tolerance's angle (a
+// flattened curve's vertex: its arc's sagitta within tolerance · |r|) gets
+// the triangle under its arc merged by Clipper instead of a disc leaf, so
+// an offset curve costs no more than the curve.
+void round_offset(ModuleCall& c, Region2 region, double r, double tolerance) {
     const double w = std::abs(r);
-    Paths rects;
-    std::vector<glm::dvec2> vertices;
+    Paths added;  // rectangles and corner triangles, counter-clockwise
+    auto add = [&](std::initializer_list<glm::dvec2> pts) {
+        Path path;
+        for (glm::dvec2 p : pts) path.push_back(region.grid(p));
+        if (!Orientation(path)) ReversePath(path);
+        added.push_back(std::move(path));
+    };
+    std::vector<glm::dvec2> discs;
     for (const Path& path : region.paths)
         for (std::size_t i = 0; i < path.size(); ++i) {
-            const glm::dvec2 p = region.point(path[i]), q = region.point(path[(i + 1) % path.size()]);
-            vertices.push_back(p);
-            if (p == q) continue;
-            const glm::dvec2 d = glm::normalize(q - p), n(-d.y * w, d.x * w);
-            rects.push_back({region.grid(p + n), region.grid(p - n), region.grid(q - n), region.grid(q + n)});
+            const std::size_t n = path.size();
+            const glm::dvec2 o = region.point(path[(i + n - 1) % n]), p = region.point(path[i]),
+                             q = region.point(path[(i + 1) % n]);
+            if (p == q || o == p) continue;
+            const glm::dvec2 d0 = glm::normalize(p - o), d1 = glm::normalize(q - p);
+            const glm::dvec2 left1(-d1.y, d1.x);
+            add({p + w * left1, p - w * left1, q - w * left1, q + w * left1});
+            // The region lies left of its paths (Clipper: outer paths counter-clockwise, holes clockwise).
+            const double turn = d0.x * d1.y - d0.y * d1.x;
+            if (r > 0 ? turn <= 0 : turn >= 0) continue;
+            const double angle = std::atan2(std::abs(turn), glm::dot(d0, d1));
+            if (1 - std::cos(angle / 2) > tolerance) {
+                discs.push_back(p);
+            } else {
+                const double side = r > 0 ? -1 : 1;  // the arc's side: right of the path for r > 0
+                add({p, p + side * w * glm::dvec2(-d0.y, d0.x), p + side * w * left1});
+            }
         }
     Clipper clip;
     clip.AddPaths(region.paths, ptSubject, true);
-    clip.AddPaths(rects, ptClip, true);
+    clip.AddPaths(added, ptClip, true);
     Paths out;
     clip.Execute(r > 0 ? ctUnion : ctDifference, out, pftNonZero, pftNonZero);
     GraphBuilder& g = c.graph();
@@ -93,7 +117,7 @@ void round_offset(ModuleCall& c, Region2 region, double r) {
     merged.paths = std::move(out);
     push_prism(c, merged);
     if (g.mark() == mark && r < 0) return;  // eroded away
-    for (glm::dvec2 v : vertices) push_disc(c, v, w);
+    for (glm::dvec2 v : discs) push_disc(c, v, w);
     if (g.mark() > mark + 1) g.make_node(mark, r > 0 ? graph::NodeKind::Union : graph::NodeKind::Difference, c.st.loc);
 }
 
@@ -133,7 +157,7 @@ void offset(ModuleCall& c) {
     Region2 region;
     try {
         region = flatten_region(g.graph, shapes, dist, c.curve_tolerance(), c.st.loc);
-        if (round) return round_offset(c, std::move(region), dist);
+        if (round) return round_offset(c, std::move(region), dist, c.curve_tolerance());
         // OpenSCAD's miter limit: high enough never to square a sharp corner.
         ClipperOffset off(1e6);
         off.AddPaths(region.paths, chamfer ? jtSquare : jtMiter, etClosedPolygon);

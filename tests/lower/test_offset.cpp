@@ -154,7 +154,7 @@ TEST_CASE("random offsets agree with the distance definition, point by point", "
             const glm::dvec2 w = shift + glm::dvec2(4 * u(rng), 4 * u(rng));
             const glm::dvec2 d = w - shift, x(c * d.x + sn * d.y, -sn * d.x + c * d.y);  // back into the polygon's frame
             const double dist = boundary_distance(p, x);
-            if (std::abs(dist - std::abs(r)) < 1e-6) continue;
+            if (std::abs(dist - std::abs(r)) < 1e-4 * std::abs(r) + 1e-6) continue;  // a flat corner's arc: its chord
             const bool want = r > 0 ? even_odd(p, x) || dist < r : even_odd(p, x) && dist > -r;
             INFO("point " << w.x << ", " << w.y);
             CHECK(csg::contains(s, glm::dvec3(w, 0.5)) == want);
