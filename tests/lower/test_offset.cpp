@@ -128,6 +128,21 @@ TEST_CASE("offset of a circle is the circle of radius r + delta, exactly", "[off
     check_area("offset(r = 0) scale([2, 1]) circle(1);", kPi * a * b);
 }
 
+TEST_CASE("OpenSCAD's offset example: a tapered extrusion of an offset and a ring of two offsets", "[offset]") {
+    // examples/Advanced/offset.scad of Debian's openscad; at $fn = 512
+    // OpenSCAD's mesh has volume 59934.99, the closed form 59935.10: the
+    // frustum of the rounded square (area A0, sections scaled 1 → 0.5) and
+    // the ring between circles of radius 16 and 14.
+    const double a0 = 50 * 50 + 4 * 50 * 10 + kPi * 100;
+    const auto m = measured(
+        "linear_extrude(height = 20, scale = 0.5) offset(10) square(50, center = true);\n"
+        "translate([0, 0, 20]) linear_extrude(height = 20) difference() { offset(1) circle(15); offset(-1) circle(15); }");
+    const double exact = 20 * a0 * (1 + 0.5 + 0.25) / 3 + 20 * kPi * (16 * 16 - 14 * 14);
+    INFO("volume " << m.volume << " ± " << m.volume_error << ", exact " << exact);
+    CHECK(std::abs(m.volume - exact) <= m.volume_error);
+    CHECK(std::abs(m.volume - exact) <= 1e-3 * exact);
+}
+
 TEST_CASE("random offsets agree with the distance definition, point by point", "[offset]") {
     std::mt19937_64 rng(15);
     std::uniform_real_distribution<double> u(-1, 1);
