@@ -5,6 +5,8 @@
 // their parents and no node owns a heap-allocated child list.
 #pragma once
 #include <cstdint>
+#include <functional>
+#include <string>
 #include <vector>
 
 #include "grammar/source.hpp"
@@ -34,6 +36,11 @@ public:
         graph.matrices.push_back(m);
     }
 
+    // The OpenSCAD dialect's mixing rule (docs/spec.md §10): set, a child of
+    // the other kind than an operation's first is left out with this warning
+    // instead of the error, as OpenSCAD 2021.01 ignores it.
+    std::function<void(const SourceLoc&, const std::string&)> warn_mixed;
+
     std::uint32_t add(graph::Node&& n) {
         grow(graph.nodes, max_nodes);
         graph.nodes.push_back(std::move(n));
@@ -42,20 +49,28 @@ public:
     void push(std::uint32_t id) { pending.push_back(id); }
 
     // One node of `kind` whose children are pending[mark..]; replaces them.
-    // It is 2D when its children are; 2D and 3D children together are an
-    // error at the first child of the other kind (docs/spec.md §10).
+    // It is 2D when its first child is; a child of the other kind is an
+    // error at it (docs/spec.md §10), or dropped by warn_mixed.
     std::uint32_t make_node(std::size_t mark, graph::NodeKind kind, const SourceLoc& loc, std::uint32_t index = 0) {
         graph::Node n;
         n.kind = kind;
         n.index = index;
         if (pending.size() > mark) {
             n.flat = graph.nodes[pending[mark]].flat;
+            std::size_t kept = mark + 1;
             for (std::size_t i = mark + 1; i < pending.size(); ++i) {
                 const graph::Node& c = graph.nodes[pending[i]];
-                if (c.flat != n.flat)
+                if (c.flat == n.flat) {
+                    pending[kept++] = pending[i];
+                    continue;
+                }
+                if (!warn_mixed)
                     throw SourceError(c.loc, c.flat ? "a 2D shape cannot be combined with 3D solids in one operation"
                                                     : "a 3D solid cannot be combined with 2D shapes in one operation");
+                warn_mixed(c.loc, c.flat ? "mixing 2D and 3D objects is not supported: this 2D shape is ignored"
+                                         : "mixing 2D and 3D objects is not supported: this 3D solid is ignored");
             }
+            pending.resize(kept);
         }
         n.first_child = static_cast<std::uint32_t>(graph.child_refs.size());
         n.child_count = static_cast<std::uint32_t>(pending.size() - mark);

@@ -11,6 +11,7 @@ packages=(
   libembree-dev libtbb-dev tao-pegtl-dev libopenimageio-dev libpng-dev zlib1g-dev libglm-dev
   libfreetype-dev libfontconfig-dev libharfbuzz-dev fonts-liberation2   # text(): outlines, lookup, shaping, default font
   libqhull-dev   # hull(), minkowski(): convex hulls (libqhull_r)
+  libpolyclipping-dev   # offset(): Clipper's polygon booleans and offsets
 )
 if [[ "${1:-}" != "--render" ]]; then
   packages+=(

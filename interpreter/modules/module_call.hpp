@@ -38,6 +38,11 @@ public:
     // A warning at the statement (Evaluator::warn).
     void warn(std::string message);
     bool lenient() const { return ev_.lenient(); }  // the OpenSCAD dialect
+    // An operation on 2D shapes: its children pending[mark..] taken off the
+    // stack, the 2D ones returned. A 3D child is an error in .sdl and
+    // ignored with a warning in .scad, as OpenSCAD does; `verb` says what
+    // the operation does ("revolves") in both messages.
+    std::vector<std::uint32_t> flat_children(std::size_t mark, const char* verb);
     // The graph's index of a new mesh (for a Mesh primitive).
     std::uint32_t add_mesh(graph::PolygonMesh mesh);
 
@@ -68,6 +73,7 @@ std::span<const ModuleEntry> shape2d_modules();  // shapes2d.cpp
 std::span<const ModuleEntry> revolve_modules();  // rotate_extrude.cpp
 std::span<const ModuleEntry> text_modules();     // text.cpp
 std::span<const ModuleEntry> hull_modules();     // hull_ops.cpp: hull, minkowski, resize
+std::span<const ModuleEntry> offset_modules();   // offset.cpp
 
 // The built-in module called `name`, or null.
 const ModuleEntry* find_module(std::string_view name);

@@ -15,25 +15,13 @@
 #include "interpreter/degrees.hpp"
 #include "interpreter/modules/args.hpp"
 #include "interpreter/modules/module_call.hpp"
+#include "interpreter/modules/plane_map.hpp"
 
 namespace kerf::eval {
 
 namespace {
 
 using P = csg::PrimKind;
-
-// x' = A·(x, y, 1), homogeneous 2D (GLM: column-major).
-using Map2 = glm::dmat3;
-
-Map2 plane_part(const glm::dmat4& m) {
-    Map2 a(1.0);
-    a[0] = {m[0][0], m[0][1], 0};
-    a[1] = {m[1][0], m[1][1], 0};
-    a[2] = {m[3][0], m[3][1], 1};
-    return a;
-}
-
-glm::dvec2 apply(const Map2& a, glm::dvec2 p) { return glm::dvec2(a * glm::dvec3(p, 1)); }
 
 class Revolver {
 public:
@@ -159,7 +147,7 @@ private:
             g_.make_node(mark, graph::NodeKind::Transform, n.loc, static_cast<std::uint32_t>(g_.graph.matrices.size() - 1));
             return;
         }
-        const int segments = int(std::ceil(std::numbers::pi / std::acos(1 - std::min(tol_, 0.5))));
+        const int segments = circle_segments(tol_);
         for (int i = 0; i < segments; ++i) {
             const double t0 = 2 * std::numbers::pi * i / segments, t1 = 2 * std::numbers::pi * (i + 1) / segments;
             edge(r * glm::dvec2(std::cos(t0), std::sin(t0)), r * glm::dvec2(std::cos(t1), std::sin(t1)));
@@ -207,19 +195,7 @@ void rotate_extrude(ModuleCall& c) {
     GraphBuilder& g = c.graph();
     const std::size_t mark = g.mark();
     c.children();
-    // 3D children: ignored with a warning in .scad (OpenSCAD does), an error in .sdl.
-    std::vector<std::uint32_t> shapes;
-    for (std::size_t i = mark; i < g.pending.size(); ++i) {
-        const graph::Node& n = g.graph.nodes[g.pending[i]];
-        if (n.flat) {
-            shapes.push_back(g.pending[i]);
-        } else if (c.lenient()) {
-            c.warn("ignoring a 3D child (rotate_extrude revolves 2D shapes)");
-        } else {
-            throw SourceError(n.loc, "rotate_extrude: revolves 2D shapes, not 3D solids");
-        }
-    }
-    g.pending.resize(mark);
+    const std::vector<std::uint32_t> shapes = c.flat_children(mark, "revolves");
     if (shapes.empty() || angle == 0) return;  // angle 0: the empty solid, as in OpenSCAD
     Revolver rev(c, c.curve_tolerance());
     for (std::uint32_t id : shapes) rev.measure(id, Map2(1.0));

@@ -57,7 +57,7 @@ const std::vector<const ModuleEntry*>& module_table() {
     static const std::vector<const ModuleEntry*> table = [] {
         std::vector<const ModuleEntry*> all;
         for (auto group : {solid_modules(), transform_modules(), appearance_modules(), setup_modules(), shape2d_modules(),
-                           revolve_modules(), text_modules(), hull_modules()})
+                           revolve_modules(), text_modules(), hull_modules(), offset_modules()})
             for (const ModuleEntry& e : group) all.push_back(&e);
         std::sort(all.begin(), all.end(),
                   [](const ModuleEntry* a, const ModuleEntry* b) { return std::string_view(a->name) < b->name; });
@@ -140,6 +140,22 @@ void ModuleCall::add_primitive(csg::PrimKind kind, std::initializer_list<double>
     for (double x : p) n.p[i++] = x;
     n.loc = st.loc;
     graph().push(graph().add(std::move(n)));
+}
+
+std::vector<std::uint32_t> ModuleCall::flat_children(std::size_t mark, const char* verb) {
+    GraphBuilder& g = graph();
+    std::vector<std::uint32_t> shapes;
+    for (std::size_t i = mark; i < g.pending.size(); ++i) {
+        const graph::Node& n = g.graph.nodes[g.pending[i]];
+        if (n.flat)
+            shapes.push_back(g.pending[i]);
+        else if (lenient())
+            warn(std::string("ignoring a 3D child (") + args.callee + " " + verb + " 2D shapes)");
+        else
+            throw SourceError(n.loc, std::string(args.callee) + ": " + verb + " 2D shapes, not 3D solids");
+    }
+    g.pending.resize(mark);
+    return shapes;
 }
 
 void ModuleCall::warn(std::string message) { ev_.warn(st.loc, std::string(args.callee) + ": " + std::move(message)); }

@@ -13,12 +13,15 @@
 
 namespace kerf::test {
 
-inline csg::Scene lowered(const std::string& text) {
+// The evaluated script, as a file `path` (its extension picks the dialect).
+inline EvalResult evaluated(const std::string& text, const std::string& path = "test.sdl") {
     auto f = std::make_shared<SourceFile>();
-    f->path = "test.sdl";
+    f->path = path;
     f->text = text;
-    return lower_to_csg(evaluate_source(f).graph);
+    return evaluate_source(f);
 }
+
+inline csg::Scene lowered(const std::string& text) { return lower_to_csg(evaluated(text).graph); }
 
 // Hit where `want` hits, at the same depth within `rel`; enough hits to mean something.
 inline void same_depth(const render::Image& got, const render::Image& want, double rel, std::size_t min_hits = 200) {

@@ -29,12 +29,7 @@ render::Image depth_of(const std::string& solid) {
     return render::render(test::lowered("camera(position = [7, -9, 6], look_at = [0, 0, 0]);\n" + solid), o);
 }
 
-EvalResult eval_scad(const std::string& text) {
-    auto f = std::make_shared<SourceFile>();
-    f->path = "test.scad";
-    f->text = text;
-    return evaluate_source(f);
-}
+EvalResult eval_scad(const std::string& text) { return test::evaluated(text, "test.scad"); }
 
 // ρ in [2, 3], z in [0, 2], angle from `from` over `sweep` degrees (signed).
 bool in_tube(const glm::dvec3& p, double from, double sweep) {
