@@ -15,25 +15,13 @@
 #include "interpreter/degrees.hpp"
 #include "interpreter/modules/args.hpp"
 #include "interpreter/modules/module_call.hpp"
+#include "interpreter/modules/plane_map.hpp"
 
 namespace kerf::eval {
 
 namespace {
 
 using P = csg::PrimKind;
-
-// x' = A·(x, y, 1), homogeneous 2D (GLM: column-major).
-using Map2 = glm::dmat3;
-
-Map2 plane_part(const glm::dmat4& m) {
-    Map2 a(1.0);
-    a[0] = {m[0][0], m[0][1], 0};
-    a[1] = {m[1][0], m[1][1], 0};
-    a[2] = {m[3][0], m[3][1], 1};
-    return a;
-}
-
-glm::dvec2 apply(const Map2& a, glm::dvec2 p) { return glm::dvec2(a * glm::dvec3(p, 1)); }
 
 class Revolver {
 public:
@@ -155,11 +143,7 @@ private:
             g_.make_node(mark, graph::NodeKind::Transform, n.loc, static_cast<std::uint32_t>(g_.graph.matrices.size() - 1));
             return;
         }
-        const int segments = int(std::ceil(std::numbers::pi / std::acos(1 - std::min(tol_, 0.5))));
-        for (int i = 0; i < segments; ++i) {
-            const double t0 = 2 * std::numbers::pi * i / segments, t1 = 2 * std::numbers::pi * (i + 1) / segments;
-            edge(r * glm::dvec2(std::cos(t0), std::sin(t0)), r * glm::dvec2(std::cos(t1), std::sin(t1)));
-        }
+        circle_chords(r, tol_, edge);
         push_polygon(n, std::move(edges));
     }
 };
