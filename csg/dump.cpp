@@ -91,7 +91,9 @@ void leaf_shape(std::string& out, const Leaf& l) {
         case PrimKind::Prism:
             out += "prism polygon=" + std::to_string(l.polygon);
             field(out, "z0", p[0]); field(out, "z1", p[1]);
-            if (p[2] != 0) field(out, "top_scale", 1 + p[2]);
+            if (p[2] != 0 || p[3] != 0) field(out, "top_scale", 1 + p[2]);
+            if (p[3] != 0) field(out, "top_scale_y", 1 + p[2] + p[3]);
+            if (p[4] != 0) field(out, "twist", p[4] * 180 / 3.14159265358979323846);
             break;
         case PrimKind::Lathe: out += "lathe polygon=" + std::to_string(l.polygon); break;
     }

@@ -65,8 +65,12 @@ bool even_odd(const Polygon2& poly, double px, double py) {
 
 bool contains_prism(const Polygon2& poly, const double* c, const glm::dvec3& x) {
     if (!(c[0] < x.z && x.z < c[1])) return false;
-    const double k = 1 + c[2] * (x.z - c[0]) / (c[1] - c[0]);  // the section's scale at this z
-    return even_odd(poly, x.x / k, x.y / k);
+    // The section at this z is scale(kx, ky) · rotate(−c[4]·τ) · poly: undo both.
+    const double tau = (x.z - c[0]) / (c[1] - c[0]);
+    const double kx = 1 + c[2] * tau, ky = 1 + (c[2] + c[3]) * tau;
+    if (!(kx > 0 && ky > 0)) return false;
+    const double u = x.x / kx, v = x.y / ky, a = c[4] * tau;
+    return even_odd(poly, std::cos(a) * u - std::sin(a) * v, std::sin(a) * u + std::cos(a) * v);
 }
 
 // Revolved back into the (ρ, z) half-plane: the section's rule there.

@@ -63,7 +63,8 @@ enum class PrimKind : std::uint8_t {
     Hyperboloid,  // p[0] = h, p[1] = r (radius at z = ±h/2), p[2] = waist (radius at z = 0)
     Mesh,         // graph: index into SceneGraph::meshes; Leaf: Leaf::mesh
     Prism,        // p[0] = z0, p[1] = z1 (> z0): a polygon set (even-odd) times the slab z0 < z < z1,
-                  //   the section at z scaled by 1 + p[2]·(z − z0)/(z1 − z0) (p[2] > −1; 0: straight);
+                  //   the section at τ = (z − z0)/(z1 − z0) is scale(1 + p[2]·τ, 1 + (p[2] + p[3])·τ) ·
+                  //   rotate(−p[4]·τ radians) · polygon (p[2], p[2] + p[3] >= −1; all 0: straight);
                   //   graph: index into SceneGraph::polygons; Leaf: Leaf::polygon
     Lathe,        // a polygon set (even-odd) in the half-plane x >= 0 (x = radius, y = height) revolved
                   //   about Z; no parameters; graph: SceneGraph::polygons; Leaf: Leaf::polygon

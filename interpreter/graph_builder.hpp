@@ -97,11 +97,16 @@ public:
     // The 2D shapes pending[mark..] extruded to z0 < z < z1: the unit slab
     // they are carried on, mapped in z (scene_graph.hpp, Node::flat).
     void extrude(std::size_t mark, double z0, double z1, const SourceLoc& loc) {
-        if (pending.size() == mark) return;
-        group(mark, loc);
         glm::dmat4 m(1.0);
         m[2][2] = z1 - z0;
         m[3][2] = z0;
+        extrude(mark, m, loc);
+    }
+
+    // The same with the unit slab mapped by m (linear_extrude's v: a shear).
+    void extrude(std::size_t mark, const glm::dmat4& m, const SourceLoc& loc) {
+        if (pending.size() == mark) return;
+        group(mark, loc);
         add_matrix(m);
         make_node(mark, graph::NodeKind::Transform, loc, static_cast<std::uint32_t>(graph.matrices.size() - 1));
         graph.nodes[pending.back()].flat = false;

@@ -74,11 +74,26 @@ void place_leaf(csg::Leaf& leaf, const csg::Affine& wfo, const std::vector<glm::
 std::vector<glm::dvec3> prism_corners(const csg::Polygon2& poly, const double* p) {
     std::vector<glm::dvec3> out;
     out.reserve(4 * poly.edges.size());
+    if (p[4] != 0) {
+        // Twisted: every section lies in the disc of radius max|v|·max(kx, ky),
+        // at most the interpolation of the caps' radii (a max of linear
+        // functions is convex), so the squares around the caps' discs hold it.
+        double r = 0;
+        for (const glm::dvec4& e : poly.edges) r = std::max({r, std::hypot(e.x, e.y), std::hypot(e.z, e.w)});
+        for (int cap = 0; cap < 2; ++cap) {
+            const double k = cap ? std::max(1 + p[2], 1 + p[2] + p[3]) : 1;
+            for (double sx : {-1.0, 1.0})
+                for (double sy : {-1.0, 1.0}) out.emplace_back(sx * k * r, sy * k * r, p[cap]);
+        }
+        return out;
+    }
+    // Each section point moves linearly from its bottom copy to its top one
+    // (scaled by kx, ky): the caps' vertices' hull holds the solid.
     for (const glm::dvec4& e : poly.edges)
         for (int cap = 0; cap < 2; ++cap) {
-            const double k = cap ? 1 + p[2] : 1;  // a tapered section's scale at the top
-            out.emplace_back(k * e.x, k * e.y, p[cap]);
-            out.emplace_back(k * e.z, k * e.w, p[cap]);
+            const double kx = cap ? 1 + p[2] : 1, ky = cap ? 1 + p[2] + p[3] : 1;  // the top section's scales
+            out.emplace_back(kx * e.x, ky * e.y, p[cap]);
+            out.emplace_back(kx * e.z, ky * e.w, p[cap]);
         }
     return out;
 }

@@ -147,11 +147,7 @@ private:
             g_.make_node(mark, graph::NodeKind::Transform, n.loc, static_cast<std::uint32_t>(g_.graph.matrices.size() - 1));
             return;
         }
-        const int segments = circle_segments(tol_);
-        for (int i = 0; i < segments; ++i) {
-            const double t0 = 2 * std::numbers::pi * i / segments, t1 = 2 * std::numbers::pi * (i + 1) / segments;
-            edge(r * glm::dvec2(std::cos(t0), std::sin(t0)), r * glm::dvec2(std::cos(t1), std::sin(t1)));
-        }
+        circle_chords(r, tol_, edge);
         push_polygon(n, std::move(edges));
     }
 };

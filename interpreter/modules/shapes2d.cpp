@@ -5,10 +5,12 @@
 // booleans and transforms become the 3D ones of the extruded pieces
 // (docs/lowering.md, "2D shapes").
 #include <cmath>
+#include <numbers>
 
 #include "interpreter/modules/args.hpp"
 #include "interpreter/modules/facets.hpp"
 #include "interpreter/modules/module_call.hpp"
+#include "interpreter/modules/sweep.hpp"
 
 namespace kerf::eval {
 
@@ -144,22 +146,39 @@ void taper(graph::SceneGraph& g, std::uint32_t root, double s) {
     }
 }
 
+// A scale argument: a number or [sx, sy], each finite and >= 0.
+glm::dvec2 scale_arg(const Args& a, std::size_t i) {
+    if (!a.has(i)) return glm::dvec2(1);
+    const Value& s = a[i];
+    if (!s.is_number() && !s.is_vector(2)) arg_error(a, "scale must be a number or [sx, sy], got " + to_repr(s));
+    const glm::dvec2 k = s.is_number() ? glm::dvec2(s.as_number())
+                                       : glm::dvec2(s.as_list()[0].as_number(), s.as_list()[1].as_number());
+    for (int j = 0; j < 2; ++j)
+        if (!std::isfinite(k[j]) || k[j] < 0) arg_error(a, "scale must be finite numbers >= 0, got " + to_repr(s));
+    return k;
+}
+
+// linear_extrude(height, center, convexity, twist, slices, scale, v): the
+// section at τ = z/h is scale(τ)·rotate(−twist·τ)·shape (docs/spec.md §10).
+// A uniform scale without twist keeps the subtree (taper); anything else
+// rebuilds it with the transforms applied (sweep.hpp). `v` tilts the slab:
+// the section at τ moves by τ·h·v/|v| (the map of the unit slab, a shear).
 void linear_extrude(ModuleCall& c) {
     const Args& a = c.args;
-    const double h = arg_positive(a, 0, "height", 100);
-    const bool center = arg_bool(a, 1, "center", false);
-    if (arg_number(a, 3, "twist", 0) != 0) arg_unsupported(a, "twist is not implemented yet (only twist = 0)");
-    if (a.has(4)) arg_positive(a, 4, "slices", 1);  // accepted: kerf extrudes exactly, not in slices
-    double top = 1;  // the top section's scale
-    if (a.has(5)) {
-        const Value& s = a[5];
-        if (!s.is_number() && !s.is_vector(2)) arg_error(a, "scale must be a number or [sx, sy], got " + to_repr(s));
-        top = s.is_number() ? s.as_number() : s.as_list()[0].as_number();
-        if (s.is_vector(2) && s.as_list()[1].as_number() != top)
-            arg_unsupported(a, "a scale that differs in x and y is not implemented yet, got " + to_repr(s));
-        if (!std::isfinite(top) || top < 0) arg_error(a, "scale must be a finite number >= 0, got " + to_repr(s));
-        if (top == 0) arg_unsupported(a, "scale = 0 (a pointed top) is not implemented yet");
+    glm::dvec3 dir(0, 0, 1);
+    if (a.has(6)) {
+        if (!a[6].is_vector(3)) arg_error(a, "v must be a vector of 3 numbers, got " + to_repr(a[6]));
+        const auto& l = a[6].as_list();
+        dir = {l[0].as_number(), l[1].as_number(), l[2].as_number()};
+        if (!std::isfinite(dir.x) || !std::isfinite(dir.y) || !std::isfinite(dir.z) || !(dir.z > 0))
+            arg_error(a, "v must be finite and point upwards (v.z > 0), got " + to_repr(a[6]));
     }
+    const double vlen = glm::length(dir);
+    const double h = a.has(0) || !a.has(6) ? arg_positive(a, 0, "height", 100) : vlen;
+    const bool center = arg_bool(a, 1, "center", false);
+    const double twist = arg_number(a, 3, "twist", 0);
+    if (a.has(4)) arg_positive(a, 4, "slices", 1);  // accepted: kerf extrudes exactly, not in slices
+    const glm::dvec2 top = scale_arg(a, 5);  // the top section's scales
     GraphBuilder& g = c.graph();
     const std::size_t mark = g.mark();
     c.children();
@@ -167,17 +186,28 @@ void linear_extrude(ModuleCall& c) {
     for (std::size_t i = mark; i < g.pending.size(); ++i)
         if (!g.graph.nodes[g.pending[i]].flat)
             throw SourceError(g.graph.nodes[g.pending[i]].loc, "linear_extrude: extrudes 2D shapes, not 3D solids");
-    if (top != 1)
-        for (std::size_t i = mark; i < g.pending.size(); ++i) taper(g.graph, g.pending[i], top);
-    const double z0 = center ? -h / 2 : 0;
-    g.extrude(mark, z0, z0 + h, c.st.loc);
+    if (twist != 0 || top.x != top.y) {
+        const std::vector<std::uint32_t> shapes(g.pending.begin() + std::ptrdiff_t(mark), g.pending.end());
+        g.pending.resize(mark);
+        for (std::uint32_t id : shapes) sweep_subtree(c, id, {top.x, top.y, twist * std::numbers::pi / 180});
+        if (g.mark() == mark) return;
+    } else if (top.x != 1) {
+        for (std::size_t i = mark; i < g.pending.size(); ++i) taper(g.graph, g.pending[i], top.x);
+    }
+    // The unit slab to its place: the top section moved by h·v/|v|.
+    const glm::dvec3 up = h / vlen * dir;
+    glm::dmat4 m(1.0);
+    m[2] = glm::dvec4(up, 0);
+    if (center) m[3] = glm::dvec4(-0.5 * up, 1);
+    g.extrude(mark, m, c.st.loc);
 }
 
 const ModuleEntry kShapes2d[] = {
     {"square", ModuleKind::Solid, {"size", "center"}, square},
     {"circle", ModuleKind::Solid, {"r", "d"}, circle},
     {"polygon", ModuleKind::Solid, {"points", "paths", "convexity"}, polygon},
-    {"linear_extrude", ModuleKind::Operation, {"height", "center", "convexity", "twist", "slices", "scale"}, linear_extrude},
+    {"linear_extrude", ModuleKind::Operation, {"height", "center", "convexity", "twist", "slices", "scale", "v"},
+     linear_extrude},
 };
 
 }  // namespace

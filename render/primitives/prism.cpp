@@ -173,11 +173,14 @@ int tapered_prism(const Polygon2& poly, const double* p, const glm::vec<3, T>& o
 template <typename T>
 int intersect_prism(const Polygon2& poly, const double* p, const glm::vec<3, T>& o, const glm::vec<3, T>& d,
                     PrismSpan<T>* out, PrismCrossing<T>* scratch, T wa, T wb) {
+    if (is_swept(p)) return intersect_swept_prism(poly, p, o, d, out, int(prism_span_room(poly.edges.size(), p)));
     if (p[2] != 0) return tapered_prism(poly, p, o, d, out, scratch);
     return straight_prism(poly, p, o, d, out, scratch, wa, wb);
 }
 
-glm::dvec3 normal_prism(const Polygon2& poly, const double* p, std::uint8_t part, std::uint32_t edge) {
+glm::dvec3 normal_prism(const Polygon2& poly, const double* p, std::uint8_t part, std::uint32_t edge,
+                        const glm::dvec3& x) {
+    if (is_swept(p)) return normal_swept_prism(poly, p, part, edge, x);
     if (part == kPartBottom) return {0, 0, -1};
     if (part == kPartTop) return {0, 0, 1};
     if (edge >= poly.edges.size()) return {0, 0, 1};

@@ -36,7 +36,7 @@ int prism_in(const csg::Polygon2& poly, const csg::Leaf& leaf, const glm::dvec3&
         buf.fit(csg::lathe_crossing_room(edges), csg::lathe_span_room(edges));
         n = csg::intersect_lathe<T>(poly, glm::vec<3, T>(o), glm::vec<3, T>(d), buf.spans.data(), buf.crossings.data());
     } else {
-        buf.fit(edges, csg::prism_span_room(edges));
+        buf.fit(edges, csg::prism_span_room(edges, leaf.p));
         n = csg::intersect_prism<T>(poly, leaf.p, glm::vec<3, T>(o), glm::vec<3, T>(d), buf.spans.data(),
                                     buf.crossings.data(), T(wa), T(wb));
     }

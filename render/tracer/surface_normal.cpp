@@ -13,7 +13,7 @@ glm::dvec3 CsgTracer::normal(const TraceHit& hit, const glm::dvec3& world_point)
     const glm::dvec3 n_obj =
         leaf.kind == csg::PrimKind::Mesh    ? triangle_normal(impl_->scene.meshes[leaf.mesh], hit.surface.prim)
         : leaf.kind == csg::PrimKind::Prism ? csg::normal_prism(impl_->scene.polygons[leaf.polygon], leaf.p, hit.surface.part,
-                                                                hit.surface.prim)
+                                                                hit.surface.prim, leaf.object_from_world.point(world_point))
         : leaf.kind == csg::PrimKind::Lathe ? csg::normal_lathe(impl_->scene.polygons[leaf.polygon], hit.surface.part,
                                                                 hit.surface.prim, leaf.object_from_world.point(world_point))
                                             : csg::object_normal(leaf, leaf.object_from_world.point(world_point),
