@@ -186,9 +186,10 @@ Value Evaluator::call_function(const ast::Expr& e, Scope& s) {
         DynRestore restore(dyn_);
         Scope callee(def_scope);
         callee.module = def_scope->module;
-        bind_params(def->params, e.args, def->name, s, callee, e.loc);
-        if (!def->value) return Value();
-        return eval(*def->value, callee);
+        return traced([&] {
+            bind_params(def->params, e.args, def->name, s, callee, e.loc);
+            return def->value ? eval(*def->value, callee) : Value();
+        });
     }
     return call_builtin(e, s);
 }
@@ -201,8 +202,10 @@ Value Evaluator::call_closure(const Value& f, const std::vector<ast::Binding>& a
     DepthGuard guard(*this, loc);
     DynRestore restore(dyn_);
     Scope callee(&c.env);
-    bind_params(c.literal->bindings, args, name, caller, callee, loc);
-    return eval(*c.literal->items[0], callee);
+    return traced([&] {
+        bind_params(c.literal->bindings, args, name, caller, callee, loc);
+        return eval(*c.literal->items[0], callee);
+    });
 }
 
 Value Evaluator::call_builtin(const ast::Expr& e, Scope& s) {

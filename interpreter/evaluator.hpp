@@ -122,6 +122,7 @@ private:
     void bind_block(const BlockInfo& info, Scope& scope, bool top_level);
     void eval_block(const std::vector<ast::StmtPtr>& stmts, Scope& s, bool top_level = false);
     void eval_stmt(const ast::Stmt& st, Scope& s, bool top_level);
+    void eval_plain(const ast::Stmt& st, Scope& s, bool top_level);
     void instantiate(const ast::Stmt& st, Scope& s, bool top_level);
     void call_module(const ast::Stmt& def, Scope& def_scope, const ast::Stmt& call, Scope& s);
     void stmt_for(const ast::Stmt& st, std::size_t k, Scope& loop, Scope& s);
@@ -137,6 +138,33 @@ private:
     // modules/table.cpp: a built-in module call (false: no such module).
     bool builtin_module(const ast::Stmt& st, Scope& s, bool top_level);
     bool builtin_module_lenient(const struct ModuleEntry& e, class ModuleCall& call);
+
+    // Call-site notes (interpreter.cpp): the user-level calls being
+    // evaluated, innermost last. bind_params pushes a call once its
+    // arguments are evaluated (an error in them is the caller's); traced()
+    // pops it and gives an error leaving it the notes of the stack it left.
+    struct CallSite {
+        std::string_view name;
+        const SourceLoc* at;
+    };
+    std::vector<CallSite> calls_;
+    static constexpr std::size_t kMaxCallNotes = 10;
+    std::vector<Diagnostic> call_notes() const;
+    template <class F>
+    auto traced(F&& body) -> decltype(body()) {
+        const std::size_t outer = calls_.size();
+        struct Pop {
+            std::vector<CallSite>& calls;
+            std::size_t size;
+            ~Pop() { calls.resize(size); }
+        } pop{calls_, outer};
+        try {
+            return body();
+        } catch (SourceError& e) {
+            if (calls_.size() > outer && !e.has_call_notes()) e.set_call_notes(call_notes());
+            throw;
+        }
+    }
 
     // Limits.
     void count_step(const SourceLoc& loc);

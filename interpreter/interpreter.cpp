@@ -97,13 +97,56 @@ graph::SceneGraph Evaluator::run(ast::Program program) {
     return std::move(out_.graph);
 }
 
+namespace {
+bool same_place(const Diagnostic& a, const SourceLoc& loc, const std::string& message) {
+    return a.loc.file == loc.file && a.loc.line == loc.line && a.loc.col == loc.col && a.message == message;
+}
+}  // namespace
+
+// Innermost first, one note per call place: a place met again further out
+// (a recursion, direct or mutual) adds to its note's count. Past
+// kMaxCallNotes places, the innermost ones and the outermost (the user's
+// first call) are kept and the last says how many calls were left out.
+std::vector<Diagnostic> Evaluator::call_notes() const {
+    std::vector<Diagnostic> notes;
+    for (std::size_t i = calls_.size(); i > 0; --i) {
+        const CallSite& c = calls_[i - 1];
+        std::string message = "in '" + std::string(c.name) + "' called from here";
+        bool seen = false;
+        for (Diagnostic& n : notes)
+            if (same_place(n, *c.at, message)) {
+                ++n.repeats;
+                seen = true;
+                break;
+            }
+        if (!seen) notes.push_back(Diagnostic{Severity::Note, *c.at, std::move(message), 1, {}});
+    }
+    if (notes.size() > kMaxCallNotes) {
+        std::uint64_t skipped = 0;
+        for (std::size_t i = kMaxCallNotes - 1; i + 1 < notes.size(); ++i) skipped += notes[i].repeats;
+        Diagnostic outermost = std::move(notes.back());
+        outermost.message += " (" + std::to_string(skipped) + " calls between not shown)";
+        notes.resize(kMaxCallNotes - 1);
+        notes.push_back(std::move(outermost));
+    }
+    return notes;
+}
+
 void Evaluator::warn(const SourceLoc& loc, std::string message) {
+    std::vector<Diagnostic> notes = call_notes();
+    // The same warning reached through other calls is another diagnostic.
+    auto same_calls = [&](const Diagnostic& w) {
+        if (w.notes.size() != notes.size()) return false;
+        for (std::size_t i = 0; i < notes.size(); ++i)
+            if (!same_place(w.notes[i], notes[i].loc, notes[i].message)) return false;
+        return true;
+    };
     for (Diagnostic& w : warnings_)
-        if (w.loc.file == loc.file && w.loc.line == loc.line && w.loc.col == loc.col && w.message == message) {
+        if (same_place(w, loc, message) && same_calls(w)) {
             ++w.repeats;
             return;
         }
-    warnings_.push_back(Diagnostic{Severity::Warning, loc, std::move(message)});
+    warnings_.push_back(Diagnostic{Severity::Warning, loc, std::move(message), 1, std::move(notes)});
 }
 
 }  // namespace eval

@@ -53,16 +53,24 @@ TEST_CASE("golden scripts do what their comments say", "[scripts]") {
     if (want.fuzz_limits) opt.limits = test::fuzz_limits();
     std::vector<std::string> echoed;
     opt.echo = [&](const std::string& line) { echoed.push_back(line); };
-    std::vector<std::string> warnings;
+    std::vector<std::string> warnings, notes;
     std::string error;
+    auto add_notes = [&](const Diagnostic& d) {
+        for (const Diagnostic& n : d.notes) notes.push_back(test::expectation_text(n, path, kRoot));
+    };
     try {
         EvalResult r = evaluate_file(path, opt);
-        for (const Diagnostic& w : r.warnings) warnings.push_back(test::expectation_text(w, path, kRoot));
+        for (const Diagnostic& w : r.warnings) {
+            warnings.push_back(test::expectation_text(w, path, kRoot));
+            add_notes(w);
+        }
         lower_to_csg(r.graph);
     } catch (const SourceError& e) {
         error = test::expectation_text(e.diagnostic(), path, kRoot);
+        add_notes(e.diagnostic());
     }
     CHECK(error == (want.errors.empty() ? std::string() : want.errors.front()));
     CHECK(echoed == want.echoes);
     CHECK(warnings == want.warnings);
+    CHECK(notes == want.notes);
 }
