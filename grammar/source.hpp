@@ -59,6 +59,10 @@ public:
         diag_.notes = std::move(notes);
         noted_ = true;
     }
+    // Everything the run reported, in order (its warnings, then every
+    // error, the first being diagnostic()), when it went on after an error
+    // to find more; empty when diagnostic() is all there is to print.
+    std::vector<Diagnostic> reported;
 
 private:
     Diagnostic diag_;

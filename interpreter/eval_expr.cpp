@@ -22,12 +22,12 @@ struct Evaluator::DepthGuard {
 
 void Evaluator::count_step(const SourceLoc& loc) {
     if (++steps_ > opt_.limits.steps)
-        throw SourceError(loc, "evaluation step limit " + std::to_string(opt_.limits.steps) + " exceeded");
+        throw RunLimitError(loc, "evaluation step limit " + std::to_string(opt_.limits.steps) + " exceeded");
 }
 
 void Evaluator::count_iterations(std::uint64_t n, const SourceLoc& loc) {
     if (n > opt_.limits.loop_iterations || iterations_ + n > opt_.limits.loop_iterations)
-        throw SourceError(loc, "loop iteration limit " + std::to_string(opt_.limits.loop_iterations) + " exceeded");
+        throw RunLimitError(loc, "loop iteration limit " + std::to_string(opt_.limits.loop_iterations) + " exceeded");
     iterations_ += n;
 }
 
@@ -82,6 +82,7 @@ Value Evaluator::lookup(const ast::Expr& e, Scope& s) {
     for (Scope* sc = &s; sc; sc = sc->parent) {
         if (VarSlot* v = sc->find_local(name)) {
             if (!v->ready) {
+                if (v->failed) throw CascadeError(e.loc, "'" + e.text + "' has no value (its binding failed)");
                 if (lenient_) continue;  // OpenSCAD: not bound here yet, so look outside
                 throw SourceError(e.loc, "'" + e.text + "' is used before its definition at " + line_ref(e.loc, *v->loc));
             }

@@ -148,7 +148,7 @@ decltype(auto) memory_guarded(bool top_level, const SourceLoc& loc, F&& f) {
     try {
         return f();
     } catch (const std::bad_alloc&) {
-        throw SourceError(loc, "out of memory evaluating this statement");
+        throw RunLimitError(loc, "out of memory evaluating this statement");
     }
 }
 
@@ -171,8 +171,20 @@ void Evaluator::bind_block(const BlockInfo& info, Scope& scope, bool top_level) 
         if (def) {
             def->used = true;
             v = def->value;
+        } else if (a->value && !top_level) {
+            v = eval(*a->value, scope);
         } else if (a->value) {
-            v = memory_guarded(top_level, a->loc, [&] { return eval(*a->value, scope); });
+            try {
+                v = memory_guarded(top_level, a->loc, [&] { return eval(*a->value, scope); });
+            } catch (const RunLimitError&) {
+                throw;
+            } catch (const SourceError& e) {
+                // Reported; the name stays unbound, and what reads it is
+                // given up without a second error (CascadeError).
+                if (!dynamic_cast<const CascadeError*>(&e)) record_error(e);
+                if (!is_dollar(a->name)) scope.vars[slot++].failed = true;
+                continue;
+            }
         }
         if (is_dollar(a->name)) {
             dyn_.push_back(DynVar{a->name, std::move(v)});
@@ -194,8 +206,21 @@ void Evaluator::eval_block(const std::vector<ast::StmtPtr>& stmts, Scope& s, boo
         bind_block(info, *own, top_level);
     }
     Scope& scope = own ? *own : s;
-    for (const ast::Stmt* c : info.children)
-        memory_guarded(top_level, c->loc, [&] { eval_stmt(*c, scope, top_level); });
+    if (!top_level) {
+        for (const ast::Stmt* c : info.children) eval_stmt(*c, scope, false);
+        return;
+    }
+    for (const ast::Stmt* c : info.children) {
+        const std::size_t mark = out_.mark();
+        try {
+            memory_guarded(true, c->loc, [&] { eval_stmt(*c, scope, true); });
+        } catch (const RunLimitError&) {
+            throw;
+        } catch (const SourceError& e) {
+            if (!dynamic_cast<const CascadeError*>(&e)) record_error(e);
+            out_.pending.resize(mark);  // what the failed statement made is dropped
+        }
+    }
 }
 
 // ---------------------------------------------------------------- calls

@@ -46,6 +46,21 @@ namespace kerf::eval {
 // a pathological expression ends in a located error, never in a crash.
 extern thread_local const char* stack_floor;
 
+// An error that ends the run at once: a limit of the whole run (steps,
+// loop iterations, primitives, memory) was reached, so every statement
+// after it would fail the same way.
+class RunLimitError : public SourceError {
+public:
+    using SourceError::SourceError;
+};
+
+// A name whose top-level binding failed (already reported) was read: the
+// statement reading it is given up silently, not reported as a second error.
+class CascadeError : public SourceError {
+public:
+    using SourceError::SourceError;
+};
+
 // A statement list after `include` expansion, with its definitions sorted
 // out: computed once per list and cached.
 struct BlockInfo {
@@ -81,6 +96,10 @@ public:
     // place and message, with a count when met again (a loop).
     void warn(const SourceLoc& loc, std::string message);
     std::vector<Diagnostic> take_warnings() { return std::move(warnings_); }
+    // Top-level statements fail independently: each error is kept and the
+    // run goes on with the next statement, up to kMaxErrors; run() then
+    // throws the first with all of them (SourceError::reported).
+    static constexpr std::size_t kMaxErrors = 20;
     bool lenient() const { return lenient_; }  // the OpenSCAD dialect
 
     // Expressions (eval_expr.cpp).
@@ -197,6 +216,10 @@ private:
     ModuleState modules_;              // what built-in modules remember
     std::vector<Diagnostic> warnings_;
     std::int64_t root_override_ = -1;  // the first `!` subtree
+
+    std::vector<Diagnostic> errors_;
+    void record_error(const SourceError& e);  // throws once kMaxErrors are kept
+    [[noreturn]] void throw_errors();
 
     void parse_defines();
     friend struct DepthGuard;

@@ -81,7 +81,12 @@ graph::SceneGraph Evaluator::run(ast::Program program) {
         }
         if (!found) throw DefineError("-D " + d.name + ": the script has no top-level binding '" + d.name + "'");
     }
-    eval_block(prog.stmts, root_, true);
+    try {
+        eval_block(prog.stmts, root_, true);
+    } catch (const RunLimitError& e) {
+        record_error(e);
+    }
+    if (!errors_.empty()) throw_errors();
     SourceLoc top{prog.file, 1, 1};
     if (root_override_ >= 0) {
         out_.pending.assign(1, static_cast<std::uint32_t>(root_override_));
@@ -95,6 +100,18 @@ graph::SceneGraph Evaluator::run(ast::Program program) {
     }
     out_.pending.clear();
     return std::move(out_.graph);
+}
+
+void Evaluator::record_error(const SourceError& e) {
+    errors_.push_back(e.diagnostic());
+    if (errors_.size() >= kMaxErrors) throw_errors();
+}
+
+void Evaluator::throw_errors() {
+    SourceError first(errors_.front());
+    first.reported = warnings_;
+    first.reported.insert(first.reported.end(), errors_.begin(), errors_.end());
+    throw first;
 }
 
 namespace {

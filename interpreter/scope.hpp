@@ -33,6 +33,7 @@ struct VarSlot {
     Value value;
     const SourceLoc* loc = nullptr;  // where it is bound (for "already defined")
     bool ready = false;              // false while the block's earlier assignments run
+    bool failed = false;             // its top-level binding was an error (reported)
 };
 
 struct Scope {

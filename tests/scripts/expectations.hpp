@@ -1,6 +1,7 @@
 // Expectations written in a script's comments, in the style of Crafting
 // Interpreters' test suite: `// ECHO: TEXT` is an echo line the run prints
-// (all of them, in order), `// error: LINE:COL: MESSAGE` the first error,
+// (all of them, in order), `// error: LINE:COL: MESSAGE` an error (all of them, in
+// order: the run goes on after an error in a top-level statement),
 // `// warning: LINE:COL: MESSAGE` a warning (all of them, in order; one
 // met again at the same place ends in " (N times)"); `// note: LINE:COL:
 // MESSAGE` a call-site note (all of them, in order: the warnings' notes,
@@ -32,7 +33,7 @@ inline std::vector<std::string> markers(const std::string& text, const std::stri
 
 struct Expectations {
     std::vector<std::string> echoes;    // with "ECHO: "
-    std::vector<std::string> errors;    // at most one is meaningful: the first error
+    std::vector<std::string> errors;
     std::vector<std::string> warnings;
     std::vector<std::string> notes;
     bool fuzz_limits = false;
