@@ -38,7 +38,8 @@ int report_failure(const std::exception_ptr& error) {
         std::cerr << format_diagnostic(e.diagnostic()) << '\n';
         return kUsage;
     } catch (const SourceError& e) {
-        std::cerr << format_diagnostic(e.diagnostic()) << '\n';
+        if (e.reported.empty()) std::cerr << format_diagnostic(e.diagnostic()) << '\n';
+        for (const Diagnostic& d : e.reported) std::cerr << format_diagnostic(d) << '\n';
         return kSceneError;
     } catch (const IoError& e) {
         std::cerr << "kerf: error: " << e.what() << '\n';

@@ -85,6 +85,17 @@ KERF_AT(empty_body, b.undef(at));
 KERF_AT(echo_expr, b.echo(at));
 KERF_AT(assert_expr, b.assert_(at));
 
+// ---- whitespace: remembered for the location of a missing `;`
+template <>
+struct action<ws> {
+    template <typename Input>
+    static void apply(const Input& in, Builder& b) {
+        if (in.begin() == in.end()) return;
+        b.gap_begin = in.begin();
+        b.gap_end = in.end();
+    }
+};
+
 // ---- statements
 KERF_AT(empty_stmt, b.empty(at));
 KERF_AT(block_open, b.open(ast::StmtKind::Block, {}, at));

@@ -26,6 +26,12 @@ public:
 
     SourceLoc loc(std::size_t line, std::size_t col) const;
 
+    // The last non-empty whitespace (and comments) matched: where the token
+    // before it ended. A missing `;` is reported there, at the end of the
+    // statement that lacks it, not at the next line's first token.
+    const char* gap_begin = nullptr;
+    const char* gap_end = nullptr;
+
     // ---- expressions
     void number(std::string_view text, SourceLoc at);
     void string(std::string_view literal, SourceLoc at);  // literal with its quotes

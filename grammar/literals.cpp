@@ -10,6 +10,11 @@ namespace kerf::grammar {
 
 namespace {
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
+bool is_hex(std::string_view t) {
+    for (char c : t)
+        if (!is_digit(c) && !((c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F'))) return false;
+    return true;
+}
 
 // Length of the numeric part: digits, optional fraction, optional exponent.
 std::size_t numeric_length(std::string_view t) {
@@ -99,10 +104,13 @@ std::string decode_string(std::string_view literal) {
         char c = body[i];
         if (c == '\\' && i + 1 < body.size()) {
             const char e = body[i + 1];
-            if (e == 'x' || e == 'u' || e == 'U') {  // only in the OpenSCAD dialect (the grammar checked them)
-                const std::size_t n = e == 'x' ? 2 : e == 'u' ? 4 : 6;
+            const std::size_t n = e == 'x' ? 2 : e == 'u' ? 4 : e == 'U' ? 6 : 0;
+            if (n && i + 2 + n <= body.size() && is_hex(body.substr(i + 2, n)) && (e != 'x' || body[i + 2] <= '7')) {
                 const auto code = static_cast<std::uint32_t>(std::stoul(std::string(body.substr(i + 2, n)), nullptr, 16));
-                append_utf8(out, e == 'x' && code == 0 ? ' ' : code);  // OpenSCAD: \x00 is a space
+                // OpenSCAD 2021 (measured): code 0, a surrogate or a code
+                // past U+10FFFF is a space.
+                const bool bad = code == 0 || (code >= 0xD800 && code <= 0xDFFF) || code > 0x10FFFF;
+                append_utf8(out, bad ? ' ' : code);
                 i += 1 + n;
                 continue;
             }
@@ -110,7 +118,7 @@ std::string decode_string(std::string_view literal) {
                 case 'n': c = '\n'; break;
                 case 't': c = '\t'; break;
                 case 'r': c = '\r'; break;
-                default: c = body[i]; break;  // \" and \\ (others rejected by the grammar)
+                default: c = body[i]; break;  // \" and \\; in .scad any other (the grammar rejects it in .sdl)
             }
         }
         out += c;

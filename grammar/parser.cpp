@@ -82,7 +82,16 @@ ast::Program parse_program(std::shared_ptr<const SourceFile> file, const ParseOp
         const auto& positions = e.positions();
         SourceLoc at{file, 0, 0};
         if (!positions.empty()) at = builder.loc(positions.front().line, positions.front().column);
-        throw SourceError(std::move(at), std::string(e.message()));
+        // A `;` is missing where the statement ends, before the blank lines
+        // and comments that follow it (`x = 1` then `y = 2;` on the next
+        // line); a stray token on the same line is itself the place (`1 × 2`).
+        const std::string message(e.message());
+        if (message == "expected ';'" && !positions.empty() && builder.gap_end &&
+            builder.gap_end == text.data() + positions.front().byte &&
+            std::string_view(builder.gap_begin, static_cast<std::size_t>(builder.gap_end - builder.gap_begin))
+                    .find('\n') != std::string_view::npos)
+            at = locate(file, text, static_cast<std::size_t>(builder.gap_begin - text.data()));
+        throw SourceError(std::move(at), message);
     }
     return builder.finish();
 }

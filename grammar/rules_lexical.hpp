@@ -60,7 +60,7 @@ struct string_lit {
     using subs_t = pg::empty_list;
 
     // OpenSCAD's `\x41` (0x01-0x7F), `\u263A` and `\U01F600`: the length of
-    // the escape at p (0: not one), accepted in the OpenSCAD dialect only.
+    // the escape at p (0: not one), in both dialects.
     static std::size_t openscad_escape(const char* p, const char* end) noexcept {
         auto hex = [&](const char* q, std::size_t n) {
             for (std::size_t i = 0; i < n; ++i)
@@ -83,9 +83,12 @@ struct string_lit {
             if (*p == '\\') {
                 if (p + 1 == end) throw pg::parse_error("unterminated string", in);
                 const char e = p[1];
+                if (const std::size_t n = openscad_escape(p, end)) {  // both dialects
+                    p += n;
+                    continue;
+                }
                 if (openscad_mode(st...)) {  // any other escape: the character, as OpenSCAD's lexer
-                    const std::size_t n = openscad_escape(p, end);
-                    p += n ? n : 2;
+                    p += 2;
                     continue;
                 }
                 if (e != '"' && e != '\\' && e != 'n' && e != 't' && e != 'r') {

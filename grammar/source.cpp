@@ -131,7 +131,7 @@ std::string format_diagnostic_head(const Diagnostic& d) {
     if (d.loc.line > 0) {
         out += ':' + std::to_string(d.loc.line) + ':' + std::to_string(d.loc.col);
     }
-    out += d.severity == Severity::Error ? ": error: " : ": warning: ";
+    out += d.severity == Severity::Error ? ": error: " : d.severity == Severity::Warning ? ": warning: " : ": note: ";
     out += clipped_message(d.message);
     if (d.repeats > 1) out += " (" + std::to_string(d.repeats) + " times)";
     return out;
@@ -139,9 +139,12 @@ std::string format_diagnostic_head(const Diagnostic& d) {
 
 std::string format_diagnostic(const Diagnostic& d) {
     std::string out = format_diagnostic_head(d);
-    if (!d.loc.file || d.loc.line == 0) return out;
-    std::string_view src = line_of(d.loc.file->text, d.loc.line);
-    return out + '\n' + source_and_caret(src, d.loc.col > 0 ? d.loc.col - 1 : 0);
+    if (d.loc.file && d.loc.line > 0) {
+        std::string_view src = line_of(d.loc.file->text, d.loc.line);
+        out += '\n' + source_and_caret(src, d.loc.col > 0 ? d.loc.col - 1 : 0);
+    }
+    for (const Diagnostic& n : d.notes) out += '\n' + format_diagnostic(n);
+    return out;
 }
 
 }  // namespace kerf

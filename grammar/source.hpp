@@ -22,21 +22,25 @@ struct SourceLoc {
     std::uint32_t col = 0;                   // 1-based, in bytes
 };
 
-enum class Severity { Error, Warning };
+enum class Severity { Error, Warning, Note };
 
 struct Diagnostic {
     Severity severity = Severity::Error;
     SourceLoc loc;
     std::string message;
     std::uint64_t repeats = 1;  // a warning met again at the same place is one diagnostic
+    // Where the place was reached from (Severity::Note, "in 'f' called from
+    // here"), innermost first, as compilers print instantiation chains.
+    std::vector<Diagnostic> notes;
 };
 
 // "PATH:LINE:COL: error: MESSAGE" followed, when the text is known, by the
-// source line and a caret under the column (docs/spec.md §8). No trailing newline.
+// source line and a caret under the column (docs/spec.md §8), then each note
+// in the same form. No trailing newline.
 std::string format_diagnostic(const Diagnostic& d);
 
 // The one-line head only ("PATH:LINE:COL: error: MESSAGE"; a repeated
-// warning ends in " (N times)").
+// warning ends in " (N times)"), without the notes.
 std::string format_diagnostic_head(const Diagnostic& d);
 
 // The thrown form of a user-caused error: parse, evaluation and lowering
@@ -46,11 +50,23 @@ public:
     explicit SourceError(Diagnostic d)
         : std::runtime_error(format_diagnostic_head(d)), diag_(std::move(d)) {}
     SourceError(SourceLoc loc, std::string message)
-        : SourceError(Diagnostic{Severity::Error, std::move(loc), std::move(message)}) {}
+        : SourceError(Diagnostic{Severity::Error, std::move(loc), std::move(message), 1, {}}) {}
     const Diagnostic& diagnostic() const noexcept { return diag_; }
+    // The call-site notes, added once by the innermost call the error
+    // leaves (the interpreter's call stack is gone by the time it is caught).
+    bool has_call_notes() const noexcept { return noted_; }
+    void set_call_notes(std::vector<Diagnostic> notes) {
+        diag_.notes = std::move(notes);
+        noted_ = true;
+    }
+    // Everything the run reported, in order (its warnings, then every
+    // error, the first being diagnostic()), when it went on after an error
+    // to find more; empty when diagnostic() is all there is to print.
+    std::vector<Diagnostic> reported;
 
 private:
     Diagnostic diag_;
+    bool noted_ = false;
 };
 
 }  // namespace kerf

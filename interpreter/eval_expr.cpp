@@ -22,12 +22,12 @@ struct Evaluator::DepthGuard {
 
 void Evaluator::count_step(const SourceLoc& loc) {
     if (++steps_ > opt_.limits.steps)
-        throw SourceError(loc, "evaluation step limit " + std::to_string(opt_.limits.steps) + " exceeded");
+        throw RunLimitError(loc, "evaluation step limit " + std::to_string(opt_.limits.steps) + " exceeded");
 }
 
 void Evaluator::count_iterations(std::uint64_t n, const SourceLoc& loc) {
     if (n > opt_.limits.loop_iterations || iterations_ + n > opt_.limits.loop_iterations)
-        throw SourceError(loc, "loop iteration limit " + std::to_string(opt_.limits.loop_iterations) + " exceeded");
+        throw RunLimitError(loc, "loop iteration limit " + std::to_string(opt_.limits.loop_iterations) + " exceeded");
     iterations_ += n;
 }
 
@@ -82,6 +82,7 @@ Value Evaluator::lookup(const ast::Expr& e, Scope& s) {
     for (Scope* sc = &s; sc; sc = sc->parent) {
         if (VarSlot* v = sc->find_local(name)) {
             if (!v->ready) {
+                if (v->failed) throw CascadeError(e.loc, "'" + e.text + "' has no value (its binding failed)");
                 if (lenient_) continue;  // OpenSCAD: not bound here yet, so look outside
                 throw SourceError(e.loc, "'" + e.text + "' is used before its definition at " + line_ref(e.loc, *v->loc));
             }
@@ -186,9 +187,10 @@ Value Evaluator::call_function(const ast::Expr& e, Scope& s) {
         DynRestore restore(dyn_);
         Scope callee(def_scope);
         callee.module = def_scope->module;
-        bind_params(def->params, e.args, def->name, s, callee, e.loc);
-        if (!def->value) return Value();
-        return eval(*def->value, callee);
+        return traced([&] {
+            bind_params(def->params, e.args, def->name, s, callee, e.loc);
+            return def->value ? eval(*def->value, callee) : Value();
+        });
     }
     return call_builtin(e, s);
 }
@@ -201,8 +203,10 @@ Value Evaluator::call_closure(const Value& f, const std::vector<ast::Binding>& a
     DepthGuard guard(*this, loc);
     DynRestore restore(dyn_);
     Scope callee(&c.env);
-    bind_params(c.literal->bindings, args, name, caller, callee, loc);
-    return eval(*c.literal->items[0], callee);
+    return traced([&] {
+        bind_params(c.literal->bindings, args, name, caller, callee, loc);
+        return eval(*c.literal->items[0], callee);
+    });
 }
 
 Value Evaluator::call_builtin(const ast::Expr& e, Scope& s) {

@@ -147,7 +147,7 @@ decltype(auto) memory_guarded(bool top_level, const SourceLoc& loc, F&& f) {
     try {
         return f();
     } catch (const std::bad_alloc&) {
-        throw SourceError(loc, "out of memory evaluating this statement");
+        throw RunLimitError(loc, "out of memory evaluating this statement");
     }
 }
 
@@ -170,8 +170,20 @@ void Evaluator::bind_block(const BlockInfo& info, Scope& scope, bool top_level) 
         if (def) {
             def->used = true;
             v = def->value;
+        } else if (a->value && !top_level) {
+            v = eval(*a->value, scope);
         } else if (a->value) {
-            v = memory_guarded(top_level, a->loc, [&] { return eval(*a->value, scope); });
+            try {
+                v = memory_guarded(top_level, a->loc, [&] { return eval(*a->value, scope); });
+            } catch (const RunLimitError&) {
+                throw;
+            } catch (const SourceError& e) {
+                // Reported; the name stays unbound, and what reads it is
+                // given up without a second error (CascadeError).
+                if (!dynamic_cast<const CascadeError*>(&e)) record_error(e);
+                if (!is_dollar(a->name)) scope.vars[slot++].failed = true;
+                continue;
+            }
         }
         if (is_dollar(a->name)) {
             dyn_.push_back(DynVar{a->name, std::move(v)});
@@ -193,8 +205,21 @@ void Evaluator::eval_block(const std::vector<ast::StmtPtr>& stmts, Scope& s, boo
         bind_block(info, *own, top_level);
     }
     Scope& scope = own ? *own : s;
-    for (const ast::Stmt* c : info.children)
-        memory_guarded(top_level, c->loc, [&] { eval_stmt(*c, scope, top_level); });
+    if (!top_level) {
+        for (const ast::Stmt* c : info.children) eval_stmt(*c, scope, false);
+        return;
+    }
+    for (const ast::Stmt* c : info.children) {
+        const std::size_t mark = out_.mark();
+        try {
+            memory_guarded(true, c->loc, [&] { eval_stmt(*c, scope, true); });
+        } catch (const RunLimitError&) {
+            throw;
+        } catch (const SourceError& e) {
+            if (!dynamic_cast<const CascadeError*>(&e)) record_error(e);
+            out_.pending.resize(mark);  // what the failed statement made is dropped
+        }
+    }
 }
 
 // ---------------------------------------------------------------- calls
@@ -254,6 +279,7 @@ void Evaluator::bind_params(const std::vector<ast::Binding>& params, const std::
         given[i] = std::move(v);
     }
     (void)dyn_start;
+    calls_.push_back(CallSite{callee, &loc});  // defaults and the body run in the call
     scope.vars.reserve(params.size());
     for (std::size_t i = 0; i < params.size(); ++i) {
         const ast::Binding& p = params[i];
@@ -273,13 +299,15 @@ void Evaluator::call_module(const ast::Stmt& def, Scope& def_scope, const ast::S
         ~Dec() { --d; }
     } dec{depth_};
     DynRestore restore(dyn_);
-    ModuleFrame frame{&call.body, &s, prepare(call.body).children.size()};
+    ModuleFrame frame{&call.body, &s, prepare(call.body).children.size(), calls_.size()};
     Scope callee(&def_scope);
     callee.module = &frame;
-    bind_params(def.params, call.args, def.name, s, callee, call.loc);
-    std::size_t mark = out_.mark();
-    eval_block(def.body, callee, false);
-    out_.group(mark, call.loc);
+    traced([&] {
+        bind_params(def.params, call.args, def.name, s, callee, call.loc);
+        std::size_t mark = out_.mark();
+        eval_block(def.body, callee, false);
+        out_.group(mark, call.loc);
+    });
 }
 
 void Evaluator::stmt_children(const ast::Stmt& st, Scope& s) {
@@ -320,13 +348,31 @@ void Evaluator::stmt_children(const ast::Stmt& st, Scope& s) {
     }
     std::size_t mark = out_.mark();
     DynRestore restore(dyn_);
-    Scope cs(frame->caller);
-    Scope* where = frame->caller;
-    if (info.needs_scope) {
-        bind_block(info, cs, false);
-        where = &cs;
+    // The children run where the module was called: the calls inside the
+    // module are not theirs (for notes and parent_module), until they end.
+    std::vector<CallSite> inner(calls_.begin() + static_cast<std::ptrdiff_t>(frame->calls), calls_.end());
+    calls_.resize(frame->calls);
+    struct Back {
+        std::vector<CallSite>& calls;
+        std::vector<CallSite>& inner;
+        std::size_t size;
+        ~Back() {
+            calls.resize(size);
+            calls.insert(calls.end(), inner.begin(), inner.end());
+        }
+    } back{calls_, inner, frame->calls};
+    try {
+        Scope cs(frame->caller);
+        Scope* where = frame->caller;
+        if (info.needs_scope) {
+            bind_block(info, cs, false);
+            where = &cs;
+        }
+        for (std::size_t i : picks) eval_stmt(*info.children[i], *where, false);
+    } catch (SourceError& e) {
+        if (!e.has_call_notes()) e.set_call_notes(call_notes());
+        throw;
     }
-    for (std::size_t i : picks) eval_stmt(*info.children[i], *where, false);
     out_.group(mark, st.loc);
 }
 
@@ -435,44 +481,48 @@ void Evaluator::eval_stmt(const ast::Stmt& st, Scope& s, bool top_level) {
     char probe;
     if (stack_floor && &probe < stack_floor)
         throw SourceError(st.loc, "evaluation nested too deeply (stack exhausted; lower the call depth limit)");
-    switch (st.kind) {
-        case ast::StmtKind::Instantiate: {
-            switch (st.modifier) {
-                case ast::Modifier::Disable: return;  // `*`: not even evaluated, as in OpenSCAD
-                case ast::Modifier::Background: {     // `%`: evaluated (errors count), not rendered
-                    std::size_t mark = out_.mark();
-                    instantiate(st, s, top_level);
-                    out_.pending.resize(mark);
-                    return;
-                }
-                case ast::Modifier::Root: {  // `!`: the first one becomes the whole solid
-                    std::size_t mark = out_.mark();
-                    instantiate(st, s, top_level);
-                    out_.group(mark, st.loc);
-                    if (root_override_ < 0) {
-                        if (out_.mark() == mark) out_.make_node(mark, graph::NodeKind::Union, st.loc);
-                        root_override_ = out_.pending.back();
-                    }
-                    return;
-                }
-                default: instantiate(st, s, top_level); return;  // `#` renders normally
-            }
-        }
-        case ast::StmtKind::If: {
-            std::size_t mark = out_.mark();
-            bool cond = eval(*st.value, s).truthy();
-            eval_block(cond ? st.body : st.else_body, s, false);
-            out_.group(mark, st.loc);
-            return;
-        }
-        case ast::StmtKind::Block: {
+    if (st.kind != ast::StmtKind::Instantiate && st.kind != ast::StmtKind::If) {
+        if (st.kind == ast::StmtKind::Block) {
             std::size_t mark = out_.mark();
             eval_block(st.body, s, false);
             out_.group(mark, st.loc);
+        }
+        return;  // definitions, include and use are handled by prepare()
+    }
+    // Debug modifiers, on a module call, for, let or if alike (OpenSCAD's
+    // grammar allows no other statement after one).
+    switch (st.modifier) {
+        case ast::Modifier::Disable: return;  // `*`: not even evaluated, as in OpenSCAD
+        case ast::Modifier::Background: {     // `%`: evaluated (errors count), not rendered
+            std::size_t mark = out_.mark();
+            eval_plain(st, s, top_level);
+            out_.pending.resize(mark);
             return;
         }
-        default: return;  // definitions, include and use are handled by prepare()
+        case ast::Modifier::Root: {  // `!`: the first one becomes the whole solid
+            std::size_t mark = out_.mark();
+            eval_plain(st, s, top_level);
+            out_.group(mark, st.loc);
+            if (root_override_ < 0) {
+                if (out_.mark() == mark) out_.make_node(mark, graph::NodeKind::Union, st.loc);
+                root_override_ = out_.pending.back();
+            }
+            return;
+        }
+        default: eval_plain(st, s, top_level); return;  // `#` renders normally
     }
+}
+
+// A module call or an if, its modifier already applied.
+void Evaluator::eval_plain(const ast::Stmt& st, Scope& s, bool top_level) {
+    if (st.kind == ast::StmtKind::Instantiate) {
+        instantiate(st, s, top_level);
+        return;
+    }
+    std::size_t mark = out_.mark();
+    bool cond = eval(*st.value, s).truthy();
+    eval_block(cond ? st.body : st.else_body, s, false);
+    out_.group(mark, st.loc);
 }
 
 }  // namespace kerf::eval

@@ -46,6 +46,21 @@ namespace kerf::eval {
 // a pathological expression ends in a located error, never in a crash.
 extern thread_local const char* stack_floor;
 
+// An error that ends the run at once: a limit of the whole run (steps,
+// loop iterations, primitives, memory) was reached, so every statement
+// after it would fail the same way.
+class RunLimitError : public SourceError {
+public:
+    using SourceError::SourceError;
+};
+
+// A name whose top-level binding failed (already reported) was read: the
+// statement reading it is given up silently, not reported as a second error.
+class CascadeError : public SourceError {
+public:
+    using SourceError::SourceError;
+};
+
 // A statement list after `include` expansion, with its definitions sorted
 // out: computed once per list and cached.
 struct BlockInfo {
@@ -81,6 +96,10 @@ public:
     // place and message, with a count when met again (a loop).
     void warn(const SourceLoc& loc, std::string message);
     std::vector<Diagnostic> take_warnings() { return std::move(warnings_); }
+    // Top-level statements fail independently: each error is kept and the
+    // run goes on with the next statement, up to kMaxErrors; run() then
+    // throws the first with all of them (SourceError::reported).
+    static constexpr std::size_t kMaxErrors = 20;
     bool lenient() const { return lenient_; }  // the OpenSCAD dialect
 
     // Expressions (eval_expr.cpp).
@@ -122,6 +141,7 @@ private:
     void bind_block(const BlockInfo& info, Scope& scope, bool top_level);
     void eval_block(const std::vector<ast::StmtPtr>& stmts, Scope& s, bool top_level = false);
     void eval_stmt(const ast::Stmt& st, Scope& s, bool top_level);
+    void eval_plain(const ast::Stmt& st, Scope& s, bool top_level);
     void instantiate(const ast::Stmt& st, Scope& s, bool top_level);
     void call_module(const ast::Stmt& def, Scope& def_scope, const ast::Stmt& call, Scope& s);
     void stmt_for(const ast::Stmt& st, std::size_t k, Scope& loop, Scope& s);
@@ -137,6 +157,33 @@ private:
     // modules/table.cpp: a built-in module call (false: no such module).
     bool builtin_module(const ast::Stmt& st, Scope& s, bool top_level);
     bool builtin_module_lenient(const struct ModuleEntry& e, class ModuleCall& call);
+
+    // Call-site notes (interpreter.cpp): the user-level calls being
+    // evaluated, innermost last. bind_params pushes a call once its
+    // arguments are evaluated (an error in them is the caller's); traced()
+    // pops it and gives an error leaving it the notes of the stack it left.
+    struct CallSite {
+        std::string_view name;
+        const SourceLoc* at;
+    };
+    std::vector<CallSite> calls_;
+    static constexpr std::size_t kMaxCallNotes = 10;
+    std::vector<Diagnostic> call_notes() const;
+    template <class F>
+    auto traced(F&& body) -> decltype(body()) {
+        const std::size_t outer = calls_.size();
+        struct Pop {
+            std::vector<CallSite>& calls;
+            std::size_t size;
+            ~Pop() { calls.resize(size); }
+        } pop{calls_, outer};
+        try {
+            return body();
+        } catch (SourceError& e) {
+            if (calls_.size() > outer && !e.has_call_notes()) e.set_call_notes(call_notes());
+            throw;
+        }
+    }
 
     // Limits.
     void count_step(const SourceLoc& loc);
@@ -169,6 +216,10 @@ private:
     ModuleState modules_;              // what built-in modules remember
     std::vector<Diagnostic> warnings_;
     std::int64_t root_override_ = -1;  // the first `!` subtree
+
+    std::vector<Diagnostic> errors_;
+    void record_error(const SourceError& e);  // throws once kMaxErrors are kept
+    [[noreturn]] void throw_errors();
 
     void parse_defines();
     friend struct DepthGuard;

@@ -82,7 +82,12 @@ graph::SceneGraph Evaluator::run(ast::Program program) {
         }
         if (!found) throw DefineError("-D " + d.name + ": the script has no top-level binding '" + d.name + "'");
     }
-    eval_block(prog.stmts, root_, true);
+    try {
+        eval_block(prog.stmts, root_, true);
+    } catch (const RunLimitError& e) {
+        record_error(e);
+    }
+    if (!errors_.empty()) throw_errors();
     SourceLoc top{prog.file, 1, 1};
     if (root_override_ >= 0) {
         out_.pending.assign(1, static_cast<std::uint32_t>(root_override_));
@@ -98,13 +103,68 @@ graph::SceneGraph Evaluator::run(ast::Program program) {
     return std::move(out_.graph);
 }
 
+void Evaluator::record_error(const SourceError& e) {
+    errors_.push_back(e.diagnostic());
+    if (errors_.size() >= kMaxErrors) throw_errors();
+}
+
+void Evaluator::throw_errors() {
+    SourceError first(errors_.front());
+    first.reported = warnings_;
+    first.reported.insert(first.reported.end(), errors_.begin(), errors_.end());
+    throw first;
+}
+
+namespace {
+bool same_place(const Diagnostic& a, const SourceLoc& loc, const std::string& message) {
+    return a.loc.file == loc.file && a.loc.line == loc.line && a.loc.col == loc.col && a.message == message;
+}
+}  // namespace
+
+// Innermost first, one note per call place: a place met again further out
+// (a recursion, direct or mutual) adds to its note's count. Past
+// kMaxCallNotes places, the innermost ones and the outermost (the user's
+// first call) are kept and the last says how many calls were left out.
+std::vector<Diagnostic> Evaluator::call_notes() const {
+    std::vector<Diagnostic> notes;
+    for (std::size_t i = calls_.size(); i > 0; --i) {
+        const CallSite& c = calls_[i - 1];
+        std::string message = "in '" + std::string(c.name) + "' called from here";
+        bool seen = false;
+        for (Diagnostic& n : notes)
+            if (same_place(n, *c.at, message)) {
+                ++n.repeats;
+                seen = true;
+                break;
+            }
+        if (!seen) notes.push_back(Diagnostic{Severity::Note, *c.at, std::move(message), 1, {}});
+    }
+    if (notes.size() > kMaxCallNotes) {
+        std::uint64_t skipped = 0;
+        for (std::size_t i = kMaxCallNotes - 1; i + 1 < notes.size(); ++i) skipped += notes[i].repeats;
+        Diagnostic outermost = std::move(notes.back());
+        outermost.message += " (" + std::to_string(skipped) + " calls between not shown)";
+        notes.resize(kMaxCallNotes - 1);
+        notes.push_back(std::move(outermost));
+    }
+    return notes;
+}
+
 void Evaluator::warn(const SourceLoc& loc, std::string message) {
+    std::vector<Diagnostic> notes = call_notes();
+    // The same warning reached through other calls is another diagnostic.
+    auto same_calls = [&](const Diagnostic& w) {
+        if (w.notes.size() != notes.size()) return false;
+        for (std::size_t i = 0; i < notes.size(); ++i)
+            if (!same_place(w.notes[i], notes[i].loc, notes[i].message)) return false;
+        return true;
+    };
     for (Diagnostic& w : warnings_)
-        if (w.loc.file == loc.file && w.loc.line == loc.line && w.loc.col == loc.col && w.message == message) {
+        if (same_place(w, loc, message) && same_calls(w)) {
             ++w.repeats;
             return;
         }
-    warnings_.push_back(Diagnostic{Severity::Warning, loc, std::move(message)});
+    warnings_.push_back(Diagnostic{Severity::Warning, loc, std::move(message), 1, std::move(notes)});
 }
 
 }  // namespace eval

@@ -25,6 +25,7 @@ struct ModuleFrame {
     const std::vector<ast::StmtPtr>* children = nullptr;  // call-site child statements
     Scope* caller = nullptr;                              // the scope they evaluate in
     std::size_t child_count = 0;                          // $children
+    std::size_t calls = 0;  // the caller's depth of Evaluator::calls_: children run there
 };
 
 struct VarSlot {
@@ -32,6 +33,7 @@ struct VarSlot {
     Value value;
     const SourceLoc* loc = nullptr;  // where it is bound (for "already defined")
     bool ready = false;              // false while the block's earlier assignments run
+    bool failed = false;             // its top-level binding was an error (reported)
 };
 
 struct Scope {

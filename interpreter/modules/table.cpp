@@ -131,7 +131,7 @@ double ModuleCall::curve_tolerance() const { return ev_.opt_.curve_tolerance; }
 void ModuleCall::add_primitive(csg::PrimKind kind, std::initializer_list<double> p, std::uint32_t index) {
     const std::uint64_t limit = ev_.opt_.limits.primitives;
     if (++state().primitives > limit)
-        throw SourceError(st.loc, "primitive limit " + std::to_string(limit) + " exceeded");
+        throw RunLimitError(st.loc, "primitive limit " + std::to_string(limit) + " exceeded");
     graph::Node n;
     n.kind = graph::NodeKind::Primitive;
     n.prim = kind;

@@ -49,7 +49,7 @@ TEST_CASE("a scene with a syntax error exits 1 with a located diagnostic and car
     auto path = write_file(dir / "bad.sdl", "cube(1);\nsphere(2)\n");
     auto r = run_kerf("check '" + path + "'", dir);
     CHECK(r.status == 1);
-    CHECK(first_line(r.err) == path + ":3:1: error: expected ';'");
+    CHECK(first_line(r.err) == path + ":2:10: error: expected ';'");  // where the statement ends
 }
 
 TEST_CASE("an evaluation error exits 1 naming the statement") {

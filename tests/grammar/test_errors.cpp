@@ -9,7 +9,8 @@ using kerf::test::error_of;
 
 TEST_CASE("missing punctuation says what was expected", "[grammar][errors]") {
     CHECK(error_of("x = 1") == "t.sdl:1:6: error: expected ';'");
-    CHECK(error_of("x = 1\ny = 2;") == "t.sdl:2:1: error: expected ';'");
+    CHECK(error_of("x = 1\ny = 2;") == "t.sdl:1:6: error: expected ';'");  // where the statement ends
+    CHECK(error_of("x = 1 // one\n\n/* two */ y = 2;") == "t.sdl:1:6: error: expected ';'");
     CHECK(error_of("cube(1)") == "t.sdl:1:8: error: expected ';'");
     CHECK(error_of("cube(1") == "t.sdl:1:7: error: expected ')'");
     CHECK(error_of("x = (1;") == "t.sdl:1:7: error: expected ')'");
@@ -59,7 +60,9 @@ TEST_CASE("lexical errors are located at their start", "[grammar][errors]") {
     CHECK(error_of("x = \"abc\\") == "t.sdl:1:5: error: unterminated string");
     CHECK(error_of("x = \"a\nb\nc") == "t.sdl:1:5: error: unterminated string");
     CHECK(error_of("x = \"a\\q\";") == "t.sdl:1:7: error: invalid escape sequence in string");
-    CHECK(error_of("x = \"\\x41\";") == "t.sdl:1:6: error: invalid escape sequence in string");
+    CHECK(error_of("x = \"\\x41\";") == "no error");  // OpenSCAD's \x, \u, \U in both dialects
+    CHECK(error_of("x = \"\\x80\";") == "t.sdl:1:6: error: invalid escape sequence in string");
+    CHECK(error_of("x = \"\\u12\";") == "t.sdl:1:6: error: invalid escape sequence in string");
     CHECK(error_of("/* abc") == "t.sdl:1:1: error: unterminated comment");
     // Not nested: the first `*/` ends the comment, the second `*` is a modifier.
     CHECK(error_of("x = 1;\n  /* a /* b */ */") == "t.sdl:2:17: error: expected module instantiation");
@@ -99,4 +102,15 @@ TEST_CASE("diagnostic carries path, line and caret", "[grammar][errors]") {
         CHECK(std::string(e.what()) == "dir/scene.sdl:2:7: error: expected ')'");
         CHECK(kerf::format_diagnostic(e.diagnostic()) == "dir/scene.sdl:2:7: error: expected ')'\nb = (2;\n      ^");
     }
+}
+
+TEST_CASE("call-site notes follow the diagnostic, each with its line and caret", "[grammar][errors]") {
+    auto lib = kerf::test::source("function f(x) = x + \"a\";\n", "lib/f.sdl");
+    auto main = kerf::test::source("use <f.sdl>\ny = f(1);\n", "main.sdl");
+    kerf::Diagnostic d{kerf::Severity::Error, kerf::SourceLoc{lib, 1, 19}, "cannot apply '+'", 1, {}};
+    d.notes.push_back(kerf::Diagnostic{kerf::Severity::Note, kerf::SourceLoc{main, 2, 5}, "in 'f' called from here", 3, {}});
+    CHECK(kerf::format_diagnostic(d) ==
+          "lib/f.sdl:1:19: error: cannot apply '+'\nfunction f(x) = x + \"a\";\n                  ^\n"
+          "main.sdl:2:5: note: in 'f' called from here (3 times)\ny = f(1);\n    ^");
+    CHECK(kerf::format_diagnostic_head(d) == "lib/f.sdl:1:19: error: cannot apply '+'");
 }

@@ -94,3 +94,17 @@ TEST_CASE("debug modifiers", "[modules]") {
     CHECK(shape_of("sphere();\ntranslate([1, 0, 0]) !cube();\ncylinder();") == "U(box)");
     CHECK(error_of("%nosuch();") == "test.sdl:1:2: error: unknown module 'nosuch'");
 }
+
+TEST_CASE("debug modifiers on if, for and let", "[modules]") {
+    CHECK(shape_of("*if (true) cube();\nsphere();") == "U(sphere)");
+    CHECK(shape_of("*if (true) nosuch();\nsphere();") == "U(sphere)");
+    CHECK(shape_of("%if (true) cube(); else cylinder();\nsphere();") == "U(sphere)");
+    CHECK(shape_of("%if (false) cube(); else cylinder();\nsphere();") == "U(sphere)");
+    CHECK(shape_of("#if (true) cube();\nsphere();") == "U(box,sphere)");
+    CHECK(shape_of("sphere();\n!if (true) { cube(); cylinder(); }\n!sphere();") == "U(U(box,cylinder))");
+    CHECK(shape_of("sphere();\nif (true) !if (true) cube();") == "U(box)");
+    CHECK(shape_of("*for (i = [1:3]) cube(i);\nsphere();") == "U(sphere)");
+    CHECK(shape_of("%for (i = [1:3]) cube(i);\nsphere();") == "U(sphere)");
+    CHECK(shape_of("sphere();\n!let (a = 1) cube(a);") == "U(box)");
+    CHECK(error_of("%if (nosuch) cube();") == "test.sdl:1:6: error: undefined name 'nosuch'");
+}

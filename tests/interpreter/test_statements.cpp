@@ -49,3 +49,23 @@ TEST_CASE("scene statements from an included file are at top level", "[statement
     CHECK(r.graph.background == glm::dvec3(0, 0, 0));
     fs::remove_all(dir);
 }
+
+TEST_CASE("a run reports at most 20 independent errors", "[statements]") {
+    std::string text;
+    for (int i = 0; i < 25; ++i) text += "cube(-1);\n";
+    try {
+        kerf::test::run(text);
+        FAIL("no error");
+    } catch (const kerf::SourceError& e) {
+        REQUIRE(e.reported.size() == 20);
+        CHECK(e.reported.back().loc.line == 20);
+        CHECK(e.diagnostic().loc.line == 1);
+    }
+    // One error: nothing more to report, the diagnostic is all.
+    try {
+        kerf::test::run("cube(-1);");
+        FAIL("no error");
+    } catch (const kerf::SourceError& e) {
+        CHECK(e.reported.size() == 1);
+    }
+}

@@ -1,8 +1,11 @@
 // Expectations written in a script's comments, in the style of Crafting
 // Interpreters' test suite: `// ECHO: TEXT` is an echo line the run prints
-// (all of them, in order), `// error: LINE:COL: MESSAGE` the first error,
+// (all of them, in order), `// error: LINE:COL: MESSAGE` an error (all of them, in
+// order: the run goes on after an error in a top-level statement),
 // `// warning: LINE:COL: MESSAGE` a warning (all of them, in order; one
-// met again at the same place ends in " (N times)");
+// met again at the same place ends in " (N times)"); `// note: LINE:COL:
+// MESSAGE` a call-site note (all of them, in order: the warnings' notes,
+// then the error's);
 // `// limits: fuzz` runs the script under the fuzzer's limits. A location
 // in another file than the script is written FILE:LINE:COL with FILE
 // relative to the repository (stdlib/shapes.sdl:11:5). Shared by the golden
@@ -30,8 +33,9 @@ inline std::vector<std::string> markers(const std::string& text, const std::stri
 
 struct Expectations {
     std::vector<std::string> echoes;    // with "ECHO: "
-    std::vector<std::string> errors;    // at most one is meaningful: the first error
+    std::vector<std::string> errors;
     std::vector<std::string> warnings;
+    std::vector<std::string> notes;
     bool fuzz_limits = false;
 };
 
@@ -40,6 +44,7 @@ inline Expectations expectations_of(const std::string& text) {
     for (const std::string& t : markers(text, "// ECHO: ")) e.echoes.push_back("ECHO: " + t);
     e.errors = markers(text, "// error: ");
     e.warnings = markers(text, "// warning: ");
+    e.notes = markers(text, "// note: ");
     for (const std::string& t : markers(text, "// limits: ")) e.fuzz_limits = e.fuzz_limits || t == "fuzz";
     return e;
 }

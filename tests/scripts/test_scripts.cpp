@@ -47,22 +47,35 @@ TEST_CASE("golden scripts do what their comments say", "[scripts]") {
     const std::string path = GENERATE(from_range(paths));
     INFO(path.substr(kRoot.size()));
     const test::Expectations want = test::expectations_of(read_all(path));
-    REQUIRE(want.errors.size() <= 1);
 
     EvalOptions opt;
     if (want.fuzz_limits) opt.limits = test::fuzz_limits();
     std::vector<std::string> echoed;
     opt.echo = [&](const std::string& line) { echoed.push_back(line); };
-    std::vector<std::string> warnings;
-    std::string error;
+    std::vector<std::string> warnings, notes, errors;
+    auto add_notes = [&](const Diagnostic& d) {
+        for (const Diagnostic& n : d.notes) notes.push_back(test::expectation_text(n, path, kRoot));
+    };
     try {
         EvalResult r = evaluate_file(path, opt);
-        for (const Diagnostic& w : r.warnings) warnings.push_back(test::expectation_text(w, path, kRoot));
+        for (const Diagnostic& w : r.warnings) {
+            warnings.push_back(test::expectation_text(w, path, kRoot));
+            add_notes(w);
+        }
         lower_to_csg(r.graph);
     } catch (const SourceError& e) {
-        error = test::expectation_text(e.diagnostic(), path, kRoot);
+        // A run that went on after its first error reports all it found.
+        for (const Diagnostic& d : e.reported) {
+            (d.severity == Severity::Error ? errors : warnings).push_back(test::expectation_text(d, path, kRoot));
+            add_notes(d);
+        }
+        if (e.reported.empty()) {
+            errors.push_back(test::expectation_text(e.diagnostic(), path, kRoot));
+            add_notes(e.diagnostic());
+        }
     }
-    CHECK(error == (want.errors.empty() ? std::string() : want.errors.front()));
+    CHECK(errors == want.errors);
     CHECK(echoed == want.echoes);
     CHECK(warnings == want.warnings);
+    CHECK(notes == want.notes);
 }
