@@ -50,7 +50,8 @@ std::uint64_t scene_hash(const csg::Scene& s) {
     h.u(s.root);
     h.u(s.materials.size());
     for (const csg::Material& m : s.materials)
-        h.v3(m.color), h.d(m.alpha), h.v3(m.interior), h.d(m.diffuse), h.d(m.specular), h.d(m.shininess), h.d(m.reflect);
+        h.v3(m.color), h.v3(m.interior), h.d(m.diffuse), h.d(m.specular), h.d(m.shininess), h.d(m.reflect),
+            h.d(m.transparency), h.d(m.ior), h.v3(m.absorption), h.d(m.roughness), h.v3(m.emission);
     h.u(s.meshes.size());
     for (const csg::Mesh& m : s.meshes) {
         h.u(m.points.size()), h.u(m.triangles.size()), h.u(m.solid);

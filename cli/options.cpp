@@ -14,7 +14,7 @@ namespace {
 // Options that shape an image: `kerf measure` writes none and refuses them.
 bool is_image_option(const std::string& a) {
     for (const char* f : {"-o", "-W", "-H", "--spp", "--aa", "--aa-samples", "--aa-threshold", "--seed", "--preview",
-                          "--watch", "--crop", "--aov", "--stats"})
+                          "--max-depth", "--watch", "--crop", "--aov", "--stats"})
         if (a == f) return true;
     return false;
 }
@@ -61,7 +61,8 @@ const char* usage_text() {
            "                        [--preview] [--aov depth|normal|hits] [--stats] [--no-progress]\n"
            "                        [-D name=value ...] [-I dir ...] [--crop x0,y0,x1,y1]\n"
            "                        [--seed N] [--precision double|float] [--base DIR]\n"
-           "                        [--curve-tolerance 1e-4]  (text(), hull(), minkowski(): flattening, a fraction of size)\n"
+           "                        [--max-depth 4]  (reflections and refractions per ray, 0..32)\n"
+           "                        [--curve-tolerance 1e-4]  (text(), hull(), minkowski(), offset(): flattening, a fraction of size)\n"
            "                        [--frames N [--frame I]] [--tile K/N] [--resume]\n"
            "    SCENE '-' reads standard input (includes resolve against --base DIR or the\n"
            "    working folder); -o - writes the PNG to standard output\n"
@@ -134,6 +135,7 @@ Options parse_options(const std::vector<std::string>& args) {
             if (o.measure.resolution % 2 != 0) throw UsageError("--resolution must be even, got " + args[i]);
         }
         else if (a == "--threads") o.render.threads = parse_int<int>(a, value(), 0, 1024);
+        else if (a == "--max-depth") o.render.max_reflect_depth = parse_int<int>(a, value(), 0, 32);
         else if (a == "--seed") o.render.seed = parse_int<std::uint64_t>(a, value(), 0, UINT64_MAX);
         else if (a == "--preview") o.render.preview = true;
         else if (a == "--watch" && (o.command == Command::Render || o.command == Command::Watch)) o.command = Command::Watch;

@@ -14,16 +14,16 @@ void print_warnings(const std::vector<Diagnostic>& warnings) {
 }
 
 void print_stats(const render::RenderStats& s, const render::Image& img) {
-    double rays = static_cast<double>(s.primary_rays + s.shadow_rays + s.reflect_rays);
-    double per = s.primary_rays + s.shadow_rays + s.reflect_rays > 0 ? 1.0 / rays : 0.0;
+    double rays = static_cast<double>(s.rays());
+    double per = s.rays() > 0 ? 1.0 / rays : 0.0;
     std::fprintf(stderr,
-                 "stats: %dx%d, %.0f rays (%llu primary, %llu shadow, %llu reflect)\n"
+                 "stats: %dx%d, %.0f rays (%llu primary, %llu shadow, %llu reflect, %llu refract)\n"
                  "stats: render %.3f s, %.2f MRay/s\n"
                  "stats: per ray: %.3f union, %.3f difference, %.3f intersection ops, "
                  "%.3f primitive interval tests\n",
                  img.width, img.height, rays, static_cast<unsigned long long>(s.primary_rays),
                  static_cast<unsigned long long>(s.shadow_rays),
-                 static_cast<unsigned long long>(s.reflect_rays), s.seconds,
+                 static_cast<unsigned long long>(s.reflect_rays), static_cast<unsigned long long>(s.refract_rays), s.seconds,
                  s.seconds > 0 ? rays / s.seconds * 1e-6 : 0.0, s.union_ops * per,
                  s.difference_ops * per, s.intersection_ops * per, s.interval_tests * per);
     if (s.refined_pixels > 0)

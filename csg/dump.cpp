@@ -204,12 +204,17 @@ void dump(const Scene& s, std::string& out, Flush&& flush) {
         const Material& m = s.materials[i];
         out += "material " + std::to_string(i);
         field(out, "color", m.color);
-        field(out, "alpha", m.alpha);
         field(out, "interior", m.interior);
         field(out, "diffuse", m.diffuse);
         field(out, "specular", m.specular);
         field(out, "shininess", m.shininess);
         field(out, "reflect", m.reflect);
+        // The glass and glow fields only where they differ from an opaque material.
+        if (m.transparency != 0) field(out, "transparency", m.transparency);
+        if (m.ior != 1) field(out, "ior", m.ior);
+        if (m.absorption != glm::dvec3(0)) field(out, "absorption", m.absorption);
+        if (m.roughness != 0) field(out, "roughness", m.roughness);
+        if (m.emission != glm::dvec3(0)) field(out, "emission", m.emission);
         out += '\n';
     }
     for (std::size_t i = 0; i < s.meshes.size(); ++i) {

@@ -106,12 +106,24 @@ struct Node {
 
 struct Material {
     glm::dvec3 color{0.8, 0.8, 0.8};     // linear RGB
-    double alpha = 1.0;
     glm::dvec3 interior{0.8, 0.8, 0.8};  // shown on cut faces that expose this solid's inside
     double diffuse = 0.8;
     double specular = 0.2;
     double shininess = 32;
     double reflect = 0;
+    // A dielectric (docs/language.md, "Glass"): the share of light that
+    // crosses the surface, split there by Fresnel's equations between a
+    // reflected and a refracted ray (Snell, index `ior` inside the solid,
+    // 1 outside); `color(c, alpha)` sets transparency = 1 − alpha. Light
+    // travelling a distance d inside is scaled by exp(−absorption·d) per
+    // channel (Beer–Lambert; absorption per unit length, linear RGB).
+    double transparency = 0;
+    double ior = 1;
+    glm::dvec3 absorption{0.0};
+    // Glossy reflection: the mirror ray of `reflect` spread over a cone
+    // whose half-angle grows with roughness (0: a perfect mirror).
+    double roughness = 0;
+    glm::dvec3 emission{0.0};            // linear RGB radiance the surface gives off by itself
 };
 
 struct Mesh {

@@ -33,7 +33,7 @@ struct RenderOptions {
     std::optional<std::array<int, 4>> crop;  // x0, y0, x1, y1: half-open, full-image pixels
     std::uint64_t seed = 0;          // jitter seed; pixels are seeded by (seed, x, y)
     bool double_precision = true;    // false: primitives intersected in float
-    int max_reflect_depth = 4;
+    int max_reflect_depth = 4;      // reflections and refractions into solids one ray may branch into (--max-depth)
     // Colour only: store 8-bit sRGB codes (Image::srgb8) instead of linear
     // floats, for 8-bit files: a quarter of the memory, and fresh memory is
     // expensive (the kernel clears every page; 13 % of a 2048² render).
@@ -42,12 +42,12 @@ struct RenderOptions {
 
 // Totals over the whole image (the caller divides for per-ray means).
 struct RenderStats {
-    std::uint64_t primary_rays = 0, shadow_rays = 0, reflect_rays = 0;
+    std::uint64_t primary_rays = 0, shadow_rays = 0, reflect_rays = 0, refract_rays = 0;  // refract: rays inside solids
     double seconds = 0;
     std::uint64_t union_ops = 0, difference_ops = 0, intersection_ops = 0;
     std::uint64_t interval_tests = 0;  // ray–primitive intersections computed
     std::uint64_t refined_pixels = 0;  // adaptive anti-aliasing: pixels given aa_samples
-    std::uint64_t rays() const { return primary_rays + shadow_rays + reflect_rays; }
+    std::uint64_t rays() const { return primary_rays + shadow_rays + reflect_rays + refract_rays; }
 };
 
 // Throws std::invalid_argument for bad options (size, spp, crop outside the

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "render/lights.hpp"
+#include "render/optics.hpp"
 
 namespace kerf::render {
 
@@ -27,13 +28,92 @@ double highlight(double x, double s) {
 }
 }  // namespace
 
-Shader::Shader(const csg::Scene& scene, const CsgTracer& tracer, int max_reflect_depth)
-    : scene_(scene), tracer_(tracer), max_depth_(max_reflect_depth) {
+Shader::Shader(const csg::Scene& scene, const CsgTracer& tracer, int max_depth)
+    : scene_(scene), tracer_(tracer), max_depth_(max_depth) {
     for (csg::Light l : scene.lights) {
         l.direction = glm::normalize(l.direction);  // once, not per shading point
         lights_.push_back(l);
         patterns_.emplace_back(int(l.samples));
     }
+    for (const csg::Material& m : scene.materials) any_transparent_ |= m.transparency > 0;
+}
+
+const csg::Material& Shader::material_of(std::uint32_t leaf) const {
+    static const csg::Material fallback;  // a scene without materials: light grey
+    const std::uint32_t i = scene_.leaves[leaf].material;
+    return i < scene_.materials.size() ? scene_.materials[i] : fallback;
+}
+
+glm::dvec3 Shader::transmitted(const TraceRay& ray, ThreadState& ts) const {
+    ++ts.rays.shadow;
+    if (!any_transparent_) return glm::dvec3(tracer_.occluded(ray, ts.scratch) ? 0.0 : 1.0);
+    tracer_.inside_spans(ray, ts.scratch, ts.spans);
+    glm::dvec3 k(1.0);
+    const double len = glm::length(ray.d);
+    for (const Span& sp : ts.spans) {
+        const csg::Material& m = material_of(sp.e0.mat_leaf);
+        if (m.transparency <= 0) return glm::dvec3(0.0);
+        k *= m.transparency * beer_lambert(m.absorption, (sp.t1 - sp.t0) * len);
+    }
+    return k;
+}
+
+// The mirror ray's radiance; a rough surface averages rays spread over a
+// cone round it (half-angle roughness·45°), 8 at the first bounce and 1
+// deeper, seeded by the shading point so pixels do not depend on threads.
+glm::dvec3 Shader::mirror(const glm::dvec3& origin, const glm::dvec3& r, const glm::dvec3& n, double roughness,
+                          int depth, ThreadState& ts) const {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    if (roughness <= 0) {
+        ++ts.rays.reflect;
+        return radiance(TraceRay{origin, r, 0, inf}, depth + 1, ts);
+    }
+    const int count = depth == 0 ? 8 : 1;
+    const SamplePattern pattern(count);
+    std::uint64_t rng = shading_rng(origin, 0x6C6F7373);  // "loss": a stream apart from the lights'
+    // A cone of half-angle θ round r is the cone a sphere of radius sin θ at
+    // distance 1 fills: reuse the soft lights' uniform cone sampling.
+    const ConeBasis cone(glm::normalize(r), 1, std::sin(roughness * M_PI / 4));
+    glm::dvec3 sum(0.0);
+    for (int i = 0; i < count; ++i) {
+        double reach;
+        glm::dvec3 dir = cone.direction(pattern.offset(i, rng), reach);
+        if (glm::dot(dir, n) <= 0) dir = mirror_direction(dir, n);  // keep it above the surface
+        ++ts.rays.reflect;
+        sum += radiance(TraceRay{origin, dir, 0, inf}, depth + 1, ts);
+    }
+    return sum / double(count);
+}
+
+glm::dvec3 Shader::inside(const glm::dvec3& p, const glm::dvec3& d, const csg::Material& m, double tol, int depth,
+                          ThreadState& ts) const {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    ++ts.rays.refract;
+    tracer_.inside_spans(TraceRay{p, d, 0, inf}, ts.scratch, ts.spans);
+    const Span* exit = nullptr;
+    for (const Span& sp : ts.spans)
+        if (sp.t1 > tol) {
+            exit = &sp;
+            break;
+        }
+    // Grazing round-off: the ray is not inside after all; go on outside.
+    if (!exit || exit->t0 > tol) return radiance(TraceRay{p, d, tol, inf}, depth, ts);
+    const double t1 = exit->t1;
+    const TraceHit hit{t1, exit->e1};
+    const glm::dvec3 q = p + t1 * d;
+    const glm::dvec3 absorbed = beer_lambert(m.absorption, t1);
+    // The normal facing the arriving ray, i.e. into the solid: orientation
+    // from the ray, so a CSG exit (a subtrahend's flipped face) is right too.
+    glm::dvec3 n = tracer_.normal(hit, q);
+    if (glm::dot(n, d) > 0) n = -n;
+    const double off = tracer_.surface_offset(hit, q);
+    const double cos_i = -glm::dot(d, n);
+    double cos_t;
+    const double f = fresnel_dielectric(cos_i, m.ior, cos_t);
+    glm::dvec3 c(0.0);
+    if (f < 1) c += (1 - f) * radiance(TraceRay{q - off * n, refract_direction(d, n, m.ior, cos_i, cos_t), 0, inf}, depth, ts);
+    if (f > 1e-9 && depth < max_depth_) c += f * inside(q, mirror_direction(d, n), m, off, depth + 1, ts);
+    return absorbed * c;
 }
 
 glm::dvec3 Shader::radiance(const TraceRay& ray, int depth, ThreadState& ts, std::uint32_t* surface) const {
@@ -46,18 +126,18 @@ glm::dvec3 Shader::radiance(const TraceRay& ray, int depth, ThreadState& ts, std
     const glm::dvec3 p = ray.o + hit.t * ray.d;
     glm::dvec3 n = tracer_.normal(hit, p);
     if (glm::dot(n, ray.d) > 0) n = -n;  // grazing round-off: light the side we see
-    static const csg::Material fallback;  // a scene without materials: light grey
-    const csg::Leaf& leaf = scene_.leaves[hit.surface.mat_leaf];
-    const csg::Material& m = leaf.material < scene_.materials.size() ? scene_.materials[leaf.material] : fallback;
+    const csg::Material& m = material_of(hit.surface.mat_leaf);
     const glm::dvec3 albedo = hit.surface.cut ? m.interior : m.color;
-    const glm::dvec3 origin = p + tracer_.surface_offset(hit, p) * n;
+    const double off = tracer_.surface_offset(hit, p);
+    const glm::dvec3 origin = p + off * n;
     const glm::dvec3 view = -glm::normalize(ray.d);
 
-    glm::dvec3 c = kAmbient * albedo;
-    // The surface's response to light arriving from unit direction l.
-    auto respond = [&](const glm::dvec3& l, double ndl) {
+    glm::dvec3 diffuse(0.0), highlights(0.0);
+    // The surface's response to light of colour `k` arriving from unit direction l.
+    auto respond = [&](const glm::dvec3& l, double ndl, const glm::dvec3& k) {
         const glm::dvec3 h = glm::normalize(l + view);
-        return m.diffuse * ndl * albedo + m.specular * highlight(std::max(0.0, glm::dot(n, h)), m.shininess);
+        diffuse += k * (m.diffuse * ndl) * albedo;
+        highlights += k * (m.specular * highlight(std::max(0.0, glm::dot(n, h)), m.shininess));
     };
     for (std::size_t li = 0; li < lights_.size(); ++li) {
         const csg::Light& light = lights_[li];
@@ -78,11 +158,8 @@ glm::dvec3 Shader::radiance(const TraceRay& ray, int depth, ThreadState& ts, std
         if (light.radius <= 0 || dist <= light.radius) {
             const double ndl = glm::dot(n, l);
             if (ndl <= 0) continue;
-            if (light.shadows) {
-                ++ts.rays.shadow;
-                if (tracer_.occluded(TraceRay{origin, l, 0, dist}, ts.scratch)) continue;
-            }
-            c += light.color * k * respond(l, ndl);
+            const glm::dvec3 through = light.shadows ? transmitted(TraceRay{origin, l, 0, dist}, ts) : glm::dvec3(1.0);
+            if (through != glm::dvec3(0.0)) respond(l, ndl, light.color * k * through);
             continue;
         }
         // A sphere: the mean response over stratified directions into the
@@ -90,26 +167,32 @@ glm::dvec3 Shader::radiance(const TraceRay& ray, int depth, ThreadState& ts, std
         const ConeBasis cone(l, dist, light.radius);
         const SamplePattern& pattern = patterns_[li];
         std::uint64_t rng = shading_rng(origin, li);
-        glm::dvec3 sum(0);
+        const glm::dvec3 share = light.color * (k / double(pattern.count()));
         for (int i = 0; i < pattern.count(); ++i) {
             double reach;
             const glm::dvec3 dir = cone.direction(pattern.offset(i, rng), reach);
             const double ndl = glm::dot(n, dir);
             if (ndl <= 0) continue;
-            if (light.shadows) {
-                ++ts.rays.shadow;
-                if (tracer_.occluded(TraceRay{origin, dir, 0, reach}, ts.scratch)) continue;
-            }
-            sum += respond(dir, ndl);
+            const glm::dvec3 through =
+                light.shadows ? transmitted(TraceRay{origin, dir, 0, reach}, ts) : glm::dvec3(1.0);
+            if (through != glm::dvec3(0.0)) respond(dir, ndl, share * through);
         }
-        c += light.color * k * sum / double(pattern.count());
     }
-    if (m.reflect > 0 && depth < max_depth_) {
-        ++ts.rays.reflect;
-        const glm::dvec3 r = ray.d - 2 * glm::dot(ray.d, n) * n;
-        const glm::dvec3 rc = radiance(TraceRay{origin, r, 0, std::numeric_limits<double>::infinity()}, depth + 1, ts);
-        c = (1 - m.reflect) * c + m.reflect * rc;
-    }
+    const glm::dvec3 local = kAmbient * albedo + diffuse + highlights;
+    const bool can_branch = depth < max_depth_;
+    // Glass (transparency t): the share t meets a smooth dielectric —
+    // Fresnel's reflectance f of it mirrored, the rest refracted inside —
+    // and keeps the light sources' highlights; the share 1 − t is the
+    // opaque surface, itself mirrored by `reflect`.
+    const double t = m.transparency;
+    double f = 0, cos_t = 0;
+    const double cos_i = glm::dot(view, n);
+    if (t > 0) f = fresnel_dielectric(cos_i, 1 / m.ior, cos_t);
+    if (!can_branch) return local + m.emission;  // the depth is spent: shade it as opaque (POV-Ray: black)
+    const double mirror_weight = (1 - t) * m.reflect + t * (f > 1e-9 ? f : 0);
+    glm::dvec3 c = (1 - t) * (1 - m.reflect) * local + t * highlights + m.emission;
+    if (mirror_weight > 0) c += mirror_weight * mirror(origin, mirror_direction(-view, n), n, m.roughness, depth, ts);
+    if (t > 0 && f < 1) c += t * (1 - f) * inside(p, refract_direction(-view, n, 1 / m.ior, cos_i, cos_t), m, off, depth + 1, ts);
     return c;
 }
 

@@ -1,5 +1,8 @@
-// Blinn–Phong shading with hard and soft shadows (lights.hpp) and mirror reflection (docs/spec.md §5–6),
-// on top of the CSG tracer. One Shader is shared by all render threads.
+// Blinn–Phong shading with hard and soft shadows (lights.hpp), mirror and
+// glossy reflection, and glass: refraction through the CSG tracer's spans
+// with Fresnel, total internal reflection and absorption (optics.hpp;
+// docs/language.md, "Glass"), on top of the CSG tracer. One Shader is
+// shared by all render threads.
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -13,28 +16,50 @@
 namespace kerf::render {
 
 struct RayCounts {
-    std::uint64_t primary = 0, shadow = 0, reflect = 0;
+    std::uint64_t primary = 0, shadow = 0, reflect = 0, refract = 0;
 };
 
 // Everything one render thread owns: no sharing, no locks per ray.
 struct ThreadState {
     TraceScratch scratch;
+    std::vector<Span> spans;  // the spans of a refracted or shadow ray (reused, not reallocated)
     RayCounts rays;
     std::uint64_t refined_pixels = 0;  // adaptive anti-aliasing
 };
 
 class Shader {
 public:
-    Shader(const csg::Scene& scene, const CsgTracer& tracer, int max_reflect_depth);
-    // Linear RGB seen along the ray; `depth` counts reflections so far.
+    // max_depth: how many reflections and refractions into a solid one
+    // primary ray may branch into (leaving a solid continues the path at the
+    // same depth). Where the depth is spent a surface is shaded as if it
+    // were opaque, and an internal reflection is dropped.
+    Shader(const csg::Scene& scene, const CsgTracer& tracer, int max_depth);
+    // Linear RGB seen along the ray (outside every solid); `depth` counts
+    // reflections and refractions so far.
     // `surface`, if given, gets 0 for a miss, else an id of the surface the
     // ray hit (leaf and cut face), for adaptive anti-aliasing.
     glm::dvec3 radiance(const TraceRay& ray, int depth, ThreadState& ts, std::uint32_t* surface = nullptr) const;
 
+    // Linear RGB arriving at `p` along a ray that travels in unit direction
+    // `d` inside the solid of material `m` from p on: absorbed on its way to
+    // the solid's boundary, there split by Fresnel between the refracted ray
+    // out and the reflected ray back inside.
+    glm::dvec3 inside(const glm::dvec3& p, const glm::dvec3& d, const csg::Material& m, double tol, int depth,
+                      ThreadState& ts) const;
+    // The share of a light's colour reaching the end of a shadow ray: 0
+    // behind an opaque solid, transparency·exp(−absorption·length) per
+    // transparent span crossed (straight: no refraction, no caustics).
+    glm::dvec3 transmitted(const TraceRay& ray, ThreadState& ts) const;
+
 private:
+    const csg::Material& material_of(std::uint32_t leaf) const;
+    glm::dvec3 mirror(const glm::dvec3& origin, const glm::dvec3& r, const glm::dvec3& n, double roughness, int depth,
+                      ThreadState& ts) const;
+
     const csg::Scene& scene_;
     const CsgTracer& tracer_;
     int max_depth_;
+    bool any_transparent_ = false;  // else shadow rays only ask whether anything is in the way
     std::vector<csg::Light> lights_;       // the scene's, directions of unit length
     std::vector<SamplePattern> patterns_;  // per light: where its shadow rays go
 };

@@ -8,6 +8,7 @@ RenderStats sum_stats(const tbb::enumerable_thread_specific<ThreadState>& states
         s.primary_rays += ts.rays.primary;
         s.shadow_rays += ts.rays.shadow;
         s.reflect_rays += ts.rays.reflect;
+        s.refract_rays += ts.rays.refract;
         s.union_ops += ts.scratch.counters.union_ops;
         s.difference_ops += ts.scratch.counters.difference_ops;
         s.intersection_ops += ts.scratch.counters.intersection_ops;

@@ -16,10 +16,35 @@ using CurrentMaterial = ModuleState::CurrentMaterial;
 
 // An inner color() or material() starts from the enclosing material, so
 // `material(specular = 1) color("red") sphere();` keeps the specular.
-// Materials are opaque until transparency is rendered: say so where an
-// alpha below 1 is given rather than draw it opaque without a word.
-void check_alpha(ModuleCall& c, double alpha) {
-    if (alpha < 1) c.warn("alpha " + format_number(alpha) + " is ignored: kerf renders every solid opaque");
+
+// A colour's alpha is its transparency: alpha 1 opaque, 0 clear glass.
+void set_color(CurrentMaterial& cur, const glm::dvec4& col) {
+    cur.m.color = glm::dvec3(col);
+    cur.m.transparency = 1 - col.a;
+    if (!cur.interior_set) cur.m.interior = cur.m.color;
+}
+
+double non_negative(const Args& a, std::size_t i, const char* name, double fallback) {
+    double x = arg_number(a, i, name, fallback);
+    if (x < 0) arg_error(a, std::string(name) + " must not be negative, got " + format_number(x));
+    return x;
+}
+
+// absorption: one coefficient for all channels or [r, g, b], each >= 0 and
+// per unit length (light crossing d units keeps exp(-absorption·d)).
+glm::dvec3 absorption(const Args& a, std::size_t i, glm::dvec3 fallback) {
+    if (!a.has(i)) return fallback;
+    if (a[i].is_number()) return glm::dvec3(non_negative(a, i, "absorption", 0));
+    const glm::dvec3 v = arg_vec3(a, i, "absorption", fallback);
+    if (v.x < 0 || v.y < 0 || v.z < 0) arg_error(a, "absorption must not be negative");
+    return v;
+}
+
+// emission: a number scales the material's colour, a colour is used as it is.
+glm::dvec3 emission(const Args& a, std::size_t i, const CurrentMaterial& cur) {
+    if (!a.has(i)) return cur.m.emission;
+    if (a[i].is_number()) return non_negative(a, i, "emission", 0) * cur.m.color;
+    return glm::dvec3(arg_color(a, i, "emission"));
 }
 
 CurrentMaterial enclosing(ModuleCall& c) {
@@ -50,23 +75,14 @@ void color(ModuleCall& c) {
     if (!a.has(0)) arg_error(a, "c is required");
     glm::dvec4 col = arg_color(a, 0, "c");
     if (a.has(1)) col.a = unit_interval(a, 1, "alpha", 1);
-    check_alpha(c, col.a);
-    cur.m.color = glm::dvec3(col);
-    cur.m.alpha = col.a;
-    if (!cur.interior_set) cur.m.interior = cur.m.color;
+    set_color(cur, col);
     appear(c, cur);
 }
 
 void material(ModuleCall& c) {
     const Args& a = c.args;
     CurrentMaterial cur = enclosing(c);
-    if (a.has(0)) {
-        glm::dvec4 col = arg_color(a, 0, "color");
-        check_alpha(c, col.a);
-        cur.m.color = glm::dvec3(col);
-        cur.m.alpha = col.a;
-        if (!cur.interior_set) cur.m.interior = cur.m.color;
-    }
+    if (a.has(0)) set_color(cur, arg_color(a, 0, "color"));
     if (a.has(1)) {
         cur.m.interior = glm::dvec3(arg_color(a, 1, "interior"));
         cur.interior_set = true;
@@ -76,12 +92,22 @@ void material(ModuleCall& c) {
     cur.m.shininess = arg_number(a, 4, "shininess", cur.m.shininess);
     if (cur.m.shininess < 0) arg_error(a, "shininess must not be negative, got " + format_number(cur.m.shininess));
     cur.m.reflect = unit_interval(a, 5, "reflect", cur.m.reflect);
+    cur.m.transparency = unit_interval(a, 6, "transparency", cur.m.transparency);
+    cur.m.ior = arg_number(a, 7, "ior", cur.m.ior);
+    // ior is the ratio inside/outside (outside is always vacuum, 1); below 1
+    // models a bubble. The cap keeps a typo (ior = 15) from passing as glass.
+    if (!(cur.m.ior > 0 && cur.m.ior <= 10)) arg_error(a, "ior must be in (0, 10], got " + format_number(cur.m.ior));
+    cur.m.absorption = absorption(a, 8, cur.m.absorption);
+    cur.m.roughness = unit_interval(a, 9, "roughness", cur.m.roughness);
+    cur.m.emission = emission(a, 10, cur);
     appear(c, cur);
 }
 
 const ModuleEntry kAppearance[] = {
     {"color", ModuleKind::Operation, {"c", "alpha"}, color},
-    {"material", ModuleKind::Operation, {"color", "interior", "diffuse", "specular", "shininess", "reflect"}, material},
+    {"material", ModuleKind::Operation, {"color", "interior", "diffuse", "specular", "shininess", "reflect", "transparency", "ior", "absorption",
+      "roughness", "emission"},
+     material},
 };
 
 }  // namespace

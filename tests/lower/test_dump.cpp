@@ -42,7 +42,7 @@ TEST_CASE("dump prints header, scene set-up and the indented tree") {
     CHECK(l[3].rfind("light point position=", 0) == 0);
     CHECK(l[4].rfind("light point position=", 0) == 0);
     CHECK(l[5] == "background color=[0 0 0.5]");
-    CHECK(l[6] == "material 0 color=[0.8 0.8 0.8] alpha=1 interior=[0.8 0.8 0.8] diffuse=0.8 specular=0.2 shininess=32 reflect=0");
+    CHECK(l[6] == "material 0 color=[0.8 0.8 0.8] interior=[0.8 0.8 0.8] diffuse=0.8 specular=0.2 shininess=32 reflect=0");
     CHECK(l[7] == "tree");
     CHECK(l[8] == "union children=2 lo=[-1 -1.25 -1] hi=[6.25 1.25 1]");
     CHECK(l[9] == "  difference children=2 lo=[-1 -1 -1] hi=[1 1 1]");

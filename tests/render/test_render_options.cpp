@@ -7,6 +7,7 @@
 #include <cstring>
 
 #include "render/render.hpp"
+#include "tests/render/same_bytes.hpp"
 #include "tests/render/scene_builder.hpp"
 
 using namespace kerf;
@@ -32,11 +33,6 @@ csg::Scene busy_scene() {
     return s;
 }
 
-bool same_bytes(const render::Image& a, const render::Image& b) {
-    return a.width == b.width && a.height == b.height && a.channels == b.channels &&
-           std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(float)) == 0;
-}
-
 }  // namespace
 
 TEST_CASE("the same seed gives the same bytes with 1 and 2 threads", "[render][determinism]") {
@@ -46,11 +42,9 @@ TEST_CASE("the same seed gives the same bytes with 1 and 2 threads", "[render][d
     o.height = 48;
     o.spp = 5;
     o.seed = 42;
-    o.threads = 1;
-    const render::Image one = render::render(s, o);
-    o.threads = 2;
-    const render::Image two = render::render(s, o);
+    const auto [one, two] = on_1_and_2_threads(s, o);
     CHECK(same_bytes(one, two));
+    o.threads = 2;
     o.seed = 43;  // and the seed matters (jitter is real)
     const render::Image other = render::render(s, o);
     CHECK_FALSE(same_bytes(one, other));

@@ -183,12 +183,12 @@ TEST_CASE("color and material", "[appearance]") {
     REQUIRE(l.has_material);
     CHECK(l.material.color == glm::dvec3(1, 0, 0));
     CHECK(l.material.interior == glm::dvec3(1, 0, 0));
-    CHECK(l.material.alpha == 1);
+    CHECK(l.material.transparency == 0);
     l = one("color([0, 1, 0, 0.5]) sphere();");
-    CHECK(l.material.alpha == 0.5);
+    CHECK(l.material.transparency == 0.5);
     l = one("color(\"red\", alpha = 0.25) sphere();");
     CHECK(l.material.color == glm::dvec3(1, 0, 0));
-    CHECK(l.material.alpha == 0.25);
+    CHECK(l.material.transparency == 0.75);
     l = one("color(\"#ff8000\") sphere();");
     // Colours are sRGB as written and stored linear (docs/language.md §10):
     // 128/255 decodes to ((128/255 + 0.055) / 1.055)^2.4.
@@ -212,6 +212,29 @@ TEST_CASE("color and material", "[appearance]") {
     CHECK(one("sphere();").has_material == false);
     CHECK(error_of("color(\"nosuchcolour\") sphere();") == "test.sdl:1:1: error: color: unknown colour name \"nosuchcolour\"");
     CHECK(error_of("color([255, 0, 0]) sphere();") == "test.sdl:1:1: error: color: c components must be in [0, 1], got [255, 0, 0]");
+    // Glass and glow (docs/language.md, "Glass").
+    l = one("material(transparency = 0.9, ior = 1.5, absorption = [0.1, 0.2, 0.3], roughness = 0.25) sphere();");
+    CHECK(l.material.transparency == 0.9);
+    CHECK(l.material.ior == 1.5);
+    CHECK(l.material.absorption == glm::dvec3(0.1, 0.2, 0.3));
+    CHECK(l.material.roughness == 0.25);
+    CHECK(one("material(absorption = 2) sphere();").material.absorption == glm::dvec3(2));
+    CHECK(one("material(color = [1, 0, 0], emission = 2) sphere();").material.emission == glm::dvec3(2, 0, 0));
+    CHECK(one("material(emission = [0, 0, 1]) sphere();").material.emission == glm::dvec3(0, 0, 1));
+    // An inner color() keeps the glass, and its alpha sets the transparency.
+    l = one("material(ior = 1.33, transparency = 0.8) color(\"blue\", alpha = 0.4) sphere();");
+    CHECK(l.material.ior == 1.33);
+    CHECK(l.material.transparency == Approx(0.6));
+    CHECK(error_of("material(ior = 0) sphere();") == "test.sdl:1:1: error: material: ior must be in (0, 10], got 0");
+    CHECK(error_of("material(ior = 11) sphere();") == "test.sdl:1:1: error: material: ior must be in (0, 10], got 11");
+    CHECK(error_of("material(transparency = 1.5) sphere();") ==
+          "test.sdl:1:1: error: material: transparency must be in [0, 1], got 1.5");
+    CHECK(error_of("material(absorption = -1) sphere();") ==
+          "test.sdl:1:1: error: material: absorption must not be negative, got -1");
+    CHECK(error_of("material(emission = -1) sphere();") ==
+          "test.sdl:1:1: error: material: emission must not be negative, got -1");
+    CHECK(error_of("material(roughness = 2) sphere();") == "test.sdl:1:1: error: material: roughness must be in [0, 1], got 2");
+    CHECK(error_of("material(glow = 1) sphere();").find("glow") != std::string::npos);
     CHECK(error_of("material(diffuse = 2) sphere();") == "test.sdl:1:1: error: material: diffuse must be in [0, 1], got 2");
 }
 
