@@ -7,6 +7,7 @@
 #include <utility>
 
 #include <httplib.h>
+#include <sys/socket.h>
 
 #include "cli/view/camera_text.hpp"
 #include "cli/view/event_hub.hpp"
@@ -24,6 +25,9 @@ constexpr int kThreads = 32;
 constexpr int kMaxStreams = 8;
 constexpr int kKeptImages = 8;           // a page fetching an image just replaced still gets it
 constexpr std::size_t kMaxBody = 1 << 16;  // the page sends only short queries
+// cpp-httplib listens with a backlog of 5: a burst of connections (a page
+// fetching while a script polls) would wait for SYN retransmits, seconds.
+constexpr int kBacklog = 1024;
 
 }  // namespace
 
@@ -49,11 +53,20 @@ Server::Server(const std::string& address, int port, Handlers handlers) : impl_(
     httplib::Server& http = impl_->http;
     http.new_task_queue = [] { return new httplib::ThreadPool(kThreads); };
     // A client that stops sending frees its thread after this long.
-    http.set_read_timeout(3, 0);
+    http.set_read_timeout(1, 0);
     http.set_write_timeout(3, 0);
     http.set_keep_alive_timeout(2);
     http.set_payload_max_length(kMaxBody);
     if (address.find(':') != std::string::npos) http.set_address_family(AF_INET6);
+    // Instead of cpp-httplib's default SO_REUSEPORT, which would let a
+    // second process bind the same port and take a share of the requests:
+    // SO_REUSEADDR only (a restart may reuse the port at once).
+    int listening = -1;
+    http.set_socket_options([&listening](int fd) {
+        int yes = 1;
+        ::setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+        listening = fd;
+    });
     impl_->routes();
     if (port == 0) {
         impl_->port = http.bind_to_any_port(address);
@@ -64,6 +77,7 @@ Server::Server(const std::string& address, int port, Handlers handlers) : impl_(
                                      " (in use, or not permitted)");
         impl_->port = port;
     }
+    if (listening >= 0) ::listen(listening, kBacklog);  // a listening socket takes a new backlog
 }
 
 Server::~Server() {
