@@ -14,12 +14,15 @@ import time
 
 
 class View:
-    def __init__(self, kerf, scene_text, extra=(), name="scene.sdl"):
+    def __init__(self, kerf, scene_text, extra=(), name="scene.sdl", relative=False):
         self.dir = tempfile.mkdtemp(prefix="kerf_view_")
         self.scene = os.path.join(self.dir, name)
         self.write(scene_text)
         self.err = open(os.path.join(self.dir, "view.err"), "w+")
-        self.proc = subprocess.Popen([kerf, "view", self.scene, "-W", "160", "-H", "120", *extra],
+        # relative: run in the scene's folder and name it as a user would
+        # (the page then shows name:line:col, not a temporary path).
+        self.proc = subprocess.Popen([os.path.abspath(kerf), "view", name if relative else self.scene,
+                                      "-W", "160", "-H", "120", *extra], cwd=self.dir if relative else None,
                                      stdout=subprocess.PIPE, stderr=self.err, text=True)
         line = self.proc.stdout.readline()
         m = re.search(r"http://127\.0\.0\.1:(\d+)/", line)
