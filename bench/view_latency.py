@@ -18,6 +18,7 @@ Usage: python3 bench/view_latency.py KERF [--saves 7] [--only REGEX] [--no-watch
 import argparse
 import os
 import re
+import shutil
 import statistics
 import subprocess
 import sys
@@ -124,6 +125,7 @@ def measure_watch(kerf, text, saves, threads):
         proc.kill()
         proc.wait()
         err.close()
+        shutil.rmtree(d, ignore_errors=True)
 
 
 def med(xs):
