@@ -13,7 +13,9 @@ headless Chromium, driven through chromedriver with the standard library
   check gives (scene.sdl:2:8) in the page, the last image kept;
 - after the fix, the diagnostic gone and a new image;
 - after a mouse drag (orbit), an image from a camera at the same distance
-  (a centred sphere: the same disc) and a camera statement that moved.
+  (a centred sphere: the same disc) and a camera statement that moved;
+- after a turn of the wheel (zoom in), a camera nearer the target and the
+  larger disc projected from that distance.
 
 Exit 77 (ctest: skipped) where Chromium or chromedriver is missing.
 KERF_VIEW_SCREENSHOTS=DIR saves the page at each state (DIR/*.png).
@@ -37,9 +39,9 @@ def scene(radius, color, error=False):
             (color, "sphere(;" if error else "sphere(%g);" % radius, DIST, FOV))
 
 
-def disc_pixels(radius):
+def disc_pixels(radius, dist=DIST):
     """The area, in pixels, of a centred sphere's silhouette (a circle)."""
-    r_px = math.tan(math.asin(radius / DIST)) / math.tan(math.radians(FOV / 2)) * H / 2
+    r_px = math.tan(math.asin(radius / dist)) / math.tan(math.radians(FOV / 2)) * H / 2
     return math.pi * r_px * r_px
 
 
@@ -81,8 +83,8 @@ def full_image_after(browser, newer_than, what, limit=20.0):
                             " ? s : null;" % (STATE, newer_than), what, limit)
 
 
-def check_disc(s, radius, dominant, what):
-    want = disc_pixels(radius)
+def check_disc(s, radius, dominant, what, dist=DIST):
+    want = disc_pixels(radius, dist)
     check(s["w"] == W and s["h"] == H, "%s: the image is %dx%d (got %dx%d)" % (what, W, H, s["w"], s["h"]))
     check(abs(s["object"] - want) < 0.07 * want,
           "%s: the sphere covers %.0f px, the projected disc %.0f px" % (what, s["object"], want))
@@ -145,6 +147,16 @@ def main():
         check_disc(s, 0.5, 2, "after the orbit")
         if shots:
             browser.screenshot(os.path.join(shots, "view_orbit.png"))
+
+        before = s["statement"]
+        browser.wheel("#stage", -300)
+        s = browser.wait_for("const s = (function(){%s})(); return s.stage === 'full' && s.id > %d &&"
+                             " s.statement !== %r && s.object !== undefined ? s : null;" % (STATE, s["id"], before),
+                             "an image of the zoomed camera")
+        m = re.search(r"position = \[([^\]]*)\]", s["statement"])
+        dist = math.dist([float(x) for x in m.group(1).split(",")], [0, 0, 0])
+        check(dist < 0.9 * DIST, "the wheel brings the camera nearer (%.3f from the target, was %g)" % (dist, DIST))
+        check_disc(s, 0.5, 2, "after the zoom", dist)
     finally:
         if browser:
             browser.close()

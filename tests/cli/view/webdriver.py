@@ -116,6 +116,13 @@ class Browser:
         self._s("POST", "/actions", {"actions": [{"type": "pointer", "id": "mouse",
                                                     "parameters": {"pointerType": "mouse"}, "actions": moves}]})
 
+    def wheel(self, css, delta_y):
+        """One turn of the mouse wheel over the element's centre."""
+        el = self.element(css)
+        self._s("POST", "/actions", {"actions": [{"type": "wheel", "id": "wheel", "actions": [
+            {"type": "scroll", "x": 0, "y": 0, "deltaX": 0, "deltaY": delta_y, "duration": 0,
+             "origin": {"element-6066-11e4-a52e-4f735466cecf": el}}]}]})
+
     def screenshot(self, path):
         with open(path, "wb") as f:
             f.write(base64.b64decode(self._s("GET", "/screenshot", timeout=30)))
