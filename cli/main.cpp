@@ -1,4 +1,4 @@
-// kerf: check, dump, render or watch a .sdl scene, or join rendered bands.
+// kerf: check, dump, render, watch or view a .sdl scene, or join rendered bands.
 // Everything here is argument handling, reporting and exit codes
 // (docs/spec.md §7–§8, docs/farm.md); the work is library calls.
 #include <csignal>
@@ -15,6 +15,7 @@
 #include "cli/pipeline.hpp"
 #include "cli/progress.hpp"
 #include "cli/report.hpp"
+#include "cli/view_session.hpp"
 #include "cli/watch.hpp"
 #include "csg/dump.hpp"
 #include "render/image/image.hpp"
@@ -27,6 +28,7 @@ using namespace kerf::cli;
 
 int run(const Options& o) {
     if (o.command == Command::Watch) return run_watch(o);
+    if (o.command == Command::View) return run_view(o);
     if (o.command == Command::Assemble) return assemble(o);
     if (o.command == Command::Measure) return run_measure(o);
     if (o.command == Command::Render && o.farm.any()) return render_farm(o);

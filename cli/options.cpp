@@ -2,7 +2,9 @@
 
 #include "cli/farm_options.hpp"
 #include "cli/parse_number.hpp"
+#include "cli/view/guard.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cstdint>
 #include <limits>
@@ -69,6 +71,9 @@ const char* usage_text() {
            "  kerf watch  SCENE.sdl [-o OUT] [render options]   (or: kerf render --watch ...)\n"
            "    renders, then renders again (a preview, then the full image) whenever the\n"
            "    scene or a file it includes, uses or imports is saved; Ctrl-C stops\n"
+           "  kerf view   SCENE.sdl [--port N] [--host 127.0.0.1] [render options]\n"
+           "    serves a live view on a loopback address (prints its URL): renders again on\n"
+           "    every save; orbit, pan and zoom with the mouse; Ctrl-C stops\n"
            "  kerf check  SCENE.sdl   parse, evaluate and lower; print diagnostics only\n"
            "  kerf dump   SCENE.sdl   print the lowered, flattened CSG tree\n"
            "  kerf measure SCENE.sdl [--resolution 512] [--threads N] [--precision double|float]\n"
@@ -94,10 +99,11 @@ Options parse_options(const std::vector<std::string>& args) {
     if (cmd == "assemble") return parse_assemble(args);
     if (cmd == "render") o.command = Command::Render;
     else if (cmd == "watch") o.command = Command::Watch;
+    else if (cmd == "view") o.command = Command::View;
     else if (cmd == "check") o.command = Command::Check;
     else if (cmd == "dump") o.command = Command::Dump;
     else if (cmd == "measure") o.command = Command::Measure;
-    else throw UsageError("unknown command '" + cmd + "' (expected render, watch, check, dump, measure or assemble)");
+    else throw UsageError("unknown command '" + cmd + "' (expected render, watch, view, check, dump, measure or assemble)");
 
     constexpr std::uint64_t big = std::numeric_limits<std::uint32_t>::max();
     o.render.adaptive = true;  // --aa auto is the default
@@ -133,6 +139,14 @@ Options parse_options(const std::vector<std::string>& args) {
         else if (a == "--resolution" && o.command == Command::Measure) {
             o.measure.resolution = parse_int<int>(a, value(), 8, 16384);
             if (o.measure.resolution % 2 != 0) throw UsageError("--resolution must be even, got " + args[i]);
+        }
+        else if (a == "--port" && o.command == Command::View) o.port = parse_int<int>(a, value(), 0, 65535);
+        else if (a == "--host" && o.command == Command::View) {
+            o.host = value();
+            if (o.host == "localhost") o.host = "127.0.0.1";
+            if (!view::is_loopback_address(o.host))
+                throw UsageError("--host must be a loopback address (127.0.0.1, another 127.x.y.z or ::1): kerf view "
+                                 "serves this machine only, got '" + o.host + "'");
         }
         else if (a == "--threads") o.render.threads = parse_int<int>(a, value(), 0, 1024);
         else if (a == "--max-depth") o.render.max_reflect_depth = parse_int<int>(a, value(), 0, 32);
@@ -205,6 +219,14 @@ Options parse_options(const std::vector<std::string>& args) {
         throw UsageError("--base applies to a scene read from standard input ('-'), not to " + o.scene);
     if (o.command == Command::Watch && o.scene == "-")
         throw UsageError("watch needs a scene file to watch, not standard input");
+    if (o.command == Command::View) {
+        if (o.scene == "-") throw UsageError("view needs a scene file to watch, not standard input");
+        for (const char* f : {"-o", "--crop", "--stats"})
+            if (std::find(args.begin(), args.end(), f) != args.end())
+                throw UsageError(std::string(f) + " does not apply to view: it writes no file, the page shows the render and its statistics");
+        if (o.farm.any()) throw UsageError("view renders one image; the farm options do not apply to it");
+        if (o.render.aov != render::Aov::None) throw UsageError("view shows the shaded image; --aov does not apply to it");
+    }
     if (o.command == Command::Watch && o.output == "-")
         throw UsageError("watch writes a file again on each change; -o - (standard output) is not for it");
     if (o.output.empty() && o.scene == "-" && o.command == Command::Render)

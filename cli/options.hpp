@@ -11,7 +11,7 @@
 
 namespace kerf::cli {
 
-enum class Command { Render, Watch, Check, Dump, Measure, Assemble, Help, Version };
+enum class Command { Render, Watch, View, Check, Dump, Measure, Assemble, Help, Version };
 
 // Rendering on many machines (docs/farm.md): an animation's frames, an
 // image's horizontal bands.
@@ -38,6 +38,8 @@ struct Options {
     EvalOptions eval;
     render::RenderOptions render;
     render::MeasureOptions measure;  // kerf measure: resolution; threads and precision as for render
+    std::string host = "127.0.0.1";  // kerf view: --host, a loopback address only
+    int port = 0;                    // kerf view: --port; 0: a free one
 };
 
 // A bad command line: printed as "kerf: error: MESSAGE", exit status 2.

@@ -23,11 +23,12 @@ void check_output(const Options& o) {
 }
 
 csg::Scene evaluate_and_lower(const Options& o, const EvalOptions& eval, ProgressBar& bar,
-                              std::shared_ptr<const SourceFile> piped) {
+                              std::shared_ptr<const SourceFile> piped, std::vector<Diagnostic>* warnings) {
     bar.phase("evaluate");
     if (o.scene == "-" && !piped) piped = stdin_source(o.base);
     EvalResult evaluated = o.scene == "-" ? evaluate_source(piped, eval) : evaluate_file(o.scene, eval);
     if (!evaluated.warnings.empty()) bar.print_above([&] { print_warnings(evaluated.warnings); });
+    if (warnings) *warnings = evaluated.warnings;
     bar.phase("lower");
     return lower_to_csg(evaluated.graph);
 }

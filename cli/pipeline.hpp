@@ -31,9 +31,10 @@ std::shared_ptr<const SourceFile> stdin_source(const std::string& base);
 
 // Evaluates the scene (a file, or standard input for "-": `piped` when
 // given, so that the farm's frames read it once), prints its warnings and
-// lowers it. Throws what evaluation throws.
+// lowers it. Throws what evaluation throws. `warnings`: also given them.
 csg::Scene evaluate_and_lower(const Options& o, const EvalOptions& eval, ProgressBar& bar,
-                              std::shared_ptr<const SourceFile> piped = nullptr);
+                              std::shared_ptr<const SourceFile> piped = nullptr,
+                              std::vector<Diagnostic>* warnings = nullptr);
 
 // Renders `scene` and writes it to `path` atomically, with PNG text chunks
 // `text` (the farm's metadata).

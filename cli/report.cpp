@@ -31,29 +31,39 @@ void print_stats(const render::RenderStats& s, const render::Image& img) {
                      static_cast<unsigned long long>(s.refined_pixels), img.width * img.height);
 }
 
-int report_failure(const std::exception_ptr& error) {
+std::string describe_failure(const std::exception_ptr& error, int* status) {
     try {
         std::rethrow_exception(error);
     } catch (const DefineError& e) {  // a broken -D value is a bad command line
-        std::cerr << format_diagnostic(e.diagnostic()) << '\n';
-        return kUsage;
+        *status = kUsage;
+        return format_diagnostic(e.diagnostic());
     } catch (const SourceError& e) {
-        if (e.reported.empty()) std::cerr << format_diagnostic(e.diagnostic()) << '\n';
-        for (const Diagnostic& d : e.reported) std::cerr << format_diagnostic(d) << '\n';
-        return kSceneError;
+        *status = kSceneError;
+        if (e.reported.empty()) return format_diagnostic(e.diagnostic());
+        std::string text;  // several top-level errors of one run, one per line
+        for (const Diagnostic& d : e.reported) text += (text.empty() ? "" : "
+") + format_diagnostic(d);
+        return text;
     } catch (const IoError& e) {
-        std::cerr << "kerf: error: " << e.what() << '\n';
-        return kUsage;
+        *status = kUsage;
+        return std::string("kerf: error: ") + e.what();
     } catch (const TileError& e) {  // tiles that do not join: a bad command line
-        std::cerr << "kerf: error: " << e.what() << '\n';
-        return kUsage;
+        *status = kUsage;
+        return std::string("kerf: error: ") + e.what();
     } catch (const std::bad_alloc&) {
-        std::cerr << "kerf: error: out of memory\n";
-        return kRenderFailed;
+        *status = kRenderFailed;
+        return "kerf: error: out of memory";
     } catch (const std::exception& e) {
-        std::cerr << "kerf: error: " << e.what() << '\n';
-        return kRenderFailed;
+        *status = kRenderFailed;
+        return std::string("kerf: error: ") + e.what();
     }
+}
+
+int report_failure(const std::exception_ptr& error) {
+    int status = kRenderFailed;
+    const std::string text = describe_failure(error, &status);
+    std::cerr << text << '\n';
+    return status;
 }
 
 }  // namespace kerf::cli

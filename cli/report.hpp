@@ -3,6 +3,7 @@
 // (which prints and waits for the next change).
 #pragma once
 #include <exception>
+#include <string>
 #include <vector>
 
 #include "grammar/source.hpp"
@@ -16,6 +17,10 @@ void print_warnings(const std::vector<Diagnostic>& warnings);
 
 // --stats: rays, time and CSG work per ray of a finished render.
 void print_stats(const render::RenderStats& s, const render::Image& img);
+
+// What report_failure prints for `error` (no final newline), and in
+// `*status` the exit status it stands for.
+std::string describe_failure(const std::exception_ptr& error, int* status);
 
 // Prints `error` on standard error (a located diagnostic, or "kerf: error:
 // MESSAGE") and returns the exit status it stands for.

@@ -49,6 +49,8 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
     std::optional<CsgTracer> built;
     arena.execute([&] { built.emplace(scene, !options.double_precision); });
     const CsgTracer& tracer = *built;
+    auto cancelled = [&] { return options.cancel && options.cancel->load(std::memory_order_relaxed); };
+    if (cancelled()) throw RenderCancelled();
     if (progress) progress(0.0);  // the BVHs are built; tracing starts (render.hpp)
     const SamplePattern samples(options.preview ? 1 : options.spp);
     const Shader shader(scene, tracer, options.preview ? 0 : options.max_reflect_depth);
@@ -87,7 +89,7 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
 
     bool complete = true;
     if (aov != Aov::None) {
-        complete &= for_each_tile(arena, region, camera, tracer, states, progress, stack_need, [&](int x, int y, ThreadState& ts, bool traced) {
+        complete &= for_each_tile(arena, region, camera, tracer, states, progress, stack_need, options.cancel, [&](int x, int y, ThreadState& ts, bool traced) {
             aov_pixel(aov, camera, tracer, x, y, ts, traced, store.values(x, y));
         });
     } else if (options.adaptive && !options.preview) {
@@ -100,14 +102,14 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
             return [&progress, from, to](double f) { progress(from + (to - from) * f); };
         };
         const std::array<int, 4> area = centres.area();
-        complete &= for_each_tile(arena, area, camera, tracer, states, part(0, 0.25), stack_need, [&](int x, int y, ThreadState& ts, bool traced) {
+        complete &= for_each_tile(arena, area, camera, tracer, states, part(0, 0.25), stack_need, options.cancel, [&](int x, int y, ThreadState& ts, bool traced) {
             std::uint32_t surface;
             const glm::dvec3 c = sample(x + 0.5, y + 0.5, ts, traced, &surface);
             centres.set(x, y, c, surface);
             if (x >= region[0] && x < region[2] && y >= region[1] && y < region[3]) store.color(x, y, c);
         });
         // Only candidates are written again; the rest keep their centre.
-        complete &= for_each_tile(arena, region, camera, tracer, states, part(0.25, 1), stack_need, [&](int x, int y, ThreadState& ts, bool traced) {
+        complete &= for_each_tile(arena, region, camera, tracer, states, part(0.25, 1), stack_need, options.cancel, [&](int x, int y, ThreadState& ts, bool traced) {
             if (!centres.needs_more(x, y, threshold)) return;
             // Probes at the 4 corners first: a straight edge that crosses the
             // pixel always separates its corners, so a candidate whose
@@ -129,10 +131,11 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
             store.color(x, y, samples_mean(refine, x, y, ts, traced));
         });
     } else {
-        complete &= for_each_tile(arena, region, camera, tracer, states, progress, stack_need, [&](int x, int y, ThreadState& ts, bool traced) {
+        complete &= for_each_tile(arena, region, camera, tracer, states, progress, stack_need, options.cancel, [&](int x, int y, ThreadState& ts, bool traced) {
             store.color(x, y, samples_mean(samples, x, y, ts, traced));
         });
     }
+    if (cancelled()) throw RenderCancelled();
     if (!complete)
         throw std::runtime_error("a render thread has less stack than this scene's CSG tree needs (" +
                                  std::to_string(stack_need >> 20) + " MiB): TBB's threads were started with a smaller one");

@@ -3,6 +3,7 @@
 // layer over render() and write_image().
 #pragma once
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -38,6 +39,15 @@ struct RenderOptions {
     // floats, for 8-bit files: a quarter of the memory, and fresh memory is
     // expensive (the kernel clears every page; 13 % of a 2048² render).
     bool srgb8 = false;
+    // When given and set (by another thread), the render stops at the next
+    // tile and render() throws RenderCancelled: an interactive viewer drops
+    // a render the moment the view moves (docs/spec.md §13).
+    const std::atomic<bool>* cancel = nullptr;
+};
+
+class RenderCancelled : public std::runtime_error {
+public:
+    RenderCancelled() : std::runtime_error("render cancelled") {}
 };
 
 // Totals over the whole image (the caller divides for per-ray means).
@@ -51,7 +61,8 @@ struct RenderStats {
 };
 
 // Throws std::invalid_argument for bad options (size, spp, crop outside the
-// image) and std::runtime_error if Embree fails. `progress` receives the
+// image), std::runtime_error if Embree fails, RenderCancelled when
+// options.cancel was set. `progress` receives the
 // finished fraction from render threads, one call at a time; its first call,
 // progress(0), says the BVHs are built and tracing starts.
 Image render(const csg::Scene& scene, const RenderOptions& options, RenderStats* stats = nullptr,

@@ -28,13 +28,15 @@ namespace kerf::render {
 constexpr int kTile = 32;
 
 // Calls pixel(x, y, thread_state, traced) for every pixel of `region`, and
-// progress(fraction) after each tile, serialised. A thread with less than
+// progress(fraction) after each tile, serialised; once `*cancel` is set the
+// tiles not started are skipped (the caller throws RenderCancelled). A thread with less than
 // `stack_need` bytes of stack left traces nothing (stack_depth.hpp); then
 // the result is false and the image incomplete.
 template <class Pixel>
 bool for_each_tile(tbb::task_arena& arena, const std::array<int, 4>& region, const CameraModel& camera,
                    const CsgTracer& tracer, tbb::enumerable_thread_specific<ThreadState>& states,
-                   const std::function<void(double)>& progress, std::size_t stack_need, Pixel&& pixel) {
+                   const std::function<void(double)>& progress, std::size_t stack_need,
+                   const std::atomic<bool>* cancel, Pixel&& pixel) {
     const int width = region[2] - region[0], height = region[3] - region[1];
     const int tiles_x = (width + kTile - 1) / kTile, tiles_y = (height + kTile - 1) / kTile;
     const int tiles = tiles_x * tiles_y;
@@ -55,6 +57,7 @@ bool for_each_tile(tbb::task_arena& arena, const std::array<int, 4>& region, con
             _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
             ThreadState& ts = states.local();
             for (int tile = r.begin(); tile != r.end(); ++tile) {
+                if (cancel && cancel->load(std::memory_order_relaxed)) break;
                 const int tx0 = region[0] + (tile % tiles_x) * kTile, ty0 = region[1] + (tile / tiles_x) * kTile;
                 const int tx1 = std::min(tx0 + kTile, region[2]), ty1 = std::min(ty0 + kTile, region[3]);
                 glm::dvec3 co[4], cd[4];  // the tile's corner rays, in order round it

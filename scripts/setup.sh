@@ -12,6 +12,7 @@ packages=(
   libfreetype-dev libfontconfig-dev libharfbuzz-dev fonts-liberation2   # text(): outlines, lookup, shaping, default font
   libqhull-dev   # hull(), minkowski(): convex hulls (libqhull_r)
   libpolyclipping-dev   # offset(): Clipper's polygon booleans and offsets
+  libcpp-httplib-dev   # kerf view's HTTP server
 )
 if [[ "${1:-}" != "--render" ]]; then
   packages+=(
@@ -19,6 +20,7 @@ if [[ "${1:-}" != "--render" ]]; then
     clang libclang-rt-14-dev   # libFuzzer + sanitizers for the fuzz test
     openscad   # its examples are the corpus test (scripts/openscad_corpus.sh) and its echo output the reference
     slurm-wlm munge parallel   # the farm scripts' test starts a real single-node Slurm (docs/farm.md)
+    python3 chromium chromium-driver   # kerf view's tests: HTTP and security from Python, the page in headless Chromium
   )
 fi
 if [[ "${1:-}" == "--bench" ]]; then
