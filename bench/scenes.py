@@ -292,6 +292,23 @@ def holes(n, group="ref", radius=None):
                  f"{n}x{n} cylinders of radius {r:.4g} in cells {cell:.4g} wide.")
 
 
+def cells(n):
+    """A crowd of overlapping differences: n hollow cells along a conical log
+    spiral, the same spiral for every n (so cells pile up as n grows). Cell
+    k sits at u = k/n of 3 turns, its size and distance from the axis shrink
+    by 0.15^u and it rises as it shrinks (a cone, apex up). Each cell is a
+    sphere minus a smaller sphere offset upwards, which breaks through the
+    top: a cup. n = 1000 puts ~20 cells over every point of the spiral."""
+    cup = op("difference", prim("sphere", r=0.7), xf([("translate", (0, 0, 0.15))], prim("sphere", r=0.6)))
+    u = f"k/{n}"
+    tree = loop([("k", 0, n - 1)], xf([("rotate", (0, 0, f"1080*{u}")),
+                                       ("translate", (0, 0, f"3*(1 - pow(0.15, {u}))")),
+                                       ("scale", f"pow(0.15, {u})"), ("translate", (3, 0, 0))], cup))
+    return Scene(f"cells_{n}", "cells", n, op("union", tree), ((5, -7.5, 7), (0, 0, 0.8), 40), (4, -6, 12),
+                 f"{n} hollow cells (sphere r 0.7 minus sphere r 0.6 raised 0.15) along a conical log spiral, "
+                 "3 turns, size and radius x0.15.")
+
+
 SPHERE_GRIDS = {100: (5, 5, 4), 1000: (10, 10, 10), 10000: (25, 20, 20),
                 100000: (50, 50, 40), 1000000: (100, 100, 100)}
 
@@ -326,6 +343,8 @@ def families(quick=False):
     out += [holes(n, "holes", 4.0 / n) for n in (10, 20, 40, 70, 100)]
     out += [checkered(k, "checkered") for k in (5, 10, 20, 40)]
     out += [spheres(n) for n in sorted(SPHERE_GRIDS)]
+    # Crowds of overlapping differences (issue 18: depth complexity).
+    out += [cells(n) for n in (100, 1000, 2000)]
     return out
 
 

@@ -14,6 +14,7 @@
 
 #include "csg/scene.hpp"
 #include "render/tracer/tracer.hpp"
+#include "render/tracer/unit_balls.hpp"
 
 namespace kerf::render {
 
@@ -23,6 +24,7 @@ struct Accel {
     std::vector<std::uint32_t> items;  // node per Embree primID
     std::vector<RTCBounds> boxes;
     std::vector<std::uint32_t> always;  // unbounded nodes (half-spaces): tested for every ray
+    std::vector<Ball> balls;            // top only: per item, or empty (unit_balls.hpp)
 };
 
 // Embree reports failures (out of memory above all) as null handles and
@@ -48,6 +50,7 @@ struct CsgTracer::Impl {
     // leaf (shading's surface offset).
     std::vector<double> node_eps, leaf_eps;
     double eps_per_distance = 0;              // added per unit of the ray origin's |o|
+    double ball_slack = 1e-12;                // unit balls: relative round-off of the leaf tests
     // Embree's float BVHs hold boxes relative to `frame` (the middle of the
     // bounded units) and rays start at o - frame: a scene far from the
     // origin keeps float precision. frame_radius: the largest |corner -

@@ -13,6 +13,7 @@ namespace {
 
 // The unit's first entry in (tnear, best). True if it is the new best.
 bool try_unit_entry(TopContext& ctx, std::uint32_t unit_index, std::uint32_t node) {
+    if (unit_ball_misses(*ctx.state, unit_index, ctx.tnear, ctx.best)) return false;
     TraceScratch& s = *ctx.state->scratch;
     const std::uint32_t base = s.stack.size();
     ctx.state->enter_unit(node);

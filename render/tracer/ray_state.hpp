@@ -132,6 +132,14 @@ inline bool slab_hit(const csg::Aabb& box, const glm::dvec3& o, const glm::dvec3
     return true;
 }
 
+// Whether the unit at index `item` of the top BVH provably has no span on
+// [a, b] (its ball, unit_balls.hpp), before any of its evaluation.
+inline bool unit_ball_misses(const RayState& st, std::uint32_t item, double a, double b) {
+    const std::vector<Ball>& balls = st.impl->top.balls;
+    if (item >= balls.size() || balls[item].r < 0) return false;
+    return ball_misses(balls[item], st.o, st.d, st.inv_len * st.inv_len, a, b, 4 * st.eps_ray, st.impl->ball_slack);
+}
+
 // A float Embree ray over (tnear, tfar) that has hit nothing yet.
 inline RTCRayHit embree_ray(float ox, float oy, float oz, float dx, float dy, float dz, float tnear, float tfar) {
     RTCRayHit rh;

@@ -11,7 +11,9 @@ namespace kerf::render {
 
 namespace {
 
-bool unit_blocks(TopContext& ctx, std::uint32_t node) {
+// `item`: the unit's index in the top BVH (its ball), or kNone.
+bool unit_blocks(TopContext& ctx, std::uint32_t item, std::uint32_t node) {
+    if (unit_ball_misses(*ctx.state, item, ctx.tnear, ctx.best)) return false;
     TraceScratch& s = *ctx.state->scratch;
     const std::uint32_t base = s.stack.size();
     ctx.state->enter_unit(node);
@@ -30,7 +32,7 @@ bool unit_blocks(TopContext& ctx, std::uint32_t node) {
 void top_occluded_callback(const RTCOccludedFunctionNArguments* args) {
     if (!args->valid[0]) return;
     auto* ctx = reinterpret_cast<TopContext*>(args->context);
-    if (unit_blocks(*ctx, ctx->accel->items[args->primID])) {
+    if (unit_blocks(*ctx, args->primID, ctx->accel->items[args->primID])) {
         ctx->found = true;
         reinterpret_cast<RTCRay*>(args->ray)->tfar = -std::numeric_limits<float>::infinity();
     }
@@ -41,10 +43,10 @@ bool CsgTracer::occluded(const TraceRay& ray, TraceScratch& scratch) const {
     if (!make_state(st, impl_.get(), ray, scratch)) return false;
     TopContext ctx(st, ray);
     for (std::uint32_t node : impl_->top.always)
-        if (unit_blocks(ctx, node)) return true;
+        if (unit_blocks(ctx, csg::kNone, node)) return true;
     if (!impl_->top.bvh) {
-        for (std::uint32_t node : impl_->top.items)
-            if (unit_blocks(ctx, node)) return true;
+        for (std::uint32_t i = 0; i < impl_->top.items.size(); ++i)
+            if (unit_blocks(ctx, i, impl_->top.items[i])) return true;
         return false;
     }
     RTCRay r = make_rayhit(st, ray.tnear, ray.tfar).ray;
