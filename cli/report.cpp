@@ -41,8 +41,7 @@ std::string describe_failure(const std::exception_ptr& error, int* status) {
         *status = kSceneError;
         if (e.reported.empty()) return format_diagnostic(e.diagnostic());
         std::string text;  // several top-level errors of one run, one per line
-        for (const Diagnostic& d : e.reported) text += (text.empty() ? "" : "
-") + format_diagnostic(d);
+        for (const Diagnostic& d : e.reported) text += (text.empty() ? "" : "\n") + format_diagnostic(d);
         return text;
     } catch (const IoError& e) {
         *status = kUsage;
