@@ -15,7 +15,7 @@
 #include "interpreter/degrees.hpp"
 #include "interpreter/modules/args.hpp"
 #include "interpreter/modules/module_call.hpp"
-#include "interpreter/modules/plane_map.hpp"
+#include "interpreter/modules/mapped_edges.hpp"
 
 namespace kerf::eval {
 
@@ -89,17 +89,11 @@ private:
     }
 
     void push_polygon(const graph::Node& n, std::vector<glm::dvec4> edges) {
-        csg::Polygon2 poly;
-        poly.lo = glm::dvec2(std::numeric_limits<double>::infinity());
-        poly.hi = -poly.lo;
         for (glm::dvec4& e : edges) {
             if (mirrored) e.x = -e.x, e.z = -e.z;
             e.x = std::max(e.x, 0.0), e.z = std::max(e.z, 0.0);  // -0 and a circle's rounded rim
-            poly.lo = glm::min(poly.lo, glm::min(glm::dvec2(e.x, e.y), glm::dvec2(e.z, e.w)));
-            poly.hi = glm::max(poly.hi, glm::max(glm::dvec2(e.x, e.y), glm::dvec2(e.z, e.w)));
         }
-        poly.edges = std::move(edges);
-        g_.graph.polygons.push_back(std::move(poly));
+        g_.graph.polygons.push_back(bounded_polygon(std::move(edges)));
         graph::Node leaf;
         leaf.kind = graph::NodeKind::Primitive;
         leaf.prim = P::Lathe;
@@ -109,20 +103,8 @@ private:
     }
 
     void leaf(const graph::Node& n, const Map2& a) {
-        std::vector<glm::dvec4> edges;
-        auto edge = [&](glm::dvec2 p, glm::dvec2 q) {
-            p = apply(a, p), q = apply(a, q);
-            if (p != q) edges.emplace_back(p.x, p.y, q.x, q.y);
-        };
-        if (n.prim == P::Box) {
-            const double x0 = n.p[0], y0 = n.p[1], x1 = n.p[3], y1 = n.p[4];
-            edge({x0, y0}, {x1, y0}), edge({x1, y0}, {x1, y1}), edge({x1, y1}, {x0, y1}), edge({x0, y1}, {x0, y0});
-            return push_polygon(n, std::move(edges));
-        }
-        if (n.prim == P::Prism) {
-            for (const glm::dvec4& e : g_.graph.polygons[n.index].edges) edge({e.x, e.y}, {e.z, e.w});
-            return push_polygon(n, std::move(edges));
-        }
+        MappedEdges edge{a, {}};
+        if (add_outline(g_.graph, n, edge)) return push_polygon(n, std::move(edge.edges));
         // A circle of radius r: its image is an ellipse. With axes along x
         // and y (the rows of L orthogonal) and clear of the axis, a torus
         // scaled by (ex, ex, ez); otherwise (tilted, or touching the axis:
@@ -148,7 +130,7 @@ private:
             return;
         }
         circle_chords(r, tol_, edge);
-        push_polygon(n, std::move(edges));
+        push_polygon(n, std::move(edge.edges));
     }
 };
 

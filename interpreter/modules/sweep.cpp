@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "interpreter/modules/plane_map.hpp"
+#include "interpreter/modules/mapped_edges.hpp"
 
 namespace kerf::eval {
 
@@ -17,6 +17,10 @@ public:
     void build(std::uint32_t id, const Map2& a) {
         const graph::Node n = g_.graph.nodes[id];
         if (n.kind == graph::NodeKind::Primitive) return leaf(n, a);
+        // Lowering builds these from their children's points and boxes,
+        // which a sweep does not carry over (a twisted hull is no hull).
+        if (n.kind == graph::NodeKind::Hull || n.kind == graph::NodeKind::Minkowski || n.kind == graph::NodeKind::Resize)
+            throw SourceError(n.loc, "linear_extrude: hull(), minkowski() and resize() of 2D shapes cannot be twisted or scaled unevenly yet");
         const Map2 inner = n.kind == graph::NodeKind::Transform ? a * plane_part(g_.graph.matrices[n.index]) : a;
         const std::size_t mark = g_.mark();
         for (std::uint32_t k = 0; k < n.child_count; ++k) build(g_.graph.child_refs[n.first_child + k], inner);
@@ -33,15 +37,7 @@ private:
 
     void push_prism(const graph::Node& n, std::vector<glm::dvec4> edges) {
         if (edges.empty()) return;
-        csg::Polygon2 poly;
-        poly.lo = glm::dvec2(std::numeric_limits<double>::infinity());
-        poly.hi = -poly.lo;
-        for (const glm::dvec4& e : edges) {
-            poly.lo = glm::min(poly.lo, glm::min(glm::dvec2(e.x, e.y), glm::dvec2(e.z, e.w)));
-            poly.hi = glm::max(poly.hi, glm::max(glm::dvec2(e.x, e.y), glm::dvec2(e.z, e.w)));
-        }
-        poly.edges = std::move(edges);
-        g_.graph.polygons.push_back(std::move(poly));
+        g_.graph.polygons.push_back(bounded_polygon(std::move(edges)));
         graph::Node leaf;
         leaf.kind = graph::NodeKind::Primitive;
         leaf.prim = P::Prism;
@@ -53,20 +49,8 @@ private:
     }
 
     void leaf(const graph::Node& n, const Map2& a) {
-        std::vector<glm::dvec4> edges;
-        auto edge = [&](glm::dvec2 p, glm::dvec2 q) {
-            p = apply(a, p), q = apply(a, q);
-            if (p != q) edges.emplace_back(p.x, p.y, q.x, q.y);
-        };
-        if (n.prim == P::Box) {
-            const double x0 = n.p[0], y0 = n.p[1], x1 = n.p[3], y1 = n.p[4];
-            edge({x0, y0}, {x1, y0}), edge({x1, y0}, {x1, y1}), edge({x1, y1}, {x0, y1}), edge({x0, y1}, {x0, y0});
-            return push_prism(n, std::move(edges));
-        }
-        if (n.prim == P::Prism) {
-            for (const glm::dvec4& e : g_.graph.polygons[n.index].edges) edge({e.x, e.y}, {e.z, e.w});
-            return push_prism(n, std::move(edges));
-        }
+        MappedEdges edge{a, {}};
+        if (add_outline(g_.graph, n, edge)) return push_prism(n, std::move(edge.edges));
         if (n.prim != P::Cylinder) throw SourceError(n.loc, "linear_extrude: this shape cannot be extruded");
         // A circle: its image is a circle about the origin when the map's
         // columns are orthogonal, of one length, and it keeps the origin;
@@ -86,7 +70,7 @@ private:
             return;
         }
         circle_chords(r, tol_, edge);
-        push_prism(n, std::move(edges));
+        push_prism(n, std::move(edge.edges));
     }
 };
 

@@ -20,7 +20,8 @@ struct SweepMap {
 // pending stack: polygons and squares a swept Prism over their mapped edges;
 // a circle that stays a circle about the origin under a uniform scale a
 // cylinder or cone (a twist turns it onto itself), any other circle a
-// polygon within the curve tolerance.
+// polygon within the curve tolerance. A hull, minkowski or resize below is
+// an error (lowering builds them from points a sweep does not carry over).
 void sweep_subtree(ModuleCall& c, std::uint32_t id, const SweepMap& map);
 
 }  // namespace kerf::eval
