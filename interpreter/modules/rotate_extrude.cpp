@@ -15,7 +15,7 @@
 #include "interpreter/degrees.hpp"
 #include "interpreter/modules/args.hpp"
 #include "interpreter/modules/module_call.hpp"
-#include "interpreter/modules/mapped_edges.hpp"
+#include "interpreter/modules/plane_rebuild.hpp"
 
 namespace kerf::eval {
 
@@ -47,16 +47,9 @@ public:
     }
 
     // Second pass: the revolved copy of node `id` pushed on the builder's pending stack.
-    void build(std::uint32_t id, const Map2& a) {
-        const graph::Node n = g_.graph.nodes[id];
-        if (n.kind == graph::NodeKind::Primitive) return leaf(n, a);
-        const Map2 inner = n.kind == graph::NodeKind::Transform ? a * plane_part(g_.graph.matrices[n.index]) : a;
-        const std::size_t mark = g_.mark();
-        for (std::uint32_t k = 0; k < n.child_count; ++k) build(g_.graph.child_refs[n.first_child + k], inner);
-        if (n.kind == graph::NodeKind::Transform)
-            g_.group(mark, n.loc);
-        else
-            g_.make_node(mark, n.kind, n.loc, n.index);  // a boolean or an appearance scope
+    void build(std::uint32_t id) {
+        rebuild_subtree(g_, id, Map2(1.0), "rotate_extrude", "revolved",
+                        [this](const graph::Node& n, const Map2& a) { leaf(n, a); });
     }
 
     bool mirrored = false;  // the shape lies at x <= 0: revolve its mirror image
@@ -186,7 +179,7 @@ void rotate_extrude(ModuleCall& c) {
                                         range + ")");
     }
     rev.mirrored = rev.xmax <= 0 && rev.xmin < 0;
-    for (std::uint32_t id : shapes) rev.build(id, Map2(1.0));
+    for (std::uint32_t id : shapes) rev.build(id);
     g.group(mark, c.st.loc);
     // OpenSCAD sweeps from the side the profile lies on: +x, or −x when mirrored.
     if (std::abs(angle) < 360) cut_wedge(g, mark, rev.mirrored ? 180 : 0, angle, c.st.loc);

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "interpreter/modules/mapped_edges.hpp"
+#include "interpreter/modules/plane_rebuild.hpp"
 
 namespace kerf::eval {
 
@@ -14,20 +14,9 @@ class Sweeper {
 public:
     Sweeper(ModuleCall& c, const SweepMap& map) : g_(c.graph()), map_(map), tol_(c.curve_tolerance()) {}
 
-    void build(std::uint32_t id, const Map2& a) {
-        const graph::Node n = g_.graph.nodes[id];
-        if (n.kind == graph::NodeKind::Primitive) return leaf(n, a);
-        // Lowering builds these from their children's points and boxes,
-        // which a sweep does not carry over (a twisted hull is no hull).
-        if (n.kind == graph::NodeKind::Hull || n.kind == graph::NodeKind::Minkowski || n.kind == graph::NodeKind::Resize)
-            throw SourceError(n.loc, "linear_extrude: hull(), minkowski() and resize() of 2D shapes cannot be twisted or scaled unevenly yet");
-        const Map2 inner = n.kind == graph::NodeKind::Transform ? a * plane_part(g_.graph.matrices[n.index]) : a;
-        const std::size_t mark = g_.mark();
-        for (std::uint32_t k = 0; k < n.child_count; ++k) build(g_.graph.child_refs[n.first_child + k], inner);
-        if (n.kind == graph::NodeKind::Transform)
-            g_.group(mark, n.loc);
-        else
-            g_.make_node(mark, n.kind, n.loc, n.index);  // a boolean or an appearance scope
+    void build(std::uint32_t id) {
+        rebuild_subtree(g_, id, Map2(1.0), "linear_extrude", "twisted or scaled unevenly",
+                        [this](const graph::Node& n, const Map2& a) { leaf(n, a); });
     }
 
 private:
@@ -76,6 +65,6 @@ private:
 
 }  // namespace
 
-void sweep_subtree(ModuleCall& c, std::uint32_t id, const SweepMap& map) { Sweeper(c, map).build(id, Map2(1.0)); }
+void sweep_subtree(ModuleCall& c, std::uint32_t id, const SweepMap& map) { Sweeper(c, map).build(id); }
 
 }  // namespace kerf::eval
