@@ -102,8 +102,8 @@ constexpr double pi = std::numbers::pi;
 TEST_CASE("loose DXF lines join into a closed outline, in any order and direction", "[dxf]") {
     auto dir = test_dir("dxf_lines");
     // A 10 x 6 rectangle, its four sides shuffled and two reversed.
-    write_file(dir / "r.dxf", dxf(line({10, 6}, {10, 0}) + line({0, 0}, {0, 6}) + line({10, 0}, {0, 0}) +
-                                  line({0, 6}, {10, 6})));
+    write_file(dir / "r.dxf", dxf(line({10, 6}, {10, 0}) + line({0, 6}, {0, 0}) + line({10, 0}, {0, 0}) +
+                                  line({10, 6}, {0, 6})));
     const std::string scad = "linear_extrude(height = 2) import(\"r.dxf\");";
     check_volume(measure(dir, scad), 120, 1e-6);
     if (const double ref = openscad_volume(dir, scad); std::isfinite(ref)) CHECK(ref == Approx(120).epsilon(1e-6));
