@@ -164,7 +164,9 @@ private:
 };
 
 // Joins chains end to end: ends within kJoin are one point (hashed on a
-// kJoin grid, neighbours searched). Returns the loops; counts the rest.
+// kJoin grid, neighbours searched). Returns the loops; a chain that does
+// not close is closed by a straight edge, as OpenSCAD 2021 does ("we don't
+// support open paths; closing them to be compatible"), and counted.
 std::vector<Chain> join_chains(std::vector<Chain> chains, std::size_t& open) {
     struct Key {
         std::int64_t x, y;
@@ -194,29 +196,34 @@ std::vector<Chain> join_chains(std::vector<Chain> chains, std::size_t& open) {
         at[head[i]].push_back(i), at[tail[i]].push_back(i);
     }
     std::vector<bool> used(chains.size());
+    // The next unused chain at point `p`, turned to start there and used up.
+    auto take = [&](std::uint32_t p, std::uint32_t& other_end) -> const Chain* {
+        for (std::uint32_t j : at[p])
+            if (!used[j]) {
+                used[j] = true;
+                if (head[j] != p) std::reverse(chains[j].begin(), chains[j].end()), std::swap(head[j], tail[j]);
+                other_end = tail[j];
+                return &chains[j];
+            }
+        return nullptr;
+    };
     std::vector<Chain> loops;
     for (std::uint32_t i = 0; i < chains.size(); ++i) {
         if (used[i] || (head[i] == tail[i] && chains[i].size() <= 2)) continue;
         used[i] = true;
         Chain loop = chains[i];
-        const std::uint32_t start = head[i];
-        std::uint32_t end = tail[i];
-        while (end != start) {
-            std::uint32_t next = UINT32_MAX;
-            for (std::uint32_t j : at[end])
-                if (!used[j]) { next = j; break; }
-            if (next == UINT32_MAX) break;
-            used[next] = true;
-            Chain piece = chains[next];
-            if (head[next] != end) std::reverse(piece.begin(), piece.end());
-            end = head[next] == end ? tail[next] : head[next];
-            loop.insert(loop.end(), piece.begin() + 1, piece.end());
-        }
-        if (end != start) {
+        std::uint32_t start = head[i], end = tail[i];
+        while (end != start)
+            if (const Chain* piece = take(end, end)) loop.insert(loop.end(), piece->begin() + 1, piece->end());
+            else break;
+        if (end == start) {
+            loop.pop_back();  // the start again
+        } else {
+            // Open: the whole chain, also what leads into its first piece,
+            // closed by the straight edge from its end back to its start.
             ++open;
-            continue;
+            while (const Chain* piece = take(start, start)) loop.insert(loop.begin(), piece->rbegin(), piece->rend() - 1);
         }
-        loop.pop_back();  // the start again
         if (loop.size() >= 3) loops.push_back(std::move(loop));
     }
     return loops;

@@ -1,7 +1,8 @@
 // import("file.dxf"): a drawing's outlines as a 2D shape (docs/spec.md §10),
 // read with Debian's dxflib. As OpenSCAD 2021.01 does: LINE, ARC, CIRCLE,
 // LWPOLYLINE and POLYLINE in model space (not in BLOCKs), optionally of
-// one layer; loose segments joined end to end into closed loops; a point
+// one layer; loose segments joined end to end into loops (an open chain
+// closed by a straight edge); a point
 // p becomes (p − origin) · scale; the loops filled by the even-odd rule.
 #pragma once
 #include <cstdint>
@@ -23,7 +24,7 @@ struct DxfShape {
     // exact, each with its even-odd depth (how many outlines hold it).
     std::vector<DxfCircle> circles;
     std::vector<int> circle_depth;
-    std::size_t open_paths = 0;  // chains that do not close, ignored as OpenSCAD does
+    std::size_t open_paths = 0;  // chains that do not close: closed by a straight edge, as OpenSCAD does
 };
 
 struct DxfOptions {

@@ -54,7 +54,8 @@ void import_drawing(ModuleCall& c, const std::string& path) {
     }
     const std::string name = "\"" + a[File].as_string() + "\"";
     if (shape.open_paths)
-        c.warn(std::to_string(shape.open_paths) + " open path(s) in " + name + " ignored: only closed outlines fill");
+        c.warn(std::to_string(shape.open_paths) + " open path(s) in " + name +
+               " closed by a straight edge from end to start, as OpenSCAD does");
     if (shape.loops.empty() && shape.circles.empty())
         return c.warn(name + (o.layer.empty() ? "" : " layer \"" + o.layer + "\"") +
                       " holds no closed outline: the empty shape");

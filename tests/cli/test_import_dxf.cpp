@@ -145,13 +145,17 @@ TEST_CASE("DXF import takes origin and scale as OpenSCAD: (p - origin) * scale",
     if (const double ref = openscad_volume(dir, scad); std::isfinite(ref)) CHECK(ref == Approx(24).epsilon(1e-6));
 }
 
-TEST_CASE("open DXF paths are ignored with a warning; bad files are located errors", "[dxf]") {
+TEST_CASE("open DXF paths are closed with a warning, as OpenSCAD; bad files are located errors", "[dxf]") {
     auto dir = test_dir("dxf_bad");
-    write_file(dir / "o.dxf", dxf(lwpolyline({{0, 0}, {1, 0}, {1, 1}, {0, 1}}) + line({5, 0}, {6, 0}) +
-                                  line({6, 0}, {6, 1})));
-    const Measured m = measure(dir, "linear_extrude(height = 1) import(\"o.dxf\");");
-    check_volume(m, 1, 1e-6);
-    CHECK(m.err.find("scene.scad:1:28: warning: import: 1 open path(s) in \"o.dxf\" ignored") != std::string::npos);
+    // The open chain (5,1) (6,1) (6,0) (5,0) is listed from its middle, so
+    // joining must extend it both ways before closing it: a unit square.
+    write_file(dir / "o.dxf", dxf(lwpolyline({{0, 0}, {1, 0}, {1, 1}, {0, 1}}) + line({6, 1}, {6, 0}) +
+                                  line({6, 0}, {5, 0}) + line({5, 1}, {6, 1})));
+    const std::string scad = "linear_extrude(height = 1) import(\"o.dxf\");";
+    const Measured m = measure(dir, scad);
+    check_volume(m, 2, 1e-6);
+    CHECK(m.err.find("scene.scad:1:28: warning: import: 1 open path(s) in \"o.dxf\" closed") != std::string::npos);
+    if (const double ref = openscad_volume(dir, scad); std::isfinite(ref)) CHECK(ref == Approx(2).epsilon(1e-6));
 
     write_file(dir / "junk.dxf", "hello world\nthis is not dxf\n");
     auto r = run_kerf("check '" + write_file(dir / "j.scad", "linear_extrude(1)\n  import(\"junk.dxf\");\n") + "'", dir);
@@ -162,4 +166,18 @@ TEST_CASE("open DXF paths are ignored with a warning; bad files are located erro
     CHECK(r.status == 1);
     CHECK(r.err.find("n.scad:1:1: error:") != std::string::npos);
     CHECK(r.err.find("missing.dxf") != std::string::npos);
+}
+
+TEST_CASE("OpenSCAD's example013: four INSERTs of two BLOCKs, measured as OpenSCAD exports it", "[dxf]") {
+    const std::filesystem::path examples = "/usr/share/openscad/examples/Old";
+    if (!std::filesystem::exists(examples / "example013.dxf")) {
+        WARN("the openscad examples are not installed: skipped");
+        return;
+    }
+    auto dir = test_dir("dxf_example013");
+    std::filesystem::copy_file(examples / "example013.dxf", dir / "example013.dxf");
+    // All straight lines, so OpenSCAD's mesh is exact: `openscad -o x.stl
+    // example013.scad` has volume 61333.33 (Debian's openscad 2021.01).
+    const Measured m = measure(dir, slurp(examples / "example013.scad"));
+    check_volume(m, 61333.33, 1e-3);
 }
