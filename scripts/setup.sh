@@ -12,6 +12,7 @@ packages=(
   libfreetype-dev libfontconfig-dev libharfbuzz-dev fonts-liberation2   # text(): outlines, lookup, shaping, default font
   libqhull-dev   # hull(), minkowski(): convex hulls (libqhull_r)
   libpolyclipping-dev   # offset(): Clipper's polygon booleans and offsets
+  libdxflib-dev   # import() of .dxf drawings
   libcpp-httplib-dev   # kerf view's HTTP server
 )
 if [[ "${1:-}" != "--render" ]]; then

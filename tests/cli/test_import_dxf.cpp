@@ -1,0 +1,183 @@
+// import("f.dxf") as a 2D shape (docs/spec.md §10) through the real binary:
+// DXF files written here, extruded and measured by `kerf measure`, against
+// closed-form areas and, where openscad is installed, against OpenSCAD
+// 2021's own import of the same file (its STL export's volume).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+
+#include "tests/cli/run_kerf.hpp"
+
+namespace {
+
+using Pt = std::pair<double, double>;
+
+std::string num(double x) {
+    std::ostringstream s;
+    s.precision(17);
+    s << x;
+    return s.str();
+}
+
+std::string entity(const std::string& kind, const std::string& layer,
+                   std::initializer_list<std::pair<int, std::string>> codes) {
+    std::string s = "0\n" + kind + "\n8\n" + layer + "\n";
+    for (const auto& [c, v] : codes) s += std::to_string(c) + "\n" + v + "\n";
+    return s;
+}
+std::string line(Pt a, Pt b, const std::string& layer = "0") {
+    return entity("LINE", layer, {{10, num(a.first)}, {20, num(a.second)}, {11, num(b.first)}, {21, num(b.second)}});
+}
+std::string arc(Pt c, double r, double a1, double a2) {
+    return entity("ARC", "0", {{10, num(c.first)}, {20, num(c.second)}, {40, num(r)}, {50, num(a1)}, {51, num(a2)}});
+}
+std::string circle(Pt c, double r, const std::string& layer = "0") {
+    return entity("CIRCLE", layer, {{10, num(c.first)}, {20, num(c.second)}, {40, num(r)}});
+}
+std::string lwpolyline(std::initializer_list<Pt> pts, const std::string& layer = "0") {
+    std::string s = entity("LWPOLYLINE", layer, {{90, std::to_string(pts.size())}, {70, "1"}});
+    for (const Pt& p : pts) s += "10\n" + num(p.first) + "\n20\n" + num(p.second) + "\n";
+    return s;
+}
+std::string dxf(const std::string& entities) { return "0\nSECTION\n2\nENTITIES\n" + entities + "0\nENDSEC\n0\nEOF\n"; }
+
+struct Measured {
+    double volume = NAN, error = NAN;
+    std::string out, err;
+    int status = -1;
+};
+
+// `kerf measure` of `scad` (which imports the DXF files beside it).
+Measured measure(const std::filesystem::path& dir, const std::string& scad) {
+    const std::string scene = write_file(dir / "scene.scad", scad + "\n");
+    auto r = run_kerf("measure '" + scene + "' --resolution 256", dir);
+    Measured m;
+    m.status = r.status, m.out = r.out, m.err = r.err;
+    if (const std::size_t at = r.out.find("volume: "); at != std::string::npos) {
+        char* end = nullptr;
+        m.volume = std::strtod(r.out.c_str() + at + 8, &end);
+        const std::size_t pm = r.out.find("\xc2\xb1", at);
+        if (pm != std::string::npos) m.error = std::strtod(r.out.c_str() + pm + 2, nullptr);
+    }
+    return m;
+}
+
+// The volume of OpenSCAD's ASCII STL export of `scad`, or NaN without openscad.
+double openscad_volume(const std::filesystem::path& dir, const std::string& scad) {
+    if (std::system("command -v openscad >/dev/null 2>&1") != 0) return NAN;
+    const std::string file = write_file(dir / "reference.scad", scad + "\n");
+    const std::string stl = (dir / "reference.stl").string();
+    if (std::system(("cd '" + dir.string() + "' && openscad -o '" + stl + "' '" + file + "' >/dev/null 2>&1").c_str()))
+        return NAN;
+    std::ifstream in(stl);
+    std::string word;
+    double v = 0, p[3][3];
+    int k = 0;
+    while (in >> word)
+        if (word == "vertex") {
+            in >> p[k][0] >> p[k][1] >> p[k][2];
+            if (++k == 3) {
+                v += (p[0][0] * (p[1][1] * p[2][2] - p[1][2] * p[2][1]) - p[0][1] * (p[1][0] * p[2][2] - p[1][2] * p[2][0]) +
+                      p[0][2] * (p[1][0] * p[2][1] - p[1][1] * p[2][0])) / 6;
+                k = 0;
+            }
+        }
+    return v;
+}
+
+void check_volume(const Measured& m, double want, double rel = 1e-3) {
+    INFO(m.out << m.err);
+    REQUIRE(m.status == 0);
+    REQUIRE(std::isfinite(m.error));
+    CHECK(std::abs(m.volume - want) <= m.error + rel * want);
+}
+
+constexpr double pi = std::numbers::pi;
+
+}  // namespace
+
+TEST_CASE("loose DXF lines join into a closed outline, in any order and direction", "[dxf]") {
+    auto dir = test_dir("dxf_lines");
+    // A 10 x 6 rectangle, its four sides shuffled and two reversed.
+    write_file(dir / "r.dxf", dxf(line({10, 6}, {10, 0}) + line({0, 6}, {0, 0}) + line({10, 0}, {0, 0}) +
+                                  line({10, 6}, {0, 6})));
+    const std::string scad = "linear_extrude(height = 2) import(\"r.dxf\");";
+    check_volume(measure(dir, scad), 120, 1e-6);
+    if (const double ref = openscad_volume(dir, scad); std::isfinite(ref)) CHECK(ref == Approx(120).epsilon(1e-6));
+}
+
+TEST_CASE("DXF circles stay exact: a plate with a hole and a disc beside it", "[dxf]") {
+    auto dir = test_dir("dxf_circles");
+    write_file(dir / "p.dxf", dxf(lwpolyline({{0, 0}, {20, 0}, {20, 10}, {0, 10}}) + circle({5, 5}, 2) +
+                                  circle({30, 0}, 1.5) + circle({30, 0}, 0.5, "other")));
+    // The hole is even-odd inside the plate; the disc outside it is filled.
+    const double area = 200 - pi * 4 + pi * 2.25;
+    check_volume(measure(dir, "linear_extrude(height = 1) import(\"p.dxf\", layer = \"0\");"), area, 1e-6);
+    // Every layer: the small circle on "other" is a hole in the disc.
+    check_volume(measure(dir, "linear_extrude(height = 1) import(\"p.dxf\");"), area - pi * 0.25, 1e-6);
+    check_volume(measure(dir, "linear_extrude(height = 1) import(\"p.dxf\", layer = \"other\");"), pi * 0.25, 1e-6);
+    const double ref = openscad_volume(dir, "linear_extrude(height = 1) import(\"p.dxf\", $fn = 256);");
+    if (std::isfinite(ref)) CHECK(ref == Approx(area - pi * 0.25).epsilon(1e-3));
+}
+
+TEST_CASE("DXF arcs and lines make a slot, flattened within the curve tolerance", "[dxf]") {
+    auto dir = test_dir("dxf_slot");
+    // A stadium: two sides of length 8 and two half circles of radius 2.
+    write_file(dir / "s.dxf", dxf(line({0, -2}, {8, -2}) + arc({8, 0}, 2, 270, 90) + line({8, 2}, {0, 2}) +
+                                  arc({0, 0}, 2, 90, 270)));
+    const double area = 8 * 4 + pi * 4;
+    check_volume(measure(dir, "linear_extrude(height = 3) import(\"s.dxf\");"), 3 * area, 2e-3);
+    const double ref = openscad_volume(dir, "linear_extrude(height = 3) import(\"s.dxf\", $fn = 256);");
+    if (std::isfinite(ref)) CHECK(ref == Approx(3 * area).epsilon(2e-3));
+}
+
+TEST_CASE("DXF import takes origin and scale as OpenSCAD: (p - origin) * scale", "[dxf]") {
+    auto dir = test_dir("dxf_origin");
+    write_file(dir / "r.dxf", dxf(lwpolyline({{5, 5}, {8, 5}, {8, 7}, {5, 7}})));
+    const std::string scad = "linear_extrude(height = 1) import(\"r.dxf\", origin = [5, 5], scale = 2);";
+    const Measured m = measure(dir, scad);
+    check_volume(m, 24, 1e-6);
+    CHECK(m.out.find("centroid: [3, 2, 0.5]") != std::string::npos);
+    CHECK(m.out.find(", [6, 4, 1]]") != std::string::npos);  // the low corner is 0 to rounding
+    if (const double ref = openscad_volume(dir, scad); std::isfinite(ref)) CHECK(ref == Approx(24).epsilon(1e-6));
+}
+
+TEST_CASE("open DXF paths are closed with a warning, as OpenSCAD; bad files are located errors", "[dxf]") {
+    auto dir = test_dir("dxf_bad");
+    // The open chain (5,1) (6,1) (6,0) (5,0) is listed from its middle, so
+    // joining must extend it both ways before closing it: a unit square.
+    write_file(dir / "o.dxf", dxf(lwpolyline({{0, 0}, {1, 0}, {1, 1}, {0, 1}}) + line({6, 1}, {6, 0}) +
+                                  line({6, 0}, {5, 0}) + line({5, 1}, {6, 1})));
+    const std::string scad = "linear_extrude(height = 1) import(\"o.dxf\");";
+    const Measured m = measure(dir, scad);
+    check_volume(m, 2, 1e-6);
+    CHECK(m.err.find("scene.scad:1:28: warning: import: 1 open path(s) in \"o.dxf\" closed") != std::string::npos);
+    if (const double ref = openscad_volume(dir, scad); std::isfinite(ref)) CHECK(ref == Approx(2).epsilon(1e-6));
+
+    write_file(dir / "junk.dxf", "hello world\nthis is not dxf\n");
+    auto r = run_kerf("check '" + write_file(dir / "j.scad", "linear_extrude(1)\n  import(\"junk.dxf\");\n") + "'", dir);
+    CHECK(r.status == 1);
+    CHECK(r.err.find("j.scad:2:3: error: import(\"junk.dxf\"): not a readable DXF file") != std::string::npos);
+
+    r = run_kerf("check '" + write_file(dir / "n.scad", "import(\"missing.dxf\");\n") + "'", dir);
+    CHECK(r.status == 1);
+    CHECK(r.err.find("n.scad:1:1: error:") != std::string::npos);
+    CHECK(r.err.find("missing.dxf") != std::string::npos);
+}
+
+TEST_CASE("OpenSCAD's example013: four INSERTs of two BLOCKs, measured as OpenSCAD exports it", "[dxf]") {
+    const std::filesystem::path examples = "/usr/share/openscad/examples/Old";
+    if (!std::filesystem::exists(examples / "example013.dxf")) {
+        WARN("the openscad examples are not installed: skipped");
+        return;
+    }
+    auto dir = test_dir("dxf_example013");
+    std::filesystem::copy_file(examples / "example013.dxf", dir / "example013.dxf");
+    // All straight lines, so OpenSCAD's mesh is exact: `openscad -o x.stl
+    // example013.scad` has volume 61333.33 (Debian's openscad 2021.01).
+    const Measured m = measure(dir, slurp(examples / "example013.scad"));
+    check_volume(m, 61333.33, 1e-3);
+}
