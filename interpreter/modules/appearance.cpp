@@ -90,9 +90,9 @@ void read_pattern(ModuleCall& c, CurrentMaterial& cur) {
     }
     if (!(a.has(12) || a.has(13) || a.has(14))) return;
     if (cur.m.pattern == csg::Pattern::None) {
-        if (a.has(13) || a.has(14)) c.warn("material: pattern_scale and pattern_transform are ignored without a pattern");
+        if (a.has(13) || a.has(14)) c.warn("pattern_scale and pattern_transform are ignored without a pattern");
     } else if (!cur.color2_set) {
-        c.warn("material: a pattern without color2 blends color with black (give color2)");
+        c.warn("a pattern without color2 blends color with black (give color2)");
     }
 }
 
