@@ -39,6 +39,11 @@ csg::Affine compose(const csg::Affine& parent, const glm::dmat4& child) {
     return {parent.linear * l, parent.linear * t + parent.offset};
 }
 
+bool same_pattern_space(const csg::Material& a, const csg::Material& b) {
+    return a.pattern == b.pattern && a.pattern_from_material.linear == b.pattern_from_material.linear &&
+           a.pattern_from_material.offset == b.pattern_from_material.offset;
+}
+
 class TreeBuilder {
 public:
     // Leaves are written straight into the scene's vector (in creation order;
@@ -107,8 +112,11 @@ private:
         } else if (gn.kind == NodeKind::Appearance) {
             if (gn.index >= g_.materials.size())
                 throw std::invalid_argument("lower_to_csg: malformed scene graph (bad material index)");
+            // A pattern's space is that of the call that set it: an inner
+            // color() keeping the pattern keeps its space too.
+            const csg::Material& m = g_.materials[gn.index];
+            if (parent.material == kNone || !same_pattern_space(g_.materials[parent.material], m)) f.material_xf = xf;
             f.material = gn.index;  // the innermost scope wins
-            f.material_xf = xf;
         }
         return f;
     }

@@ -65,10 +65,13 @@ TEST_CASE("a pattern moves with transforms outside its material() call, not insi
     const csg::Scene moved = slab(kChecker, "translate([1, 0, 0])");
     // Moved inside: the slab moves through a fixed pattern.
     const csg::Scene through = slab(kChecker, "", "translate([1, 0, 0])");
+    // An inner color() keeps the pattern and the space of the call that set it.
+    const csg::Scene recoloured = slab(kChecker, "", "translate([1, 0, 0]) color(\"white\")");
     for (double x = -2.75; x < 3; x += 0.5) {
         INFO(x);
         CHECK(seen(moved, x, 0.5) == Approx(cell(std::floor(x - 1)) == 0 ? white : 0).margin(1e-12));
         CHECK(seen(through, x, 0.5) == Approx(cell(std::floor(x)) == 0 ? white : 0).margin(1e-12));
+        CHECK(seen(recoloured, x, 0.5) == Approx(cell(std::floor(x)) == 0 ? white : 0).margin(1e-12));
     }
     // Scaled by 2 outside: cells 2 units wide.
     const csg::Scene scaled = slab(kChecker, "scale([2, 2, 1])");
