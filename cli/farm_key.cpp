@@ -42,6 +42,7 @@ std::uint64_t scene_hash(const csg::Scene& s) {
         h.u(std::uint64_t(l.kind)), h.u(l.material), h.u(l.mesh), h.u(l.polygon);
         for (double p : l.p) h.d(p);
         h.affine(l.object_from_world), h.affine(l.world_from_object), h.m3(l.normal_to_world), h.box(l.bounds);
+        h.affine(l.material_from_world);
     }
     h.u(s.nodes.size());
     for (const csg::Node& n : s.nodes) h.u(std::uint64_t(n.op)), h.u(n.first), h.u(n.count), h.u(n.parent), h.box(n.bounds);
@@ -51,7 +52,8 @@ std::uint64_t scene_hash(const csg::Scene& s) {
     h.u(s.materials.size());
     for (const csg::Material& m : s.materials)
         h.v3(m.color), h.v3(m.interior), h.d(m.diffuse), h.d(m.specular), h.d(m.shininess), h.d(m.reflect),
-            h.d(m.transparency), h.d(m.ior), h.v3(m.absorption), h.d(m.roughness), h.v3(m.emission);
+            h.d(m.transparency), h.d(m.ior), h.v3(m.absorption), h.d(m.roughness), h.v3(m.emission),
+            h.u(std::uint64_t(m.pattern)), h.v3(m.color2), h.affine(m.pattern_from_material);
     h.u(s.meshes.size());
     for (const csg::Mesh& m : s.meshes) {
         h.u(m.points.size()), h.u(m.triangles.size()), h.u(m.solid);

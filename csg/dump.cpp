@@ -215,6 +215,11 @@ void dump(const Scene& s, std::string& out, Flush&& flush) {
         if (m.absorption != glm::dvec3(0)) field(out, "absorption", m.absorption);
         if (m.roughness != 0) field(out, "roughness", m.roughness);
         if (m.emission != glm::dvec3(0)) field(out, "emission", m.emission);
+        if (m.pattern != Pattern::None) {
+            static const char* const kNames[] = {"none", "checker", "stripes", "gradient", "noise", "marble", "wood"};
+            out += std::string(" pattern=") + kNames[static_cast<int>(m.pattern)];
+            field(out, "color2", m.color2);
+        }
         out += '\n';
     }
     for (std::size_t i = 0; i < s.meshes.size(); ++i) {

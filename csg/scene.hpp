@@ -91,6 +91,10 @@ struct Leaf {
     // Object-space normal -> world-space normal (transpose of
     // object_from_world.linear): keeps normals outward under mirrors too.
     glm::dmat3 normal_to_world{1.0};
+    // World point -> the coordinates its material() call was written in
+    // (the transforms outside that call undone), so a pattern moves with
+    // the solid it is applied to.
+    Affine material_from_world;
     Aabb bounds;                       // tight world box of the transformed primitive
 };
 
@@ -103,6 +107,11 @@ struct Node {
     std::uint32_t parent = kNone;
     Aabb bounds;               // clipped by the operation (intersection: overlap; difference: minuend)
 };
+
+// A procedural pattern blends Material::color (value 0) and color2
+// (value 1) by a value in [0, 1] that depends only on the shading point in
+// the material's pattern space (docs/language.md, "Patterns").
+enum class Pattern : std::uint8_t { None, Checker, Stripes, Gradient, Noise, Marble, Wood };
 
 struct Material {
     glm::dvec3 color{0.8, 0.8, 0.8};     // linear RGB
@@ -124,6 +133,11 @@ struct Material {
     // whose half-angle grows with roughness (0: a perfect mirror).
     double roughness = 0;
     glm::dvec3 emission{0.0};            // linear RGB radiance the surface gives off by itself
+    Pattern pattern = Pattern::None;
+    glm::dvec3 color2{0.0};              // linear RGB where the pattern's value is 1
+    // Pattern coordinates from the coordinates of the material() call:
+    // the inverse of pattern_transform, then divided by pattern_scale.
+    Affine pattern_from_material;
 };
 
 struct Mesh {

@@ -26,6 +26,7 @@ struct Frame {
     std::uint32_t next_child = 0;
     csg::Affine xf;                     // world_from_object for the children
     std::uint32_t material = kNone;     // graph material index, kNone = default
+    csg::Affine material_xf;            // world_from_object at that material's call (its pattern space)
     bool empty = false;                 // already known to be the empty solid
     std::uint32_t head = kNone, tail = kNone, count = 0;  // operands / subtrahends
     std::uint32_t minuend = kNone;
@@ -36,6 +37,11 @@ csg::Affine compose(const csg::Affine& parent, const glm::dmat4& child) {
     const glm::dmat3 l(child);
     const glm::dvec3 t(child[3]);
     return {parent.linear * l, parent.linear * t + parent.offset};
+}
+
+bool same_pattern_space(const csg::Material& a, const csg::Material& b) {
+    return a.pattern == b.pattern && a.pattern_from_material.linear == b.pattern_from_material.linear &&
+           a.pattern_from_material.offset == b.pattern_from_material.offset;
 }
 
 class TreeBuilder {
@@ -56,18 +62,18 @@ public:
     // Returns the root TNode, or kNone for the empty solid.
     std::uint32_t build() {
         if (g_.root >= g_.nodes.size()) return kNone;
-        if (g_.nodes[g_.root].kind == NodeKind::Primitive) return make_leaf(g_.root, {}, kNone);
+        if (g_.nodes[g_.root].kind == NodeKind::Primitive) return make_leaf(g_.root, Frame{});
         std::vector<Frame> stack;
-        stack.push_back(open(g_.root, {}, kNone));
+        stack.push_back(open(g_.root, Frame{}));
         for (;;) {
             Frame& f = stack.back();
             const graph::Node& gn = g_.nodes[f.gnode];
             if (f.next_child < gn.child_count) {
                 const std::uint32_t c = child(gn, f.gnode, f.next_child++);
                 if (g_.nodes[c].kind == NodeKind::Primitive) {
-                    deliver(f, make_leaf(c, f.xf, f.material));
+                    deliver(f, make_leaf(c, f));
                 } else {
-                    Frame next = open(c, f.xf, f.material);
+                    Frame next = open(c, f);
                     stack.push_back(std::move(next));
                 }
                 continue;
@@ -90,13 +96,15 @@ private:
         return g_.child_refs[ref];
     }
 
-    Frame open(std::uint32_t gnode, const csg::Affine& xf, std::uint32_t material) const {
+    Frame open(std::uint32_t gnode, const Frame& parent) const {
         const graph::Node& gn = g_.nodes[gnode];
         Frame f;
         f.gnode = gnode;
         f.kind = gn.kind;
-        f.xf = xf;
-        f.material = material;
+        f.xf = parent.xf;
+        f.material = parent.material;
+        f.material_xf = parent.material_xf;
+        const csg::Affine& xf = parent.xf;
         if (gn.kind == NodeKind::Transform) {
             if (gn.index >= g_.matrices.size())
                 throw std::invalid_argument("lower_to_csg: malformed scene graph (bad matrix index)");
@@ -104,12 +112,18 @@ private:
         } else if (gn.kind == NodeKind::Appearance) {
             if (gn.index >= g_.materials.size())
                 throw std::invalid_argument("lower_to_csg: malformed scene graph (bad material index)");
+            // A pattern's space is that of the call that set it: an inner
+            // color() keeping the pattern keeps its space too.
+            const csg::Material& m = g_.materials[gn.index];
+            if (parent.material == kNone || !same_pattern_space(g_.materials[parent.material], m)) f.material_xf = xf;
             f.material = gn.index;  // the innermost scope wins
         }
         return f;
     }
 
-    std::uint32_t make_leaf(std::uint32_t gnode, const csg::Affine& xf, std::uint32_t material) {
+    std::uint32_t make_leaf(std::uint32_t gnode, const Frame& parent) {
+        const csg::Affine& xf = parent.xf;
+        const std::uint32_t material = parent.material;
         const graph::Node& gn = g_.nodes[gnode];
         csg::Leaf& leaf = leaves.emplace_back();
         leaf.kind = gn.prim;
@@ -136,6 +150,10 @@ private:
             }
         }
         place_leaf(leaf, xf, points, gn.loc, section);
+        // Only a patterned material reads its call's space; the inverse is
+        // regular because the leaf's own transform (which it is a factor of) is.
+        if (material != kNone && g_.materials[material].pattern != csg::Pattern::None)
+            leaf.material_from_world = invert(parent.material_xf);
         if (leaf.bounds.empty()) {  // e.g. a mesh without points
             leaves.pop_back();
             return kNone;

@@ -42,19 +42,25 @@ std::string format_range(double x) {
 
 }  // namespace
 
+csg::Affine invert(const csg::Affine& a) {
+    // Inverting the rescaled matrix keeps the determinant from under- or
+    // overflowing for very small or very large (but regular) maps.
+    double size = 0;
+    for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r) size = std::max(size, std::abs(a.linear[c][r]));
+    csg::Affine inv;
+    inv.linear = glm::inverse(a.linear / size) / size;
+    inv.offset = -(inv.linear * a.offset);
+    return inv;
+}
+
 void place_leaf(csg::Leaf& leaf, const csg::Affine& wfo, const std::vector<glm::dvec3>* mesh_points,
                 const SourceLoc& loc, const csg::Polygon2* lathe_section) {
     if (!all_finite(wfo)) throw SourceError(loc, "the transforms around this primitive are not finite");
     if (!(volume_ratio(wfo.linear) > 1e-12))
         throw SourceError(loc, "the transforms around this primitive are singular (they flatten it to zero volume)");
     leaf.world_from_object = wfo;
-    // Inverting the rescaled matrix keeps the determinant from under- or
-    // overflowing for very small or very large (but regular) maps.
-    double size = 0;
-    for (int c = 0; c < 3; ++c)
-        for (int r = 0; r < 3; ++r) size = std::max(size, std::abs(wfo.linear[c][r]));
-    leaf.object_from_world.linear = glm::inverse(wfo.linear / size) / size;
-    leaf.object_from_world.offset = -(leaf.object_from_world.linear * wfo.offset);
+    leaf.object_from_world = invert(wfo);
     if (!all_finite(leaf.object_from_world))
         throw SourceError(loc, "the transforms around this primitive cannot be inverted");
     // Normals map by the inverse transpose, which keeps them outward under

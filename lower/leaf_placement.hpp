@@ -18,6 +18,10 @@ void place_leaf(csg::Leaf& leaf, const csg::Affine& world_from_object,
                 const std::vector<glm::dvec3>* mesh_points, const SourceLoc& loc,
                 const csg::Polygon2* lathe_section = nullptr);
 
+// The inverse of a regular affine map (rescaled first, so a tiny or huge
+// but regular map does not under- or overflow its determinant).
+csg::Affine invert(const csg::Affine& a);
+
 // The vertices of a prism's section on both caps (parameters p: the top one scaled by 1 + p[2]).
 std::vector<glm::dvec3> prism_corners(const csg::Polygon2& poly, const double* p);
 

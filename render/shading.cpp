@@ -6,6 +6,7 @@
 
 #include "render/lights.hpp"
 #include "render/optics.hpp"
+#include "render/patterns.hpp"
 
 namespace kerf::render {
 
@@ -127,7 +128,9 @@ glm::dvec3 Shader::radiance(const TraceRay& ray, int depth, ThreadState& ts, std
     glm::dvec3 n = tracer_.normal(hit, p);
     if (glm::dot(n, ray.d) > 0) n = -n;  // grazing round-off: light the side we see
     const csg::Material& m = material_of(hit.surface.mat_leaf);
-    const glm::dvec3 albedo = hit.surface.cut ? m.interior : m.color;
+    // A cut face shows the solid's interior colour, unpatterned.
+    const glm::dvec3 albedo =
+        hit.surface.cut ? m.interior : pattern_color(m, scene_.leaves[hit.surface.mat_leaf].material_from_world, p);
     const double off = tracer_.surface_offset(hit, p);
     const glm::dvec3 origin = p + off * n;
     const glm::dvec3 view = -glm::normalize(ray.d);

@@ -47,6 +47,55 @@ glm::dvec3 emission(const Args& a, std::size_t i, const CurrentMaterial& cur) {
     return glm::dvec3(arg_color(a, i, "emission"));
 }
 
+struct PatternName {
+    const char* name;
+    csg::Pattern pattern;
+};
+constexpr PatternName kPatterns[] = {{"none", csg::Pattern::None},         {"checker", csg::Pattern::Checker},
+                                     {"stripes", csg::Pattern::Stripes},   {"gradient", csg::Pattern::Gradient},
+                                     {"noise", csg::Pattern::Noise},       {"marble", csg::Pattern::Marble},
+                                     {"wood", csg::Pattern::Wood}};
+
+csg::Pattern pattern_kind(const Args& a, std::size_t i, csg::Pattern fallback) {
+    if (!a.has(i)) return fallback;
+    std::string names;
+    for (const PatternName& p : kPatterns) {
+        if (a[i].is_string() && a[i].as_string() == p.name) return p.pattern;
+        names += std::string(names.empty() ? "" : ", ") + '"' + p.name + '"';
+    }
+    if (!a[i].is_string()) arg_error(a, "pattern must be a string, one of " + names);
+    arg_error(a, "unknown pattern \"" + a[i].as_string() + "\" (one of " + names + ")");
+}
+
+// pattern, color2, pattern_scale, pattern_transform (docs/language.md,
+// "Patterns"). The pattern's coordinates are those of this call, mapped by
+// the inverse of pattern_transform and then divided by pattern_scale, so a
+// larger scale or a scaling transform makes the cells larger.
+void read_pattern(ModuleCall& c, CurrentMaterial& cur) {
+    const Args& a = c.args;
+    cur.m.pattern = pattern_kind(a, 12, cur.m.pattern);
+    if (a.has(11)) {
+        cur.m.color2 = glm::dvec3(arg_color(a, 11, "color2"));
+        cur.color2_set = true;
+    }
+    if (a.has(13) || a.has(14)) {
+        const double scale = arg_number(a, 13, "pattern_scale", 1);
+        if (!(scale > 0)) arg_error(a, "pattern_scale must be positive, got " + format_number(scale));
+        const glm::dmat4 m = a.has(14) ? arg_matrix(a, 14, "pattern_transform") : glm::dmat4(1.0);
+        const glm::dmat3 l(m);
+        if (!(std::abs(glm::determinant(l)) > 1e-300)) arg_error(a, "pattern_transform must be invertible");
+        // A new scale or transform replaces the enclosing material's.
+        const glm::dmat3 inv = glm::inverse(l) / scale;
+        cur.m.pattern_from_material = csg::Affine{inv, -(inv * glm::dvec3(m[3]))};
+    }
+    if (!(a.has(12) || a.has(13) || a.has(14))) return;
+    if (cur.m.pattern == csg::Pattern::None) {
+        if (a.has(13) || a.has(14)) c.warn("pattern_scale and pattern_transform are ignored without a pattern");
+    } else if (!cur.color2_set) {
+        c.warn("a pattern without color2 blends color with black (give color2)");
+    }
+}
+
 CurrentMaterial enclosing(ModuleCall& c) {
     auto& stack = c.state().materials;
     return stack.empty() ? CurrentMaterial{} : stack.back();
@@ -100,13 +149,14 @@ void material(ModuleCall& c) {
     cur.m.absorption = absorption(a, 8, cur.m.absorption);
     cur.m.roughness = unit_interval(a, 9, "roughness", cur.m.roughness);
     cur.m.emission = emission(a, 10, cur);
+    read_pattern(c, cur);
     appear(c, cur);
 }
 
 const ModuleEntry kAppearance[] = {
     {"color", ModuleKind::Operation, {"c", "alpha"}, color},
     {"material", ModuleKind::Operation, {"color", "interior", "diffuse", "specular", "shininess", "reflect", "transparency", "ior", "absorption",
-      "roughness", "emission"},
+      "roughness", "emission", "color2", "pattern", "pattern_scale", "pattern_transform"},
      material},
 };
 

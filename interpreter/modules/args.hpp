@@ -26,5 +26,8 @@ glm::dvec3 arg_vec3(const Args& a, std::size_t i, const char* name, glm::dvec3 f
                     double z2 = 0);
 // [r,g,b], [r,g,b,a], a CSS name or "#rgb[a]"/"#rrggbb[aa]": rgba in [0,1].
 glm::dvec4 arg_color(const Args& a, std::size_t i, const char* name);
+// A 4x4 or 3x4 affine matrix of finite numbers, rows first (multmatrix's m);
+// a 4x4 one must end in the row [0, 0, 0, 1].
+glm::dmat4 arg_matrix(const Args& a, std::size_t i, const char* name);
 
 }  // namespace kerf::eval

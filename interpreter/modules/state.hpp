@@ -19,6 +19,7 @@ struct ModuleState {
     struct CurrentMaterial {
         csg::Material m;
         bool interior_set = false;
+        bool color2_set = false;  // else a pattern blends with black, with a warning
     };
     std::vector<CurrentMaterial> materials;
     const SourceLoc* camera_loc = nullptr;

@@ -143,21 +143,7 @@ void mirror(ModuleCall& c) {
 void multmatrix(ModuleCall& c) {
     const Args& a = c.args;
     if (!a.has(0)) arg_error(a, "m is required");
-    const Value& v = a[0];
-    bool ok = v.is_list() && (v.as_list().size() == 3 || v.as_list().size() == 4);
-    if (ok)
-        for (const Value& row : v.as_list()) ok = ok && row.is_vector(4);
-    if (!ok) arg_error(a, "m must be a 4x4 or 3x4 matrix of numbers");
-    const ValueList& rows = v.as_list();
-    glm::dmat4 m(1.0);
-    for (int r = 0; r < static_cast<int>(rows.size()); ++r)
-        for (int col = 0; col < 4; ++col) {
-            double x = rows[r].as_list()[col].as_number();
-            if (!std::isfinite(x)) arg_error(a, "m must be finite");
-            m[col][r] = x;
-        }
-    if (rows.size() == 4 && (m[0][3] != 0 || m[1][3] != 0 || m[2][3] != 0 || m[3][3] != 1))
-        arg_error(a, "the last row must be [0, 0, 0, 1] (only affine transforms are supported)");
+    glm::dmat4 m = arg_matrix(a, 0, "m");
     transformed(c, m);
 }
 

@@ -1,0 +1,34 @@
+// Procedural patterns (docs/language.md, "Patterns"): a value in [0, 1] at a
+// point of pattern space, a pure function of the point (no seed, no state),
+// so a picture is the same for any thread count. The shader blends a
+// material's color (0) and color2 (1) by it.
+#pragma once
+#include <glm/glm.hpp>
+
+#include "csg/scene.hpp"
+
+namespace kerf::render {
+
+// checker: (⌊x⌋ + ⌊y⌋ + ⌊z⌋) mod 2 — unit cubes, the one holding (0.5, 0.5, 0.5) is 0.
+// stripes: ⌊x⌋ mod 2 — slabs one unit thick across x, period 2.
+// gradient: x − ⌊x⌋ — a ramp from 0 to 1 across each unit of x.
+// The floors are taken at x + 1e-6 so a face lying on a cell boundary
+// (a ground plane at z = 0) falls in one cell instead of speckling.
+// noise: smooth lattice value noise, four octaves (a convex mix, so in [0, 1]).
+// marble: ½ + ½·sin(π·(x + 4·noise)) — veins across x, bent by the noise.
+// wood: rings about the z axis, √(x² + y²) + ½·noise, fractional part.
+double pattern_value(csg::Pattern pattern, const glm::dvec3& q);
+
+// The value noise alone (lattice values hashed from integer coordinates,
+// blended by quintic fades): one octave, in [0, 1].
+double lattice_noise(const glm::dvec3& q);
+
+// The material's colour at world point p on a solid whose leaf maps world to
+// its material() call's coordinates by material_from_world.
+inline glm::dvec3 pattern_color(const csg::Material& m, const csg::Affine& material_from_world, const glm::dvec3& p) {
+    if (m.pattern == csg::Pattern::None) return m.color;
+    const double v = pattern_value(m.pattern, m.pattern_from_material.point(material_from_world.point(p)));
+    return m.color + v * (m.color2 - m.color);
+}
+
+}  // namespace kerf::render
