@@ -196,6 +196,7 @@ private:
     GraphBuilder out_;
     Scope root_;  // PI and other constants; parent of every file's scope
     std::vector<DynVar> dyn_;
+    std::vector<std::string_view> module_stack_;  // user module calls, outermost first (parent_module)
     std::uint64_t depth_ = 0, steps_ = 0, iterations_ = 0;
 
     std::unordered_map<const void*, BlockInfo> blocks_;
