@@ -235,7 +235,7 @@ Value Evaluator::call_builtin(const ast::Expr& e, Scope& s) {
         if (!a.name.empty()) check_builtin_name(*fn, a, i, e.args.size());
         argv[i] = a.value ? eval(*a.value, s) : Value();
     }
-    BuiltinContext ctx{e.loc, opt_.limits.list_elements, module_stack_};
+    BuiltinContext ctx{e.loc, opt_.limits.list_elements, module_stack_, lenient_};
     if (!lenient_) return fn->fn(std::span<const Value>(argv, e.args.size()), ctx);
     try {
         return fn->fn(std::span<const Value>(argv, e.args.size()), ctx);

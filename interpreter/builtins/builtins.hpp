@@ -23,6 +23,8 @@ struct BuiltinContext {
                                           // "list size limit N exceeded"
     std::span<const std::string_view> modules = {};  // user module calls,
                                           // outermost first (parent_module)
+    bool lenient = false;                 // the OpenSCAD dialect (where a
+                                          // builtin's result differs)
 };
 
 using BuiltinFn = Value (*)(std::span<const Value> args, const BuiltinContext& ctx);
