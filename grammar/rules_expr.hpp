@@ -28,7 +28,9 @@ struct arg : pg::sor<named_arg, positional_arg> {};
 // OpenSCAD skips an empty argument or list element (`f(1,,2)`, `[8,,"E"]`).
 struct empty_item : pg::seq<openscad_on, pg::at<pg::one<','>>> {};
 struct arg_next : pg::sor<pg::at<rparen>, arg, empty_item> {};
-struct call_args : nest<args_open, pg::opt<arg, pg::star<pg::if_must<comma, arg_next>>>, pg::must<rparen>> {};
+// The first argument may be empty too (`max(, 3)`, `cube(, center = true)`).
+struct arg_first : pg::sor<arg, empty_item> {};
+struct call_args : nest<args_open, pg::opt<arg_first, pg::star<pg::if_must<comma, arg_next>>>, pg::must<rparen>> {};
 
 // `(i = r, j = s)`: bindings that must be named (for, let).
 struct binding_name : name {};

@@ -76,6 +76,11 @@ Value Evaluator::lookup(const ast::Expr& e, Scope& s) {
         if (name == "$fa") return Value(12);
         if (name == "$fs") return Value(2);
         if (name == "$preview") return Value(false);
+        // The viewport, as OpenSCAD 2021 has it when run from the command
+        // line (`openscad -o x.echo`): read only; kerf's camera is its own.
+        if (name == "$vpr" || name == "$vpt") return Value::list(ValueList{Value(0), Value(0), Value(0)});
+        if (name == "$vpd") return Value(500);
+        if (name == "$vpf") return Value(22.5);
         if (lenient_) return unknown_variable(e);
         throw SourceError(e.loc, "undefined name '" + e.text + "'" + did_you_mean(e.text, s, NameKind::Variable));
     }
@@ -230,7 +235,7 @@ Value Evaluator::call_builtin(const ast::Expr& e, Scope& s) {
         if (!a.name.empty()) check_builtin_name(*fn, a, i, e.args.size());
         argv[i] = a.value ? eval(*a.value, s) : Value();
     }
-    BuiltinContext ctx{e.loc, opt_.limits.list_elements};
+    BuiltinContext ctx{e.loc, opt_.limits.list_elements, module_stack_, lenient_};
     if (!lenient_) return fn->fn(std::span<const Value>(argv, e.args.size()), ctx);
     try {
         return fn->fn(std::span<const Value>(argv, e.args.size()), ctx);

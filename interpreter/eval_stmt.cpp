@@ -304,6 +304,14 @@ void Evaluator::call_module(const ast::Stmt& def, Scope& def_scope, const ast::S
     callee.module = &frame;
     traced([&] {
         bind_params(def.params, call.args, def.name, s, callee, call.loc);
+        // OpenSCAD's module stack: user modules only, and children() run
+        // with it unchanged (their modules see the one that passed them on).
+        module_stack_.push_back(def.name);
+        struct PopModule {
+            std::vector<std::string_view>& m;
+            ~PopModule() { m.pop_back(); }
+        } pop{module_stack_};
+        bind(callee, "$parent_modules", Value(static_cast<double>(module_stack_.size())), nullptr);
         std::size_t mark = out_.mark();
         eval_block(def.body, callee, false);
         out_.group(mark, call.loc);

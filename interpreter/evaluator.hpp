@@ -80,6 +80,7 @@ struct Args {
     std::vector<Value> values;
     std::vector<bool> given;
     double fn = 0;  // a $fn given in the call itself (docs/openscad.md, "Facets")
+    bool facet_args = false;  // a $fn, $fa or $fs given in the call
 
     bool has(std::size_t i) const { return given[i]; }
     const Value& operator[](std::size_t i) const { return values[i]; }
@@ -96,6 +97,9 @@ public:
     // place and message, with a count when met again (a loop).
     void warn(const SourceLoc& loc, std::string message);
     std::vector<Diagnostic> take_warnings() { return std::move(warnings_); }
+    // A curve made exact although $fn/$fa/$fs asked for facets (a call's
+    // own, or set around it): counted, one warning at the end of the run.
+    void exact_curve(const Args& a, const SourceLoc& loc);
     // Top-level statements fail independently: each error is kept and the
     // run goes on with the next statement, up to kMaxErrors; run() then
     // throws the first with all of them (SourceError::reported).
@@ -196,6 +200,7 @@ private:
     GraphBuilder out_;
     Scope root_;  // PI and other constants; parent of every file's scope
     std::vector<DynVar> dyn_;
+    std::vector<std::string_view> module_stack_;  // user module calls, outermost first (parent_module)
     std::uint64_t depth_ = 0, steps_ = 0, iterations_ = 0;
 
     std::unordered_map<const void*, BlockInfo> blocks_;
@@ -216,6 +221,8 @@ private:
     ModuleState modules_;              // what built-in modules remember
     std::vector<Diagnostic> warnings_;
     std::int64_t root_override_ = -1;  // the first `!` subtree
+    std::uint64_t exact_curves_ = 0;   // exact_curve(): how many, and the first
+    SourceLoc first_exact_curve_{};
 
     std::vector<Diagnostic> errors_;
     void record_error(const SourceError& e);  // throws once kMaxErrors are kept

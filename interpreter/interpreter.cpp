@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <exception>
 #include <functional>
+#include <utility>
 
 #include "interpreter/evaluator.hpp"
 
@@ -87,6 +88,10 @@ graph::SceneGraph Evaluator::run(ast::Program program) {
     } catch (const RunLimitError& e) {
         record_error(e);
     }
+    if (exact_curves_)
+        warn(first_exact_curve_, "$fn, $fa and $fs are ignored on " + std::to_string(exact_curves_) +
+                                     (exact_curves_ == 1 ? " curved shape" : " curved shapes") +
+                                     " (the first here): kerf renders curves exact");
     if (!errors_.empty()) throw_errors();
     SourceLoc top{prog.file, 1, 1};
     if (root_override_ >= 0) {
@@ -148,6 +153,20 @@ std::vector<Diagnostic> Evaluator::call_notes() const {
         notes.push_back(std::move(outermost));
     }
     return notes;
+}
+
+void Evaluator::exact_curve(const Args& a, const SourceLoc& loc) {
+    // The innermost binding of each name counts; OpenSCAD's defaults ask
+    // for nothing kerf ignores.
+    bool fn = false, fa = false, fs = false, set = a.facet_args;
+    for (auto it = dyn_.rbegin(); it != dyn_.rend() && !set; ++it) {
+        const double v = it->value.is_number() ? it->value.as_number() : 0;
+        if (it->name == "$fn" && !std::exchange(fn, true)) set = v != 0;
+        else if (it->name == "$fa" && !std::exchange(fa, true)) set = v != 12;
+        else if (it->name == "$fs" && !std::exchange(fs, true)) set = v != 2;
+    }
+    if (!set) return;
+    if (exact_curves_++ == 0) first_exact_curve_ = loc;
 }
 
 void Evaluator::warn(const SourceLoc& loc, std::string message) {

@@ -21,6 +21,10 @@ struct BuiltinContext {
     std::uint64_t max_list_elements;      // EvalLimits::list_elements: a result
                                           // list longer than this is an error
                                           // "list size limit N exceeded"
+    std::span<const std::string_view> modules = {};  // user module calls,
+                                          // outermost first (parent_module)
+    bool lenient = false;                 // the OpenSCAD dialect (where a
+                                          // builtin's result differs)
 };
 
 using BuiltinFn = Value (*)(std::span<const Value> args, const BuiltinContext& ctx);

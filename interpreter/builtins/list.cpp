@@ -15,12 +15,14 @@ std::size_t utf8_length(const std::string& s) {
     return n;
 }
 
-// len of a list, a string (characters) or a range (its element count).
+// len of a list, a string (characters) or a range (its element count; in
+// OpenSCAD 2021 a range's len is undef with its warning).
 Value len_fn(std::span<const Value> args, const BuiltinContext& ctx) {
     expect_count(args, ctx, "len", 1);
     const Value& v = args[0];
     if (v.is_list()) return Value(static_cast<double>(v.as_list().size()));
     if (v.is_string()) return Value(static_cast<double>(utf8_length(v.as_string())));
+    if (v.is_range() && ctx.lenient) fail(ctx, "len() parameter could not be converted");
     if (v.is_range()) return Value(static_cast<double>(v.as_range().size()));
     fail(ctx, "len: expected a list or a string, got " + describe(v));
 }

@@ -1,12 +1,13 @@
 // The rest of OpenSCAD 2021.01's built-in functions (docs/openscad.md
 // "Built-in functions"): version, version_num, rands, lookup, search, chr,
-// ord, is_function. Their results follow OpenSCAD's implementation case by
+// ord, is_function, parent_module. Their results follow OpenSCAD's implementation case by
 // case (checked against `openscad -o out.echo`); a wrong call is a
 // SoftError, with OpenSCAD's warning text where it has one.
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <functional>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -249,6 +250,25 @@ Value is_function_fn(std::span<const Value> args, const BuiltinContext& ctx) {
     return Value(args[0].is_function());
 }
 
+// parent_module(n): the name of the user module n calls out from the one
+// running (0 is itself; no argument is 1). OpenSCAD truncates n to an int
+// (a value outside int is INT_MIN, as its x86 build converts it); a
+// non-number is undef without a warning.
+Value parent_module_fn(std::span<const Value> args, const BuiltinContext& ctx) {
+    if (args.size() > 1) fail(ctx, "parent_module() number of parameters does not match");
+    double d = 1;
+    if (!args.empty()) {
+        if (!args[0].is_number()) return Value();
+        d = args[0].as_number();
+    }
+    constexpr double lo = std::numeric_limits<int>::min(), hi = std::numeric_limits<int>::max();
+    const long long n = d > lo - 1 && d < hi + 1.0 ? static_cast<long long>(d) : static_cast<long long>(lo);
+    if (n < 0) fail(ctx, "Negative parent module index (" + std::to_string(n) + ") not allowed");
+    if (static_cast<unsigned long long>(n) >= ctx.modules.size())
+        fail(ctx, "Parent module index (" + std::to_string(n) + ") greater than the number of modules on the stack");
+    return Value::string(std::string(ctx.modules[ctx.modules.size() - 1 - static_cast<std::size_t>(n)]));
+}
+
 const Entry kEntries[] = {
     {"version", "", version_fn},
     {"version_num", "", version_num_fn},
@@ -258,6 +278,7 @@ const Entry kEntries[] = {
     {"chr", "...", chr_fn},
     {"ord", "string", ord_fn},
     {"is_function", "x", is_function_fn},
+    {"parent_module", "n", parent_module_fn},
 };
 
 }  // namespace

@@ -121,6 +121,8 @@ void appear(ModuleCall& c, const CurrentMaterial& cur) {
 void color(ModuleCall& c) {
     const Args& a = c.args;
     CurrentMaterial cur = enclosing(c);
+    // OpenSCAD 2021: `color()` leaves its children as they are, silently.
+    if (!a.has(0) && !a.has(1) && c.lenient()) return appear(c, cur);
     if (!a.has(0)) arg_error(a, "c is required");
     glm::dvec4 col = arg_color(a, 0, "c");
     if (a.has(1)) col.a = unit_interval(a, 1, "alpha", 1);

@@ -38,6 +38,8 @@ public:
     // A warning at the statement (Evaluator::warn).
     void warn(std::string message);
     bool lenient() const { return ev_.lenient(); }  // the OpenSCAD dialect
+    // This call's curve is exact: counted for the one warning if facets were asked for.
+    void exact_curve() { ev_.exact_curve(args, st.loc); }
     // An operation on 2D shapes: its children pending[mark..] taken off the
     // stack, the 2D ones returned. A 3D child is an error in .sdl and
     // ignored with a warning in .scad, as OpenSCAD does; `verb` says what

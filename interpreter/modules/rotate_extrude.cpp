@@ -153,6 +153,7 @@ void cut_wedge(GraphBuilder& g, std::size_t mark, double from, double angle, con
 
 void rotate_extrude(ModuleCall& c) {
     const Args& a = c.args;
+    c.exact_curve();  // revolved exactly, not in $fn steps
     static constexpr const char* kDxf[] = {"file", "layer", "origin", "scale"};
     for (std::size_t i = 0; i < 4; ++i) {
         if (!a.has(i)) continue;

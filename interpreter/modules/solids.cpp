@@ -52,6 +52,7 @@ void sphere(ModuleCall& c) {
     if (!(r > 0)) arg_error(a, "radius must be positive, got " + format_number(r));
     if (honoured_facets(c))  // OpenSCAD's rings of facets are not built: say so, the sphere is round
         c.warn("$fn = " + format_number(c.args.fn) + " is not honoured on a sphere; the sphere is exact");
+    else c.exact_curve();
     c.add_primitive(P::Sphere, {r});
 }
 
@@ -109,6 +110,7 @@ void cylinder(ModuleCall& c) {
         return;
     }
     if (n) c.warn("$fn = " + format_number(c.args.fn) + " is not honoured on a cone's tip; the cone is exact");
+    else c.exact_curve();
     frustum(c, h, r1, r2, center);
 }
 

@@ -27,6 +27,8 @@ Args match_args(Evaluator& ev, const ModuleEntry& e, const ast::Stmt& st, Scope&
             i = positional++;
         } else {
             if (b.name[0] == '$') {  // $fa, $fs...: accepted and ignored; $fn read by circle and cylinder
+                const bool facet = b.name == "$fn" || b.name == "$fa" || b.name == "$fs";
+                a.facet_args = a.facet_args || facet;
                 if (b.name == "$fn" && b.value) {
                     const Value v = ev.eval(*b.value, s);
                     if (v.is_number()) a.fn = v.as_number();

@@ -1,0 +1,13 @@
+// Facet settings kerf does not honour (all but an explicit $fn from 3 to 12
+// on a circle or cylinder, facets.scad) give one warning for the whole run,
+// at the first such shape, with the count; OpenSCAD's defaults ask nothing.
+$fa = 12;
+$fs = 2;
+sphere(1);
+cylinder(h = 1, r = 2, $fn = 6);
+translate([5, 0, 0]) cylinder(h = 1, r = 1, $fs = 0.5);
+module m() sphere(2);
+m($fn = 64);
+for (i = [1:2]) translate([0, 5 * i, 0]) sphere(1, $fn = 30);
+rotate_extrude($fn = 100) translate([3, 0]) circle(1, $fn = 40);
+// warning: 8:22: $fn, $fa and $fs are ignored on 6 curved shapes (the first here): kerf renders curves exact
