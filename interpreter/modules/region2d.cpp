@@ -32,12 +32,8 @@ std::vector<std::vector<glm::dvec2>> outline(const graph::SceneGraph& g, const g
             last = q, open = true;
         }
     } else if (n.prim == P::Cylinder) {
-        const int segments = circle_segments(tol);
         out.emplace_back();
-        for (int i = 0; i < segments; ++i) {
-            const double t = 2 * std::numbers::pi * i / segments;
-            out.back().push_back(apply(a, n.p[2] * glm::dvec2(std::cos(t), std::sin(t))));
-        }
+        circle_chords(n.p[2], tol, [&](glm::dvec2 p, glm::dvec2) { out.back().push_back(apply(a, p)); });
     } else {
         throw SourceError(n.loc, "this shape has no 2D outline");
     }
