@@ -42,8 +42,10 @@ std::uint64_t scene_hash(const csg::Scene& s) {
         h.u(std::uint64_t(l.kind)), h.u(l.material), h.u(l.mesh), h.u(l.polygon);
         for (double p : l.p) h.d(p);
         h.affine(l.object_from_world), h.affine(l.world_from_object), h.m3(l.normal_to_world), h.box(l.bounds);
-        h.affine(l.material_from_world);
+        h.u(l.material_frame);
     }
+    h.u(s.material_frames.size());
+    for (const csg::Affine& f : s.material_frames) h.affine(f);
     h.u(s.nodes.size());
     for (const csg::Node& n : s.nodes) h.u(std::uint64_t(n.op)), h.u(n.first), h.u(n.count), h.u(n.parent), h.box(n.bounds);
     h.u(s.children.size());

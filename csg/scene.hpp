@@ -85,16 +85,19 @@ struct Leaf {
     std::uint32_t mesh = kNone;        // Mesh only
     std::uint32_t polygon = kNone;     // Prism and Lathe only: into Scene::polygons
     std::uint32_t source = kNone;      // into Scene::sources
+    // Into Scene::material_frames: world point -> the coordinates its
+    // material() call was written in (the transforms outside that call
+    // undone), so a pattern moves with the solid it is applied to. A table,
+    // not a field: most leaves share one frame (0, the identity, for every
+    // unpatterned leaf), and 96 bytes a leaf was a tenth of a 10^6-sphere
+    // render's memory (docs/performance.md, "Memory").
+    std::uint32_t material_frame = 0;
     double p[6] = {0, 0, 0, 0, 0, 0};  // shape parameters, object space
     Affine object_from_world;          // world point -> object point
     Affine world_from_object;          // its inverse
     // Object-space normal -> world-space normal (transpose of
     // object_from_world.linear): keeps normals outward under mirrors too.
     glm::dmat3 normal_to_world{1.0};
-    // World point -> the coordinates its material() call was written in
-    // (the transforms outside that call undone), so a pattern moves with
-    // the solid it is applied to.
-    Affine material_from_world;
     Aabb bounds;                       // tight world box of the transformed primitive
 };
 
@@ -186,6 +189,7 @@ struct Scene {
     std::uint32_t root = kNone;           // kNone: the scene has no solid at all
 
     std::vector<Material> materials;      // at least one (the default light grey)
+    std::vector<Affine> material_frames{Affine{}};  // Leaf::material_frame; 0 = the identity, each frame once
     std::vector<Mesh> meshes;
     std::vector<Polygon2> polygons;       // Prism and Lathe leaves' sections, each stored once
     Camera camera;                        // always resolved (docs/spec.md §6 defaults applied)

@@ -12,6 +12,7 @@ struct LeafBits {
     double linear[9];
     double offset[3];
     std::uint32_t material, mesh, polygon, kind;
+    std::uint32_t frame;  // the pattern's frame: the same sphere in another pattern frame looks different
 };
 
 LeafBits bits(const csg::Leaf& l) {
@@ -25,6 +26,7 @@ LeafBits bits(const csg::Leaf& l) {
     b.mesh = l.mesh;
     b.polygon = l.polygon;  // prisms: the section
     b.kind = std::uint32_t(l.kind);
+    b.frame = l.material_frame;  // equal indices iff equal frames (lower/material_frames.hpp)
     return b;
 }
 

@@ -8,6 +8,7 @@
 #include "csg/huge_pages.hpp"
 #include "lower/duplicate_leaves.hpp"
 #include "lower/leaf_placement.hpp"
+#include "lower/material_frames.hpp"
 #include "lower/primitive_bounds.hpp"
 
 namespace kerf::lowering {
@@ -58,6 +59,7 @@ public:
 
     std::vector<TNode> nodes;
     std::vector<csg::Leaf>& leaves;  // material/mesh/source hold graph indices until emit
+    MaterialFrames frames;           // the leaves' material_frame indices point here
 
     // Returns the root TNode, or kNone for the empty solid.
     std::uint32_t build() {
@@ -153,7 +155,7 @@ private:
         // Only a patterned material reads its call's space; the inverse is
         // regular because the leaf's own transform (which it is a factor of) is.
         if (material != kNone && g_.materials[material].pattern != csg::Pattern::None)
-            leaf.material_from_world = invert(parent.material_xf);
+            leaf.material_frame = frames.frame_of_call(parent.material_xf);
         if (leaf.bounds.empty()) {  // e.g. a mesh without points
             leaves.pop_back();
             return kNone;
@@ -383,6 +385,7 @@ FlatTree build_flat_tree(const graph::SceneGraph& graph, std::vector<csg::Leaf>&
     FlatTree tree;
     tree.root = builder.build();
     tree.nodes = std::move(builder.nodes);
+    tree.material_frames = std::move(builder.frames.frames);
     return tree;
 }
 

@@ -28,17 +28,20 @@ struct TNode {
 struct FlatTree {
     std::vector<TNode> nodes;
     std::uint32_t root = csg::kNone;  // kNone: the empty solid
+    std::vector<csg::Affine> material_frames;  // the leaves' material_frame table (0: identity)
 };
 
 // Flattens and prunes the graph. Leaves are appended to `leaves` in creation
-// order with their world matrices and boxes set, while material, mesh and
-// source still hold graph indices (material kNone = default, source = the
+// order with their world matrices and boxes set, while material, mesh,
+// material_frame (into FlatTree::material_frames) and source still hold the
+// builder's indices (material kNone = default, source = the
 // graph node). Throws SourceError for singular transforms.
 FlatTree build_flat_tree(const graph::SceneGraph& graph, std::vector<csg::Leaf>& leaves);
 
 // Writes nodes/children in pre-order into `scene` (whose `leaves` are the
 // ones build_flat_tree filled), keeps only the leaves the tree uses, and
-// resolves materials, meshes and sources into the scene's tables. Throws
+// resolves materials, material frames, meshes and sources into the scene's
+// tables. Throws
 // SourceError at the first node deeper than csg::kMaxDepth.
 void emit_flat_tree(const graph::SceneGraph& graph, const FlatTree& tree, csg::Scene& scene);
 

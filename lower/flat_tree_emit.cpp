@@ -1,6 +1,6 @@
 // emit_flat_tree: the flat tree into csg::Scene arrays (pre-order, contiguous
 // child runs), plus the tables only surviving leaves need: materials,
-// meshes (converted once each), files and source locations.
+// material frames, meshes (converted once each), files and source locations.
 #include <string>
 #include <unordered_map>
 
@@ -23,6 +23,8 @@ public:
     void emit(std::uint32_t root) {
         s_.materials.push_back(csg::Material{});  // 0: the default light grey
         material_map_.assign(g_.materials.size(), kNone);
+        frame_map_.assign(t_.material_frames.size(), kNone);
+        frame_map_[0] = 0;  // the identity: the scene's frame 0 too
         mesh_map_.assign(g_.meshes.size(), kNone);
         polygon_map_.assign(g_.polygons.size(), kNone);
         if (root != kNone) {
@@ -103,7 +105,7 @@ private:
     const graph::SceneGraph& g_;
     const FlatTree& t_;
     csg::Scene& s_;
-    std::vector<std::uint32_t> material_map_, mesh_map_, polygon_map_;
+    std::vector<std::uint32_t> material_map_, frame_map_, mesh_map_, polygon_map_;
     std::unordered_map<const SourceFile*, std::uint32_t> file_by_ptr_;
     std::unordered_map<std::string, std::uint32_t> file_by_path_;
     struct SourceKey {
@@ -121,6 +123,7 @@ private:
 
     void resolve(csg::Leaf& leaf) {
         leaf.material = material(leaf.material);
+        leaf.material_frame = frame(leaf.material_frame);
         if (leaf.mesh != kNone) leaf.mesh = mesh(leaf.mesh);
         if (leaf.polygon != kNone) leaf.polygon = polygon(leaf.polygon);
         leaf.source = source(g_.nodes[leaf.source].loc);
@@ -133,6 +136,14 @@ private:
             s_.materials.push_back(g_.materials[gm]);
         }
         return material_map_[gm];
+    }
+
+    std::uint32_t frame(std::uint32_t f) {  // only the frames surviving leaves use
+        if (frame_map_[f] == kNone) {
+            frame_map_[f] = static_cast<std::uint32_t>(s_.material_frames.size());
+            s_.material_frames.push_back(t_.material_frames[f]);
+        }
+        return frame_map_[f];
     }
 
     std::uint32_t mesh(std::uint32_t gm) {

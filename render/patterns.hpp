@@ -24,7 +24,8 @@ double pattern_value(csg::Pattern pattern, const glm::dvec3& q);
 double lattice_noise(const glm::dvec3& q);
 
 // The material's colour at world point p on a solid whose leaf maps world to
-// its material() call's coordinates by material_from_world.
+// its material() call's coordinates by material_from_world
+// (Scene::material_frames[leaf.material_frame]).
 inline glm::dvec3 pattern_color(const csg::Material& m, const csg::Affine& material_from_world, const glm::dvec3& p) {
     if (m.pattern == csg::Pattern::None) return m.color;
     const double v = pattern_value(m.pattern, m.pattern_from_material.point(material_from_world.point(p)));

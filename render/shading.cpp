@@ -130,7 +130,7 @@ glm::dvec3 Shader::radiance(const TraceRay& ray, int depth, ThreadState& ts, std
     const csg::Material& m = material_of(hit.surface.mat_leaf);
     // A cut face shows the solid's interior colour, unpatterned.
     const glm::dvec3 albedo =
-        hit.surface.cut ? m.interior : pattern_color(m, scene_.leaves[hit.surface.mat_leaf].material_from_world, p);
+        hit.surface.cut ? m.interior : pattern_color(m, scene_.material_frames[scene_.leaves[hit.surface.mat_leaf].material_frame], p);
     const double off = tracer_.surface_offset(hit, p);
     const glm::dvec3 origin = p + off * n;
     const glm::dvec3 view = -glm::normalize(ray.d);

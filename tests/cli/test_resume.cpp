@@ -58,3 +58,25 @@ TEST_CASE("resuming a band keeps it only when it is a band of the same render") 
     CHECK(r.err.find("written by another render") != std::string::npos);
     CHECK(inode(dir / "t_tile1of3.png") != kept);
 }
+
+// Two scenes with the same leaves, materials and tree, whose checkers differ
+// only in the frame of their material() call (Scene::material_frames): the
+// band of one is not a band of the other, since its pixels differ.
+TEST_CASE("resuming a band renders it again when only a pattern's frame changed") {
+    auto dir = test_dir("resume_pattern_frame");
+    auto scene = [](const char* shift) {
+        return std::string("camera(position = [0, -6, 2], look_at = [0, 0, 0]);\n") + "translate([" + shift +
+               ", 0, 0]) material(color = \"white\", color2 = \"black\", pattern = \"checker\", pattern_scale = 0.5)"
+               " translate([-" + shift + ", 0, 0]) sphere(1);\n";
+    };
+    write_file(dir / "scene.sdl", scene("0.5"));
+    const std::string args = "--tile 1/2 -W 40 -H 30 -o " + quoted(dir, "t.png");
+    render_farm_scene(dir, args);
+    const std::string first = slurp(dir / "t_tile1of2.png");
+    write_file(dir / "scene.sdl", scene("0.25"));
+    const KerfRun r = run_kerf("render " + quoted(dir, "scene.sdl") + " " + args + " --resume", dir);
+    INFO(r.err);
+    CHECK(r.status == 0);
+    CHECK(r.err.find("written by another render") != std::string::npos);
+    CHECK(slurp(dir / "t_tile1of2.png") != first);  // the pixels did change
+}

@@ -4,11 +4,13 @@
 // copies, and the leaf count drops to that scene's.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <random>
 
 #include "csg/membership.hpp"
 #include "interpreter/interpreter.hpp"
 #include "lower/lower.hpp"
+#include "render/patterns.hpp"
 #include "tests/lower/graph_builder.hpp"
 
 using namespace kerf;
@@ -62,4 +64,33 @@ TEST_CASE("prisms of different sections are not duplicates") {
     CHECK(s.leaves.size() == 2);
     CHECK(kerf::csg::contains(s, {0.2, 1.5, 0.5}));  // only in the first triangle
     CHECK(kerf::csg::contains(s, {1.8, 1.5, 0.5}));  // only in the second
+}
+
+// The same sphere under one patterned material, once with the material()
+// call at the world origin and once inside translate([0.5, 0, 0]) (the
+// sphere moved back inside it): the same bits but for the pattern frame, so
+// two leaves whose checkers are half a cell apart. Merging them (the frame
+// was once left out of the comparison) painted both with the first's.
+TEST_CASE("leaves differing only in pattern frame are not duplicates; equal frames are shared") {
+    GraphBuilder b;
+    csg::Material m;
+    m.color = {1, 1, 1};
+    m.color2 = {0, 0, 0};
+    m.pattern = csg::Pattern::Checker;
+    const std::uint32_t checker = b.material(m);
+    auto shifted = [&] { return b.translate({0.5, 0, 0}, b.appearance(checker, b.translate({-0.5, 0, 0}, b.sphere(1)))); };
+    const csg::Scene s = lower_to_csg(b.finish({b.uni({b.appearance(checker, b.sphere(1)), shifted(), shifted()})}));
+    REQUIRE(s.leaves.size() == 2);  // the third is the second again
+    CHECK(s.leaves[0].object_from_world.offset == s.leaves[1].object_from_world.offset);
+    // One frame per distinct call space: the identity and the shift.
+    REQUIRE(s.material_frames.size() == 2);
+    // The closed form: the cell of q under the call at x = 0.5 is the one of q − (0.5, 0, 0).
+    for (double x : {0.2, 0.7, 1.3}) {
+        const glm::dvec3 q(x, 0.3, 0.4);
+        const auto cell = [](const glm::dvec3& p) { return int(std::floor(p.x) + std::floor(p.y) + std::floor(p.z)) & 1; };
+        CHECK(render::pattern_color(s.materials[s.leaves[0].material], s.material_frames[s.leaves[0].material_frame], q).x ==
+              (cell(q) ? 0 : 1));
+        CHECK(render::pattern_color(s.materials[s.leaves[1].material], s.material_frames[s.leaves[1].material_frame], q).x ==
+              (cell(q - glm::dvec3(0.5, 0, 0)) ? 0 : 1));
+    }
 }
