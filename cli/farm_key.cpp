@@ -41,7 +41,7 @@ std::uint64_t scene_hash(const csg::Scene& s) {
     for (const csg::Leaf& l : s.leaves) {
         h.u(std::uint64_t(l.kind)), h.u(l.material), h.u(l.mesh), h.u(l.polygon);
         for (double p : l.p) h.d(p);
-        h.affine(l.object_from_world), h.affine(l.world_from_object), h.m3(l.normal_to_world), h.box(l.bounds);
+        h.affine(l.object_from_world), h.affine(l.world_from_object), h.box(l.bounds);
         h.u(l.material_frame);
     }
     h.u(s.material_frames.size());

@@ -95,9 +95,11 @@ struct Leaf {
     double p[6] = {0, 0, 0, 0, 0, 0};  // shape parameters, object space
     Affine object_from_world;          // world point -> object point
     Affine world_from_object;          // its inverse
-    // Object-space normal -> world-space normal (transpose of
-    // object_from_world.linear): keeps normals outward under mirrors too.
-    glm::dmat3 normal_to_world{1.0};
+    // Object-space normal -> world-space normal: the transpose of
+    // object_from_world.linear, which keeps normals outward under mirrors
+    // too. Applied, not stored: a row-vector product costs what the matrix
+    // product did, and the stored matrix was 72 bytes a leaf.
+    glm::dvec3 normal_to_world(const glm::dvec3& n_obj) const { return n_obj * object_from_world.linear; }
     Aabb bounds;                       // tight world box of the transformed primitive
 };
 

@@ -63,9 +63,9 @@ void place_leaf(csg::Leaf& leaf, const csg::Affine& wfo, const std::vector<glm::
     leaf.object_from_world = invert(wfo);
     if (!all_finite(leaf.object_from_world))
         throw SourceError(loc, "the transforms around this primitive cannot be inverted");
-    // Normals map by the inverse transpose, which keeps them outward under
-    // mirrors too: for an outward step v (n·v > 0), (L⁻ᵀn)·(L v) = n·v > 0.
-    leaf.normal_to_world = glm::transpose(leaf.object_from_world.linear);
+    // Normals map by the inverse transpose (Leaf::normal_to_world), which
+    // keeps them outward under mirrors too: for an outward step v
+    // (n·v > 0), (L⁻ᵀn)·(L v) = n·v > 0.
     if (leaf.kind == csg::PrimKind::Mesh || leaf.kind == csg::PrimKind::Prism)
         leaf.bounds = mesh_points ? mesh_bounds(*mesh_points, wfo) : csg::Aabb{};
     else if (leaf.kind == csg::PrimKind::Lathe)

@@ -8,8 +8,7 @@
 
 namespace kerf {
 
-// Fills leaf.world_from_object, object_from_world, normal_to_world and
-// bounds (leaf.kind and leaf.p must be set; mesh_points for Mesh leaves,
+// Fills leaf.world_from_object, object_from_world and bounds (leaf.kind and leaf.p must be set; mesh_points for Mesh leaves,
 // prism_corners for Prism leaves: the box of a point set's image is exact;
 // the section for Lathe leaves).
 // A singular or non-finite composed transform is a SourceError at `loc`, and

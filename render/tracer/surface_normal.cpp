@@ -18,7 +18,7 @@ glm::dvec3 CsgTracer::normal(const TraceHit& hit, const glm::dvec3& world_point)
                                                                 hit.surface.prim, leaf.object_from_world.point(world_point))
                                             : csg::object_normal(leaf, leaf.object_from_world.point(world_point),
                                                                  hit.surface.part);
-    glm::dvec3 n = leaf.normal_to_world * n_obj;
+    glm::dvec3 n = leaf.normal_to_world(n_obj);
     const double len = glm::length(n);
     n = len > 0 ? n / len : glm::dvec3(0, 0, 1);
     return hit.surface.flip ? -n : n;

@@ -8,8 +8,8 @@
 
 TEST_CASE("a leaf stays within its memory budget", "[memory]") {
     INFO("sizeof(csg::Leaf) = " << sizeof(kerf::csg::Leaf));
-    // 384 bytes: kind and five indices (24), parameters (48), two affine
-    // maps (192), the normal matrix (72) and the box (48). A pattern frame
-    // per leaf made it 480.
-    CHECK(sizeof(kerf::csg::Leaf) <= 384);
+    // 312 bytes: kind and five indices (24), parameters (48), two affine
+    // maps (192) and the box (48). A pattern frame per leaf and a stored
+    // normal matrix made it 480.
+    CHECK(sizeof(kerf::csg::Leaf) <= 312);
 }

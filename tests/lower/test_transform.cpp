@@ -40,7 +40,11 @@ TEST_CASE("object_from_world inverts world_from_object; normal_to_world is its t
         check_close(l.world_from_object.point(l.object_from_world.point(p)), p);
     }
     const glm::dmat3 expected = glm::transpose(l.object_from_world.linear);
-    for (int c = 0; c < 3; ++c) check_close(l.normal_to_world[c], expected[c]);
+    for (int r = 0; r < 3; ++r) {
+        glm::dvec3 e(0);
+        e[r] = 1;
+        check_close(l.normal_to_world(e), expected * e);
+    }
 }
 
 TEST_CASE("normals stay outward under mirrors and negative scales") {
@@ -53,7 +57,7 @@ TEST_CASE("normals stay outward under mirrors and negative scales") {
         // i.e. the world normal must point away from the world surface point.
         for (glm::dvec3 p : {glm::dvec3(1, 0, 0), glm::normalize(glm::dvec3(1, -2, 0.5)), glm::dvec3(0, 0, -1)}) {
             const glm::dvec3 wp = l.world_from_object.point(p);
-            const glm::dvec3 wn = l.normal_to_world * p;
+            const glm::dvec3 wn = l.normal_to_world(p);
             const glm::dvec3 outside = l.object_from_world.point(wp + 1e-3 * glm::normalize(wn));
             const glm::dvec3 inside = l.object_from_world.point(wp - 1e-3 * glm::normalize(wn));
             CHECK(glm::length(outside) > 1);

@@ -52,7 +52,6 @@ inline csg::Leaf make_leaf(csg::PrimKind kind, std::vector<double> params, const
     const glm::dmat4 inv = glm::inverse(world_from_object);
     l.object_from_world.linear = glm::dmat3(inv);
     l.object_from_world.offset = glm::dvec3(inv[3]);
-    l.normal_to_world = glm::transpose(l.object_from_world.linear);
     const csg::Aabb ob = object_box(l);
     if (kind == csg::PrimKind::Plane) {
         l.bounds = csg::Aabb::everything();
