@@ -47,11 +47,14 @@ def disc_pixels(radius, dist=DIST):
 
 # What the page shows, read in the page: the image's id, stage and size,
 # and the pixels that differ from the background (the corner) with their
-# mean colour; the diagnostics box and the camera statement.
+# mean colour; the diagnostics box and the camera statement; whether the
+# image on screen is of the page's newest camera (a drag sends several
+# cameras, and images of the earlier ones arrive after it ends).
 STATE = """
 const i = document.getElementById('view'), d = document.getElementById('diag');
 const s = { diag: d.textContent, diagClass: d.className, statement: document.getElementById('statement').value,
-            id: +(i.dataset.id || 0), stage: i.dataset.stage || '', w: i.naturalWidth, h: i.naturalHeight };
+            id: +(i.dataset.id || 0), stage: i.dataset.stage || '', w: i.naturalWidth, h: i.naturalHeight,
+            settled: !!(cam && shownCam && sameCam(cam, shownCam)) };
 if (!i.complete || !i.naturalWidth) return s;
 const c = document.createElement('canvas');
 c.width = i.naturalWidth; c.height = i.naturalHeight;
@@ -136,7 +139,7 @@ def main():
 
         before = s["statement"]
         browser.drag("#stage", 150, 60)
-        s = browser.wait_for("const s = (function(){%s})(); return s.stage === 'full' && s.id > %d &&"
+        s = browser.wait_for("const s = (function(){%s})(); return s.stage === 'full' && s.id > %d && s.settled &&"
                              " s.statement !== %r && s.object !== undefined ? s : null;" % (STATE, s["id"], before),
                              "an image of the orbited camera")
         m = re.search(r"position = \[([^\]]*)\], look_at = \[([^\]]*)\]", s["statement"])
@@ -150,7 +153,7 @@ def main():
 
         before = s["statement"]
         browser.wheel("#stage", -300)
-        s = browser.wait_for("const s = (function(){%s})(); return s.stage === 'full' && s.id > %d &&"
+        s = browser.wait_for("const s = (function(){%s})(); return s.stage === 'full' && s.id > %d && s.settled &&"
                              " s.statement !== %r && s.object !== undefined ? s : null;" % (STATE, s["id"], before),
                              "an image of the zoomed camera")
         m = re.search(r"position = \[([^\]]*)\]", s["statement"])
