@@ -4,7 +4,7 @@
 
 #include "tests/cli/run_kerf.hpp"
 
-TEST_CASE("--alpha refuses formats without an alpha channel and AOVs") {
+TEST_CASE("alpha output refuses formats without an alpha channel and AOVs") {
     auto dir = test_dir("alpha_option");
     const struct {
         const char* args;
@@ -23,7 +23,7 @@ TEST_CASE("--alpha refuses formats without an alpha channel and AOVs") {
     }
 }
 
-TEST_CASE("--alpha writes a 4-channel PNG whose corner is transparent") {
+TEST_CASE("alpha output writes a 4-channel PNG whose corner is transparent") {
     auto dir = test_dir("alpha_png");
     write_file(dir / "s.sdl", "camera(position = [0, -6, 0], look_at = [0, 0, 0]);\nsphere(1);\n");
     const std::string d = "'" + dir.string() + "/";
