@@ -5,6 +5,7 @@
 #include "cli/view/guard.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cstdint>
 #include <limits>
@@ -16,9 +17,22 @@ namespace {
 // Options that shape an image: `kerf measure` writes none and refuses them.
 bool is_image_option(const std::string& a) {
     for (const char* f : {"-o", "-W", "-H", "--spp", "--aa", "--aa-samples", "--aa-threshold", "--seed", "--preview",
-                          "--max-depth", "--watch", "--crop", "--aov", "--stats"})
+                          "--max-depth", "--watch", "--crop", "--aov", "--stats", "--alpha"})
         if (a == f) return true;
     return false;
+}
+
+// --alpha needs a format with an alpha channel: PNG stores it straight,
+// EXR and TIFF premultiplied (their convention). Others would drop it.
+void check_alpha(Options& o) {
+    if (o.render.aov != render::Aov::None) throw UsageError("--alpha applies to the shaded image, not to --aov");
+    std::string ext = o.output == "-" ? ".png" : o.output.substr(std::min(o.output.size(), o.output.find_last_of('.')));
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    if (ext == ".png") o.render.alpha = render::Alpha::Straight;
+    else if (ext == ".exr" || ext == ".tif" || ext == ".tiff") o.render.alpha = render::Alpha::Premultiplied;
+    else
+        throw UsageError("--alpha needs an output format with an alpha channel (.png, .exr, .tif), not '" +
+                         (ext.find('/') != std::string::npos || ext.empty() ? o.output : ext) + "'");
 }
 
 double parse_real(const std::string& flag, const std::string& text, double lo, double hi, const char* range) {
@@ -60,7 +74,7 @@ const char* usage_text() {
     return "usage:\n"
            "  kerf render SCENE.sdl [-o OUT] [-W 800] [-H 600] [--threads N]\n"
            "                        [--aa auto|off] [--aa-samples 16] [--aa-threshold 0.05] [--spp N]\n"
-           "                        [--preview] [--aov depth|normal|hits] [--stats] [--no-progress]\n"
+           "                        [--preview] [--aov depth|normal|hits] [--alpha] [--stats] [--no-progress]\n"
            "                        [-D name=value ...] [-I dir ...] [--crop x0,y0,x1,y1]\n"
            "                        [--seed N] [--precision double|float] [--base DIR]\n"
            "                        [--max-depth 4]  (reflections and refractions per ray, 0..32)\n"
@@ -158,6 +172,7 @@ Options parse_options(const std::vector<std::string>& args) {
         else if (a == "--openscad" || a == "--lenient") o.eval.dialect = Dialect::Lenient;
         else if (a == "--strict") o.eval.dialect = Dialect::Strict;
         else if (a == "--stats") o.stats = true;
+        else if (a == "--alpha") o.render.alpha = render::Alpha::Straight;  // the format settles which (below)
         else if (a == "--no-progress") o.progress = false;
         else if (a == "--crop") o.render.crop = parse_crop(value());
         else if (a == "--aov") {
@@ -238,6 +253,7 @@ Options parse_options(const std::vector<std::string>& args) {
         if (dot != std::string::npos && (slash == std::string::npos || dot > slash)) base.resize(dot);
         o.output = base + ".png";
     }
+    if (o.render.alpha != render::Alpha::None) check_alpha(o);
     check_farm_options(o);
     return o;
 }

@@ -3,7 +3,9 @@
 // pixel in full-image coordinates. Colour goes in as linear floats, or, for
 // an 8-bit file, straight in as sRGB codes (RenderOptions::srgb8).
 #pragma once
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 
 #include <glm/glm.hpp>
@@ -34,6 +36,18 @@ public:
         } else {
             image_.pixels[at] = float(c.x), image_.pixels[at + 1] = float(c.y), image_.pixels[at + 2] = float(c.z);
         }
+    }
+    // Colour and coverage `a` (0..1): `c` is the pixel's mean over all its
+    // samples, misses seeing `background`; the hits' own share is
+    // c - (1 - a)·background (premultiplied), divided by a when straight.
+    void color_alpha(int x, int y, glm::dvec3 c, double a, const glm::dvec3& background, bool premultiplied) {
+        c -= (1 - a) * background;
+        if (a == 0) c = glm::dvec3(0.0);  // exactly: the mean of n backgrounds is not quite one
+        else if (!premultiplied) c /= a;
+        color(x, y, glm::max(c, glm::dvec3(0.0)));
+        const std::size_t at = index(x, y) + 3;
+        if (bytes_) image_.srgb8[at] = std::uint8_t(std::lround(std::clamp(a, 0.0, 1.0) * 255));
+        else image_.pixels[at] = float(a);
     }
     // The float values of an AOV pixel.
     float* values(int x, int y) { return &image_.pixels[index(x, y)]; }

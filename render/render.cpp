@@ -60,7 +60,17 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
                                                    : std::array<int, 4>{0, 0, options.width, options.height};
     const Aov aov = options.aov;
     Image image;
-    PixelStore store(image, region, aov_channels(aov), aov_content(aov), options.srgb8 && aov == Aov::None);
+    const bool alpha = options.alpha != Alpha::None && aov == Aov::None;
+    PixelStore store(image, region, alpha ? 4 : aov_channels(aov), aov_content(aov), options.srgb8 && aov == Aov::None);
+    // Coverage: the samples of the pixel being shaded that hit a solid. A
+    // pixel is shaded start to end on one thread, so a thread-local count,
+    // reset per pixel, needs no change to the sample paths below.
+    static thread_local int hits = 0;
+    auto put = [&](int x, int y, const glm::dvec3& c, int samples) {
+        if (alpha) store.color_alpha(x, y, c, double(hits) / samples, scene.background, options.alpha == Alpha::Premultiplied);
+        else store.color(x, y, c);
+        hits = 0;
+    };
     tbb::enumerable_thread_specific<ThreadState> states;
 
     // One sample through (px, py); `surface` as Shader::radiance.
@@ -72,7 +82,12 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
         }
         glm::dvec3 o, d;
         camera.ray_unnormalised(px, py, o, d);
-        return shader.radiance(TraceRay{o, d, 0, std::numeric_limits<double>::infinity()}, 0, ts, surface);
+        if (!alpha) return shader.radiance(TraceRay{o, d, 0, std::numeric_limits<double>::infinity()}, 0, ts, surface);
+        std::uint32_t id = 0;
+        const glm::dvec3 c = shader.radiance(TraceRay{o, d, 0, std::numeric_limits<double>::infinity()}, 0, ts, &id);
+        if (surface) *surface = id;
+        hits += id != 0;
+        return c;
     };
     // The mean of `pattern`'s samples in pixel (x, y).
     auto samples_mean = [&](const SamplePattern& pattern, int x, int y, ThreadState& ts, bool traced) {
@@ -106,10 +121,12 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
             std::uint32_t surface;
             const glm::dvec3 c = sample(x + 0.5, y + 0.5, ts, traced, &surface);
             centres.set(x, y, c, surface);
-            if (x >= region[0] && x < region[2] && y >= region[1] && y < region[3]) store.color(x, y, c);
+            if (x >= region[0] && x < region[2] && y >= region[1] && y < region[3]) put(x, y, c, 1);
+            hits = 0;
         });
         // Only candidates are written again; the rest keep their centre.
         complete &= for_each_tile(arena, region, camera, tracer, states, part(0.25, 1), stack_need, options.cancel, [&](int x, int y, ThreadState& ts, bool traced) {
+            hits = 0;
             if (!centres.needs_more(x, y, threshold)) return;
             // Probes at the 4 corners first: a straight edge that crosses the
             // pixel always separates its corners, so a candidate whose
@@ -124,15 +141,17 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
                 sum += c;
             }
             if (same) {
-                store.color(x, y, sum / 5.0);
+                put(x, y, sum / 5.0, 5);
                 return;
             }
             ++ts.refined_pixels;
-            store.color(x, y, samples_mean(refine, x, y, ts, traced));
+            hits = 0;
+            put(x, y, samples_mean(refine, x, y, ts, traced), refine.count());
         });
     } else {
         complete &= for_each_tile(arena, region, camera, tracer, states, progress, stack_need, options.cancel, [&](int x, int y, ThreadState& ts, bool traced) {
-            store.color(x, y, samples_mean(samples, x, y, ts, traced));
+            hits = 0;
+            put(x, y, samples_mean(samples, x, y, ts, traced), samples.count());
         });
     }
     if (cancelled()) throw RenderCancelled();

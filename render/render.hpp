@@ -17,6 +17,11 @@
 namespace kerf::render {
 
 enum class Aov : std::uint8_t { None, Depth, Normal, Hits };
+// --alpha: a fourth channel, the share of a pixel's samples that hit a
+// solid (background 0). Straight for PNG (colour = the hit samples' mean),
+// premultiplied for EXR/TIFF (colour = their sum over all samples), as
+// those formats expect.
+enum class Alpha : std::uint8_t { None, Straight, Premultiplied };
 
 struct RenderOptions {
     int width = 800, height = 600;
@@ -29,6 +34,7 @@ struct RenderOptions {
     int aa_samples = 16;
     double aa_threshold = 0.05;
     int threads = 0;                 // 0: all hardware threads
+    Alpha alpha = Alpha::None;       // colour renders only
     bool preview = false;            // 1 spp, no reflections (same resolution)
     Aov aov = Aov::None;             // AOVs trace one ray through each pixel centre
     std::optional<std::array<int, 4>> crop;  // x0, y0, x1, y1: half-open, full-image pixels

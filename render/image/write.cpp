@@ -59,6 +59,9 @@ BigVector<std::uint8_t> encode_8bit(const Image& im) {
                 std::uint8_t* bytes = out.data();
                 for (std::size_t i = r.begin(); i < r.end(); ++i) bytes[i] = srgb_byte(table, in[i]);
             });
+            // A fourth channel is coverage (--alpha): linear, not sRGB.
+            if (im.channels == 4)
+                for (std::size_t i = 3; i < out.size(); i += 4) out[i] = unit_byte(im.pixels[i]);
             break;
         case ImageContent::Normal:
             for (std::size_t i = 0; i < out.size(); ++i) out[i] = unit_byte(0.5f * im.pixels[i] + 0.5f);
