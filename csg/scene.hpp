@@ -3,11 +3,14 @@
 // into the AST. Lowering writes it; the renderer only reads it.
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <limits>
 #include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
+
+#include "csg/texture.hpp"
 
 namespace kerf::csg {
 
@@ -111,7 +114,8 @@ struct Node {
 // A procedural pattern blends Material::color (value 0) and color2
 // (value 1) by a value in [0, 1] that depends only on the shading point in
 // the material's pattern space (docs/language.md, "Patterns").
-enum class Pattern : std::uint8_t { None, Checker, Stripes, Gradient, Noise, Marble, Wood };
+// Image: the colour is looked up in Material::texture instead (csg/texture.hpp).
+enum class Pattern : std::uint8_t { None, Checker, Stripes, Gradient, Noise, Marble, Wood, Image };
 
 struct Material {
     glm::dvec3 color{0.8, 0.8, 0.8};     // linear RGB
@@ -138,6 +142,12 @@ struct Material {
     // Pattern coordinates from the coordinates of the material() call:
     // the inverse of pattern_transform, then divided by pattern_scale.
     Affine pattern_from_material;
+    // pattern == Image: the decoded image (shared by every material naming
+    // the file), how pattern space maps onto it, and whether it is read
+    // bilinearly between pixel centres or by the nearest pixel.
+    std::shared_ptr<const Texture> texture;
+    TextureMapping mapping = TextureMapping::Planar;
+    bool bilinear = true;
 };
 
 struct Mesh {
