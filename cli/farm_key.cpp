@@ -71,6 +71,7 @@ std::uint64_t scene_hash(const csg::Scene& s) {
     h.u(s.lights.size());
     for (const csg::Light& l : s.lights) h.u(l.directional), h.v3(l.position), h.v3(l.direction), h.v3(l.color), h.d(l.intensity);
     h.v3(s.background);
+    h.u(std::uint64_t(s.ambient_occlusion.samples)), h.d(s.ambient_occlusion.distance);
     return h.h;
 }
 

@@ -156,6 +156,11 @@ struct Mesh {
     bool solid = true;
 };
 
+struct AmbientOcclusion {
+    int samples = 0;
+    double distance = std::numeric_limits<double>::infinity();
+};
+
 struct Camera {
     glm::dvec3 position{0, -10, 5};
     glm::dvec3 look_at{0, 0, 0};
@@ -201,6 +206,9 @@ struct Scene {
     Camera camera;                        // always resolved (docs/spec.md §6 defaults applied)
     std::vector<Light> lights;            // always resolved (defaults applied)
     glm::dvec3 background{0.2, 0.2, 0.2};
+    // ambient_occlusion(samples, distance) (render/ao.hpp): the ambient term
+    // scaled by the share of the hemisphere open within `distance`; 0 samples: off.
+    AmbientOcclusion ambient_occlusion;
 
     std::vector<SourceRef> sources;
     std::vector<std::string> files;

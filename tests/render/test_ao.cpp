@@ -13,6 +13,7 @@
 
 #include "render/ao.hpp"
 #include "render/lights.hpp"
+#include "tests/render/same_bytes.hpp"
 #include "tests/render/scene_builder.hpp"
 
 using namespace kerf;
@@ -64,4 +65,25 @@ TEST_CASE("ambient occlusion beside a wall: the cosine-weighted visible share in
     const glm::dvec3 on_wall{d - 1e-7, 0, 5};  // the wall's face, normal −x: the floor blocks below reach
     const double v = render::ambient_visibility(tracer, on_wall, {-1, 0, 0}, kInf, render::SamplePattern(4096), 3, scratch, rays);
     CHECK(v == Approx(0.5).margin(0.04));
+}
+
+TEST_CASE("ambient occlusion in a render: ambient dimmed by the closed-form share, same bytes on any thread count", "[render][ao]") {
+    // Floor seen from above, no lights: colour = 0.1 × albedo × visible share.
+    const Tree t = op(csg::Op::Union, {leaf(box({-1e3, -1e3, -1}, {1e3, 1e3, 0})), leaf(box({1, -1e3, -1}, {1e3, 1e3, 1e3}))});
+    csg::Scene s = make_scene(t);
+    s.lights.clear();
+    s.ambient_occlusion = {256, 2.0};
+    s.camera.orthographic = true;
+    s.camera.position = {0, 0, 0.5};
+    s.camera.look_at = {0, 0, 0};
+    s.camera.up = {0, 1, 0};
+    s.camera.height = 0.01;
+    render::RenderOptions o;
+    o.width = o.height = 4;
+    const auto [one, two] = on_1_and_2_threads(s, o);
+    CHECK(same_bytes(one, two));
+    double mean = 0;
+    for (int i = 0; i < 16; ++i) mean += one.pixels[i * 3] / 16.0;
+    // Distance 1 from the wall, reach 2: c = ½; 16 points × 256 samples.
+    CHECK(mean / (0.1 * 0.8) == Approx(visible_share(0.5)).margin(0.02));
 }
