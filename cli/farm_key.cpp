@@ -55,7 +55,8 @@ std::uint64_t scene_hash(const csg::Scene& s) {
     for (const csg::Material& m : s.materials)
         h.v3(m.color), h.v3(m.interior), h.d(m.diffuse), h.d(m.specular), h.d(m.shininess), h.d(m.reflect),
             h.d(m.transparency), h.d(m.ior), h.v3(m.absorption), h.d(m.roughness), h.v3(m.emission),
-            h.u(std::uint64_t(m.pattern)), h.v3(m.color2), h.affine(m.pattern_from_material);
+            h.u(std::uint64_t(m.pattern)), h.v3(m.color2), h.affine(m.pattern_from_material),
+            h.u(m.texture ? m.texture->digest : 0), h.u(std::uint64_t(m.mapping)), h.u(m.bilinear);
     h.u(s.meshes.size());
     for (const csg::Mesh& m : s.meshes) {
         h.u(m.points.size()), h.u(m.triangles.size()), h.u(m.solid);
@@ -72,6 +73,7 @@ std::uint64_t scene_hash(const csg::Scene& s) {
     h.u(s.lights.size());
     for (const csg::Light& l : s.lights) h.u(l.directional), h.v3(l.position), h.v3(l.direction), h.v3(l.color), h.d(l.intensity);
     h.v3(s.background);
+    h.u(std::uint64_t(s.ambient_occlusion.samples)), h.d(s.ambient_occlusion.distance);
     return h.h;
 }
 

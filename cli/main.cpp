@@ -20,6 +20,7 @@
 #include "csg/dump.hpp"
 #include "render/image/image.hpp"
 #include "render/render.hpp"
+#include "render/texture.hpp"
 
 namespace {
 
@@ -77,6 +78,7 @@ int main(int argc, char** argv) {
         return kOk;
     }
     cap_memory_to_physical();
+    csg::set_texture_reader(render::read_texture);  // material(texture = ...) reads images while evaluating
     // -o -: a reader that goes away is a failed write (exit 3, "Broken
     // pipe"), not a signal.
     if (options.output == "-") std::signal(SIGPIPE, SIG_IGN);

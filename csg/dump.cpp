@@ -216,9 +216,15 @@ void dump(const Scene& s, std::string& out, Flush&& flush) {
         if (m.roughness != 0) field(out, "roughness", m.roughness);
         if (m.emission != glm::dvec3(0)) field(out, "emission", m.emission);
         if (m.pattern != Pattern::None) {
-            static const char* const kNames[] = {"none", "checker", "stripes", "gradient", "noise", "marble", "wood"};
+            static const char* const kNames[] = {"none", "checker", "stripes", "gradient", "noise", "marble", "wood", "image"};
             out += std::string(" pattern=") + kNames[static_cast<int>(m.pattern)];
-            field(out, "color2", m.color2);
+            if (m.texture) {
+                static const char* const kMappings[] = {"planar", "spherical", "cylindrical"};
+                out += " texture=" + m.texture->path + " mapping=" + kMappings[static_cast<int>(m.mapping)] +
+                       (m.bilinear ? " bilinear" : " nearest");
+            } else {
+                field(out, "color2", m.color2);
+            }
         }
         out += '\n';
     }

@@ -3,11 +3,14 @@
 // into the AST. Lowering writes it; the renderer only reads it.
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <limits>
 #include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
+
+#include "csg/texture.hpp"
 
 namespace kerf::csg {
 
@@ -116,7 +119,8 @@ struct Node {
 // A procedural pattern blends Material::color (value 0) and color2
 // (value 1) by a value in [0, 1] that depends only on the shading point in
 // the material's pattern space (docs/language.md, "Patterns").
-enum class Pattern : std::uint8_t { None, Checker, Stripes, Gradient, Noise, Marble, Wood };
+// Image: the colour is looked up in Material::texture instead (csg/texture.hpp).
+enum class Pattern : std::uint8_t { None, Checker, Stripes, Gradient, Noise, Marble, Wood, Image };
 
 struct Material {
     glm::dvec3 color{0.8, 0.8, 0.8};     // linear RGB
@@ -143,12 +147,23 @@ struct Material {
     // Pattern coordinates from the coordinates of the material() call:
     // the inverse of pattern_transform, then divided by pattern_scale.
     Affine pattern_from_material;
+    // pattern == Image: the decoded image (shared by every material naming
+    // the file), how pattern space maps onto it, and whether it is read
+    // bilinearly between pixel centres or by the nearest pixel.
+    std::shared_ptr<const Texture> texture;
+    TextureMapping mapping = TextureMapping::Planar;
+    bool bilinear = true;
 };
 
 struct Mesh {
     std::vector<glm::dvec3> points;             // object space
     std::vector<std::uint32_t> triangles;        // 3 indices per triangle, outward winding (CCW seen from outside)
     bool solid = true;
+};
+
+struct AmbientOcclusion {
+    int samples = 0;
+    double distance = std::numeric_limits<double>::infinity();
 };
 
 struct Camera {
@@ -197,6 +212,9 @@ struct Scene {
     Camera camera;                        // always resolved (docs/spec.md §6 defaults applied)
     std::vector<Light> lights;            // always resolved (defaults applied)
     glm::dvec3 background{0.2, 0.2, 0.2};
+    // ambient_occlusion(samples, distance) (render/ao.hpp): the ambient term
+    // scaled by the share of the hemisphere open within `distance`; 0 samples: off.
+    AmbientOcclusion ambient_occlusion;
 
     std::vector<SourceRef> sources;
     std::vector<std::string> files;

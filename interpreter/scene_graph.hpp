@@ -68,6 +68,7 @@ struct SceneGraph {
     std::optional<csg::Camera> camera;            // none: lowering applies docs/spec.md §6 defaults
     std::vector<csg::Light> lights;              // empty: default lights
     std::optional<glm::dvec3> background;    // none: default dark grey
+    std::optional<csg::AmbientOcclusion> ambient_occlusion;  // none: off
 };
 
 }  // namespace kerf::graph

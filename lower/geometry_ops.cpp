@@ -34,6 +34,7 @@ public:
         out_.camera = g_.camera;
         out_.lights = g_.lights;
         out_.background = g_.background;
+        out_.ambient_occlusion = g_.ambient_occlusion;
         map_.resize(g_.nodes.size());
         for (std::uint32_t i = 0; i < g_.nodes.size(); ++i) {
             const graph::Node& n = g_.nodes[i];

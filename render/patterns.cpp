@@ -61,7 +61,8 @@ double lattice_noise(const glm::dvec3& q) {
 
 double pattern_value(csg::Pattern pattern, const glm::dvec3& q) {
     switch (pattern) {
-        case csg::Pattern::None: return 0;
+        case csg::Pattern::None:
+        case csg::Pattern::Image: return 0;  // a colour, not a value: texture.hpp
         case csg::Pattern::Checker: return std::abs(std::fmod(std::floor(q.x + kBoundaryNudge) + std::floor(q.y + kBoundaryNudge) +
                                                                   std::floor(q.z + kBoundaryNudge),
                                                               2.0));

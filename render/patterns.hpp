@@ -6,6 +6,7 @@
 #include <glm/glm.hpp>
 
 #include "csg/scene.hpp"
+#include "render/texture.hpp"
 
 namespace kerf::render {
 
@@ -25,10 +26,14 @@ double lattice_noise(const glm::dvec3& q);
 
 // The material's colour at world point p on a solid whose leaf maps world to
 // its material() call's coordinates by material_from_world
-// (Scene::material_frames[leaf.material_frame]).
+// (Scene::material_frames[leaf.material_frame]); an image texture's
+// colour replaces color (texture.hpp).
 inline glm::dvec3 pattern_color(const csg::Material& m, const csg::Affine& material_from_world, const glm::dvec3& p) {
     if (m.pattern == csg::Pattern::None) return m.color;
-    const double v = pattern_value(m.pattern, m.pattern_from_material.point(material_from_world.point(p)));
+    const glm::dvec3 q = m.pattern_from_material.point(material_from_world.point(p));
+    if (m.pattern == csg::Pattern::Image)
+        return m.texture ? texture_color(*m.texture, m.mapping, m.bilinear, texture_uv(m.mapping, q)) : m.color;
+    const double v = pattern_value(m.pattern, q);
     return m.color + v * (m.color2 - m.color);
 }
 

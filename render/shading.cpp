@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "render/ao.hpp"
 #include "render/lights.hpp"
 #include "render/optics.hpp"
 #include "render/patterns.hpp"
@@ -181,7 +182,11 @@ glm::dvec3 Shader::radiance(const TraceRay& ray, int depth, ThreadState& ts, std
             if (through != glm::dvec3(0.0)) respond(dir, ndl, share * through);
         }
     }
-    const glm::dvec3 local = kAmbient * albedo + diffuse + highlights;
+    double open = 1;  // ambient occlusion: the ambient light's share that reaches p
+    if (const csg::AmbientOcclusion& ao = scene_.ambient_occlusion; ao.samples > 0)
+        open = ambient_visibility(tracer_, origin, n, ao.distance, SamplePattern(ao.samples), shading_rng(origin, 0x414F),
+                                  ts.scratch, ts.rays.shadow);
+    const glm::dvec3 local = kAmbient * open * albedo + diffuse + highlights;
     const bool can_branch = depth < max_depth_;
     // Glass (transparency t): the share t meets a smooth dielectric —
     // Fresnel's reflectance f of it mirrored, the rest refracted inside —

@@ -89,11 +89,59 @@ void read_pattern(ModuleCall& c, CurrentMaterial& cur) {
         cur.m.pattern_from_material = csg::Affine{inv, -(inv * glm::dvec3(m[3]))};
     }
     if (!(a.has(12) || a.has(13) || a.has(14))) return;
+    if (cur.m.pattern == csg::Pattern::Image || a.has(15)) return;  // an image needs no color2
     if (cur.m.pattern == csg::Pattern::None) {
         if (a.has(13) || a.has(14)) c.warn("pattern_scale and pattern_transform are ignored without a pattern");
     } else if (!cur.color2_set) {
         c.warn("a pattern without color2 blends color with black (give color2)");
     }
+}
+
+struct MappingName {
+    const char* name;
+    csg::TextureMapping mapping;
+};
+constexpr MappingName kMappings[] = {{"planar", csg::TextureMapping::Planar},
+                                     {"spherical", csg::TextureMapping::Spherical},
+                                     {"cylindrical", csg::TextureMapping::Cylindrical}};
+
+// texture, mapping, interpolation (docs/language.md, "Image textures"): the
+// file is read here, once per file (render::read_texture keeps it), so a
+// missing or unreadable image is an error at this call, not at render time.
+// The image lies in pattern space, so pattern_scale and pattern_transform
+// place it too.
+void read_texture(ModuleCall& c, CurrentMaterial& cur) {
+    const Args& a = c.args;
+    if (a.has(15)) {
+        if (!a[15].is_string() || a[15].as_string().empty()) arg_error(a, "texture must be a string naming an image file");
+        if (a.has(12)) arg_error(a, "texture and pattern exclude each other (a texture is the colour)");
+        const csg::TextureReader reader = csg::texture_reader();
+        if (!reader) arg_unsupported(a, "image textures need the renderer (this program reads no images)");
+        const std::string path = c.files().resolve(a[15].as_string(), c.st.loc);
+        std::string why;
+        std::shared_ptr<const csg::Texture> t = reader(path, why);
+        if (!t) throw SourceError(c.st.loc, why);
+        cur.m.texture = std::move(t);
+        cur.m.pattern = csg::Pattern::Image;
+    } else if (a.has(12) && cur.m.pattern != csg::Pattern::Image) {
+        cur.m.texture.reset();
+    }
+    if (a.has(16)) {
+        std::string names;
+        bool found = false;
+        for (const MappingName& m : kMappings) {
+            if (a[16].is_string() && a[16].as_string() == m.name) cur.m.mapping = m.mapping, found = true;
+            names += std::string(names.empty() ? "" : ", ") + '"' + m.name + '"';
+        }
+        if (!found) arg_error(a, "mapping must be one of " + names);
+    }
+    if (a.has(17)) {
+        const bool ok = a[17].is_string() && (a[17].as_string() == "bilinear" || a[17].as_string() == "nearest");
+        if (!ok) arg_error(a, "interpolation must be \"bilinear\" or \"nearest\"");
+        cur.m.bilinear = a[17].as_string() == "bilinear";
+    }
+    if ((a.has(16) || a.has(17)) && cur.m.pattern != csg::Pattern::Image)
+        c.warn("mapping and interpolation are ignored without a texture");
 }
 
 CurrentMaterial enclosing(ModuleCall& c) {
@@ -152,13 +200,14 @@ void material(ModuleCall& c) {
     cur.m.roughness = unit_interval(a, 9, "roughness", cur.m.roughness);
     cur.m.emission = emission(a, 10, cur);
     read_pattern(c, cur);
+    read_texture(c, cur);
     appear(c, cur);
 }
 
 const ModuleEntry kAppearance[] = {
     {"color", ModuleKind::Operation, {"c", "alpha"}, color},
     {"material", ModuleKind::Operation, {"color", "interior", "diffuse", "specular", "shininess", "reflect", "transparency", "ior", "absorption",
-      "roughness", "emission", "color2", "pattern", "pattern_scale", "pattern_transform"},
+      "roughness", "emission", "color2", "pattern", "pattern_scale", "pattern_transform", "texture", "mapping", "interpolation"},
      material},
 };
 

@@ -125,6 +125,21 @@ void background(ModuleCall& c) {
     state.background_loc = &c.st.loc;
 }
 
+// ambient_occlusion(samples = 16, distance = inf) (render/ao.hpp): at most once.
+void ambient_occlusion(ModuleCall& c) {
+    const Args& a = c.args;
+    auto& slot = c.graph().graph.ambient_occlusion;
+    if (slot) throw SourceError(c.st.loc, "ambient_occlusion is already defined");
+    csg::AmbientOcclusion ao;
+    const double n = arg_number(a, 0, "samples", 16);
+    if (!(n >= 1 && n <= 1024 && n == std::floor(n)))
+        arg_error(a, "samples must be a whole number from 1 to 1024, got " + format_number(n));
+    ao.samples = int(n);
+    ao.distance = arg_number(a, 1, "distance", ao.distance);
+    if (!(ao.distance > 0)) arg_error(a, "distance must be positive, got " + format_number(ao.distance));
+    slot = ao;
+}
+
 const ModuleEntry kSetup[] = {
     {"camera", ModuleKind::Setup, {"position", "look_at", "up", "fov", "projection", "height"}, camera},
     {"light", ModuleKind::Setup,
@@ -133,6 +148,7 @@ const ModuleEntry kSetup[] = {
      {"position", "look_at", "angle", "falloff", "color", "intensity", "radius", "samples", "shadows", "attenuation"},
      spotlight},
     {"background", ModuleKind::Setup, {"color"}, background},
+    {"ambient_occlusion", ModuleKind::Setup, {"samples", "distance"}, ambient_occlusion},
 };
 
 }  // namespace

@@ -27,7 +27,8 @@ OiioModule load() {
         OiioModule m;
         m.can_write = reinterpret_cast<decltype(m.can_write)>(::dlsym(h, "kerf_oiio_can_write"));
         m.encode = reinterpret_cast<decltype(m.encode)>(::dlsym(h, "kerf_oiio_encode"));
-        if (m.can_write && m.encode) return m;
+        m.read = reinterpret_cast<decltype(m.read)>(::dlsym(h, "kerf_oiio_read"));
+        if (m.can_write && m.encode && m.read) return m;
         why = p.string() + " lacks kerf_oiio_encode";
     }
     throw ImageWriteError("cannot load the OpenImageIO module " + std::string(KERF_OIIO_MODULE_NAME) +

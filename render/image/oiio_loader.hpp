@@ -12,6 +12,9 @@ struct OiioModule {
     int (*can_write)(const char* path) = nullptr;
     int (*encode)(const char* path, const void* pixels, int as_float, int width, int height, int channels, int srgb,
                   Sink sink, void* context, char* error, std::size_t error_size) = nullptr;
+    // Reads an image as linear-or-encoded RGB floats (oiio_module.cpp, kerf_oiio_read).
+    using PixelSink = void (*)(void* context, const float* rgb, int width, int height);
+    int (*read)(const char* path, PixelSink sink, void* context, int* encoded, char* error, std::size_t error_size) = nullptr;
 };
 
 // The loaded module; throws ImageWriteError naming the file and dlerror()

@@ -9,6 +9,7 @@
 // which writes it with checked calls (replace_file.cpp).
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include <sys/mman.h>
 #include <sys/stat.h>
@@ -77,6 +78,39 @@ bool encode_to_memfd(OIIO::ImageOutput& out, OIIO::ImageSpec spec, const std::st
 }  // namespace
 
 extern "C" {
+
+using PixelSink = void (*)(void* context, const float* rgb, int width, int height);
+
+// Reads the first subimage of `path` as 3-channel floats, rows top to
+// bottom, grey replicated and channels past the third dropped (alpha is
+// not a colour). `*encoded` is 1 when the file stores integers, which kerf
+// takes as sRGB-encoded, 0 for float formats (EXR, PFM, float TIFF): linear.
+// On success `sink` gets the pixels and 1 is returned, else 0 with `error`.
+int kerf_oiio_read(const char* path, PixelSink sink, void* context, int* encoded, char* error, std::size_t error_size) {
+    auto in = OIIO::ImageInput::open(path);
+    if (!in) {
+        std::string why = OIIO::geterror();
+        set_error(error, error_size, why.empty() ? "cannot open the image" : why);
+        return 0;
+    }
+    const OIIO::ImageSpec& spec = in->spec();
+    const int w = spec.width, h = spec.height, n = spec.nchannels;
+    if (w <= 0 || h <= 0 || n <= 0 || std::size_t(w) * std::size_t(h) > (std::size_t(1) << 28)) {
+        set_error(error, error_size, "image has no pixels or more than 2^28");
+        return 0;
+    }
+    std::vector<float> all(std::size_t(w) * h * n);
+    if (!in->read_image(0, 0, 0, n, OIIO::TypeDesc::FLOAT, all.data())) {
+        set_error(error, error_size, in->geterror());
+        return 0;
+    }
+    std::vector<float> rgb(std::size_t(w) * h * 3);
+    for (std::size_t i = 0; i < std::size_t(w) * h; ++i)
+        for (int c = 0; c < 3; ++c) rgb[i * 3 + c] = all[i * n + (n >= 3 ? c : 0)];
+    *encoded = spec.format.is_floating_point() ? 0 : 1;
+    sink(context, rgb.data(), w, h);
+    return 1;
+}
 
 // 1 when OpenImageIO has a writer for this file name's extension.
 int kerf_oiio_can_write(const char* path) { return OIIO::ImageOutput::create(path) ? 1 : 0; }
