@@ -98,6 +98,7 @@ const char* usage_text() {
            "    --resume skips frames and bands already written by the same render\n"
            "dialect: --strict (kerf's rules, the default for .sdl) or --lenient / --openscad\n"
            "         (OpenSCAD's rules, the default for .scad; docs/openscad.md)\n"
+           "warnings: --werror makes every warning an error (exit 1)\n"
            "limits (docs/spec.md §8): --max-call-depth N --max-nesting N --max-iterations N\n"
            "                  --max-list N --max-primitives N --max-steps N\n"
            "exit status: 0 ok, 1 scene errors, 2 bad command line or unreadable file,\n"
@@ -171,6 +172,7 @@ Options parse_options(const std::vector<std::string>& args) {
         // OpenSCAD's lenient rules and everything else kerf's strict ones.
         else if (a == "--openscad" || a == "--lenient") o.eval.dialect = Dialect::Lenient;
         else if (a == "--strict") o.eval.dialect = Dialect::Strict;
+        else if (a == "--werror") o.eval.werror = true;
         else if (a == "--stats") o.stats = true;
         else if (a == "--alpha") o.render.alpha = render::Alpha::Straight;  // the format settles which (below)
         else if (a == "--no-progress") o.progress = false;

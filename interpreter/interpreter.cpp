@@ -92,7 +92,7 @@ graph::SceneGraph Evaluator::run(ast::Program program) {
         warn(first_exact_curve_, "$fn, $fa and $fs are ignored on " + std::to_string(exact_curves_) +
                                      (exact_curves_ == 1 ? " curved shape" : " curved shapes") +
                                      " (the first here): kerf renders curves exact");
-    if (!errors_.empty()) throw_errors();
+    if (!errors_.empty() || (opt_.werror && !warnings_.empty())) throw_errors();
     SourceLoc top{prog.file, 1, 1};
     if (root_override_ >= 0) {
         out_.pending.assign(1, static_cast<std::uint32_t>(root_override_));
@@ -114,9 +114,16 @@ void Evaluator::record_error(const SourceError& e) {
 }
 
 void Evaluator::throw_errors() {
-    SourceError first(errors_.front());
-    first.reported = warnings_;
-    first.reported.insert(first.reported.end(), errors_.begin(), errors_.end());
+    std::vector<Diagnostic> all = warnings_;
+    if (opt_.werror)
+        for (Diagnostic& w : all) {
+            w.severity = Severity::Error;
+            w.message += " [--werror]";
+        }
+    all.insert(all.end(), errors_.begin(), errors_.end());
+    // Under --werror the first warning is the first error of the run.
+    SourceError first(opt_.werror && !warnings_.empty() ? all.front() : errors_.front());
+    first.reported = std::move(all);
     throw first;
 }
 

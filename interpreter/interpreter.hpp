@@ -32,6 +32,9 @@ enum class Dialect { Auto, Strict, Lenient };
 struct EvalOptions {
     EvalLimits limits;
     Dialect dialect = Dialect::Auto;
+    // --werror: each warning is reported as an error ("... [--werror]") and
+    // the run fails as at an error, after the whole script has run.
+    bool werror = false;
     std::vector<std::string> include_dirs;   // -I, searched after the including file's folder
     std::string stdlib_dir;                  // searched last; empty = KERF_STDLIB_DIR
     std::vector<std::pair<std::string, std::string>> defines;  // -D name=value (value is an expression)

@@ -119,6 +119,7 @@ void cone(ModuleCall& c) {
     double h = arg_positive(a, 0, "h", 1);
     double r = radius(a, 1, 3, "r", "d").value_or(1);
     if (!(r > 0)) arg_error(a, "radius must be positive, got " + format_number(r));
+    c.exact_curve();  // curved like a cylinder: a $fn on it is ignored too
     frustum(c, h, r, 0, arg_bool(a, 2, "center", false));
 }
 
@@ -128,6 +129,7 @@ void torus(ModuleCall& c) {
     double r = arg_positive(a, 1, "r", 0.25);
     if (!(r < R))
         arg_error(a, "minor radius r must be smaller than R, got r = " + format_number(r) + ", R = " + format_number(R));
+    c.exact_curve();
     c.add_primitive(P::Torus, {R, r});
 }
 
