@@ -56,8 +56,8 @@ TEST_CASE("projection() of unions is exact; of differences the union of sections
     check_area("projection() scale([1, 2, 5]) sphere(1);", 2 * kPi, 1e-4);
     check_area("projection() rotate([90, 0, 0]) cylinder(h = 4, r = 1, center = true);", 8, 1e-4);
     // An extrusion seen from its side and tilted: its section swept along the projected axis.
-    check_area("projection() rotate([90, 0, 0]) linear_extrude(4, center = true) square(2, center = true);", 8, 1e-4);
-    check_area("projection() rotate([60, 0, 0]) linear_extrude(4, center = true) square(2, center = true);",
+    check_area("projection() rotate([90, 0, 0]) linear_extrude(4, center = true) polygon([[-1, -1], [1, -1], [1, 1], [-1, 1]]);", 8, 1e-4);
+    check_area("projection() rotate([60, 0, 0]) linear_extrude(4, center = true) polygon([[-1, -1], [1, -1], [1, 1], [-1, 1]]);",
                2 * (4 * std::sin(kPi / 3) + 2 * std::cos(kPi / 3)), 1e-4);
     // sphere minus a vertical hole: the disc minus the hole (slices: error ≤ 1e-3 at the default tolerance).
     check_area("projection() difference() { sphere(5); cylinder(h = 12, r = 1, center = true); }", kPi * 24, 1e-3);
