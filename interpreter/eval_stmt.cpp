@@ -15,7 +15,7 @@ namespace {
 // different solid with exit 0). Null for any other name.
 const char* unimplemented_openscad_module(std::string_view name) {
     static constexpr std::pair<std::string_view, const char*> kMissing[] = {
-        {"projection", "a 2D operation"}, {"surface", "a height map"},
+        {"surface", "a height map"},
     };
     for (const auto& [n, what] : kMissing)
         if (n == name) return what;

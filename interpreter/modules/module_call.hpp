@@ -76,6 +76,7 @@ std::span<const ModuleEntry> revolve_modules();  // rotate_extrude.cpp
 std::span<const ModuleEntry> text_modules();     // text.cpp
 std::span<const ModuleEntry> hull_modules();     // hull_ops.cpp: hull, minkowski, resize
 std::span<const ModuleEntry> offset_modules();   // offset.cpp
+std::span<const ModuleEntry> projection_modules();  // projection.cpp
 
 // The built-in module called `name`, or null.
 const ModuleEntry* find_module(std::string_view name);
