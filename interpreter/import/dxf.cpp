@@ -30,6 +30,38 @@ constexpr double kJoin = 1e-3;
 
 using Chain = std::vector<glm::dvec2>;
 
+// The arc of a polyline vertex's bulge b from p to q: b = tan(θ/4) of its
+// included angle θ, counter-clockwise when b > 0, so the arc lies right of
+// p→q then; the sagitta is |b|·|q − p|/2.
+DxfSegment bulge_arc(glm::dvec2 p, glm::dvec2 q, double b) {
+    const glm::dvec2 d = q - p;
+    const double len = glm::length(d);
+    DxfSegment s;
+    s.p = p, s.q = q;
+    s.normal = (b > 0 ? 1.0 : -1.0) * glm::dvec2(d.y, -d.x) / len;
+    s.sagitta = std::abs(b) * len / 2;
+    s.r = (len * len / 4 + s.sagitta * s.sagitta) / (2 * s.sagitta);
+    s.centre = (p + q) / 2.0 + s.normal * (s.sagitta - s.r);
+    s.hole = false;
+    return s;
+}
+
+// The points strictly between p and q of the bulge's arc, chords within
+// the tolerance of the radius.
+Chain bulge_points(glm::dvec2 p, glm::dvec2 q, double b, double tolerance) {
+    if (p == q) return {};
+    const DxfSegment s = bulge_arc(p, q, b);
+    const double sweep = 4 * std::atan(b);  // signed
+    const int n = std::max(1, int(std::ceil(circle_segments(tolerance) * std::abs(sweep) / (2 * std::numbers::pi))));
+    const double a0 = std::atan2(p.y - s.centre.y, p.x - s.centre.x);
+    Chain c;
+    for (int i = 1; i < n; ++i) {
+        const double t = a0 + sweep * i / n;
+        c.push_back(s.centre + s.r * glm::dvec2(std::cos(t), std::sin(t)));
+    }
+    return c;
+}
+
 // Model-space entities are drawn as they come; a BLOCK's are recorded and
 // drawn at each INSERT of it, under the insert's map (OpenSCAD reads
 // blocks so too: example013.dxf is four inserts of two blocks).
@@ -76,7 +108,7 @@ public:
     }
     void addVertex(const DL_VertexData& d) override {
         record([this, d] {
-            if (poly_) current_.push_back(map(d.x, d.y));
+            if (poly_) current_.push_back({d.x, d.y, std::isfinite(d.bulge) ? d.bulge : 0.0});
         });
     }
     void endSequence() override { record([this] { finish(); }); }
@@ -106,13 +138,46 @@ public:
         if (block_) return block_->push_back([this] { finish(); });
         if (!poly_) return;
         poly_ = false;
-        if (poly_closed_ && current_.size() >= 3) loops.push_back(std::move(current_));
-        else if (current_.size() >= 2) {
-            if (poly_closed_) current_.push_back(current_.front());
-            for (std::size_t i = 0; i + 1 < current_.size(); ++i) chains.push_back({current_[i], current_[i + 1]});
+        const std::size_t n = current_.size();
+        bool bulged = false;
+        for (std::size_t i = 0; i < n; ++i) bulged |= (poly_closed_ || i + 1 < n) && current_[i].z != 0;
+        // A closed polyline with bulges keeps them exact (as chord edges
+        // and arcs) when the insert map keeps circles round; otherwise the
+        // arcs are flattened here, in block coordinates, then mapped.
+        const Map2& a = map_;
+        const glm::dvec2 u(a[0]), v(a[1]);
+        const bool similar = std::abs(glm::length(u) - glm::length(v)) <= 1e-12 * glm::length(u) &&
+                             std::abs(glm::dot(u, v)) <= 1e-12 * glm::dot(u, u);
+        if (poly_closed_ && n >= 2 && bulged && similar) {
+            Chain loop;
+            for (std::size_t i = 0; i < n; ++i) {
+                loop.push_back(map(current_[i].x, current_[i].y));
+                // A mirror turns a counter-clockwise arc clockwise.
+                if (current_[i].z != 0) arcs.push_back({loops.size(), i, determinant(a) < 0 ? -current_[i].z : current_[i].z});
+            }
+            loops.push_back(std::move(loop));
+        } else {
+            Chain pts;
+            for (std::size_t i = 0; i < n; ++i) {
+                const glm::dvec3 p = current_[i], q = current_[(i + 1) % n];
+                pts.push_back(map(p.x, p.y));
+                if (p.z != 0 && (poly_closed_ || i + 1 < n))
+                    for (glm::dvec2 b : bulge_points(glm::dvec2(p), glm::dvec2(q), p.z, o_.tolerance)) pts.push_back(map(b.x, b.y));
+            }
+            if (poly_closed_ && pts.size() >= 3) loops.push_back(std::move(pts));
+            else if (pts.size() >= 2) {
+                if (poly_closed_) pts.push_back(pts.front());
+                for (std::size_t i = 0; i + 1 < pts.size(); ++i) chains.push_back({pts[i], pts[i + 1]});
+            }
         }
         current_.clear();
     }
+
+    struct Arc {
+        std::size_t loop, edge;  // loops[loop], from vertex edge to the next
+        double bulge;            // tan(included angle / 4), counter-clockwise when positive
+    };
+    std::vector<Arc> arcs;
 
 private:
     const DxfOptions& o_;
@@ -121,7 +186,7 @@ private:
     Map2 map_{1.0};                                        // block -> model space while inserting
     int depth_ = 0;
     bool poly_ = false, poly_closed_ = false;
-    Chain current_;
+    std::vector<glm::dvec3> current_;  // the polyline's vertices, block coordinates, z the bulge
     std::uint64_t entities_ = 0;
 
     // An entity of the chosen layer: drawn now, or recorded in its block.
@@ -248,6 +313,80 @@ bool crosses(const Chain& loop, const DxfCircle& c) {
     return false;
 }
 
+// The most of u·x over the segment: at an end of the chord, or where the
+// circle's normal is u if that point is on the arc.
+double support(const DxfSegment& s, glm::dvec2 u) {
+    double m = std::max(glm::dot(u, s.p), glm::dot(u, s.q));
+    const glm::dvec2 far = s.centre + s.r * u;
+    if (glm::dot(s.normal, far - s.p) >= 0) m = std::max(m, glm::dot(u, far));
+    return m;
+}
+
+// Whether the edge a→b enters the segment's interior: its part beyond the
+// chord line comes nearer the centre than the radius.
+bool enters(const DxfSegment& s, glm::dvec2 a, glm::dvec2 b) {
+    const double eps = 1e-9 * s.r;
+    double ha = glm::dot(s.normal, a - s.p), hb = glm::dot(s.normal, b - s.p);
+    if (ha <= eps && hb <= eps) return false;
+    if (ha < eps) a += (b - a) * ((eps - ha) / (hb - ha)), ha = eps;
+    if (hb < eps) b += (a - b) * ((eps - hb) / (ha - hb));
+    const glm::dvec2 d = b - a, c = s.centre - a;
+    const double t = glm::dot(d, d) > 0 ? std::clamp(glm::dot(c, d) / glm::dot(d, d), 0.0, 1.0) : 0.0;
+    return glm::length(a + t * d - s.centre) < s.r - eps;
+}
+
+bool overlap(const DxfSegment& s, const DxfSegment& o) {
+    const double eps = 1e-9 * std::max(s.r, o.r);
+    if (glm::length(s.centre - o.centre) >= s.r + o.r - eps) return false;
+    return support(o, s.normal) > glm::dot(s.normal, s.p) + eps && support(s, o.normal) > glm::dot(o.normal, o.p) + eps;
+}
+
+// Each bulge of the polylines loops[base..] kept exact when its segment
+// meets no other edge, segment or circle; the rest flattened into their
+// loops. Then each kept one is a hole where the loops' even-odd fill holds
+// it, as a point inside it tells.
+template <typename ArcList>
+void keep_arcs(DxfShape& out, const ArcList& arcs, std::size_t base, const std::vector<DxfCircle>& circles,
+               double tolerance) {
+    std::vector<DxfSegment> seg;
+    std::vector<bool> keep;
+    for (const auto& a : arcs) {
+        const Chain& l = out.loops[base + a.loop];
+        const glm::dvec2 p = l[a.edge], q = l[(a.edge + 1) % l.size()];
+        keep.push_back(p != q);
+        seg.push_back(p != q ? bulge_arc(p, q, a.bulge) : DxfSegment{});
+    }
+    for (std::size_t i = 0; i < seg.size(); ++i) {
+        if (!keep[i]) continue;
+        const DxfSegment& s = seg[i];
+        for (std::size_t li = 0; li < out.loops.size() && keep[i]; ++li) {
+            const Chain& l = out.loops[li];
+            for (std::size_t e = 0; e < l.size() && keep[i]; ++e)
+                if (!(li == base + arcs[i].loop && e == arcs[i].edge) && enters(s, l[e], l[(e + 1) % l.size()]))
+                    keep[i] = false;
+        }
+        for (std::size_t j = 0; j < seg.size() && keep[i]; ++j)
+            if (j != i && seg[j].r > 0 && overlap(s, seg[j])) keep[i] = false;
+        for (const DxfCircle& c : circles)  // discs apart, so no circle's test needs the arcs
+            if (glm::length(c.centre - s.centre) < c.r + s.r + kJoin) keep[i] = false;
+    }
+    // Flattened arcs, last edge first so the earlier edges keep their indices.
+    for (std::size_t k = seg.size(); k-- > 0;) {
+        if (keep[k] || seg[k].r == 0) continue;
+        Chain& l = out.loops[base + arcs[k].loop];
+        const Chain pts = bulge_points(seg[k].p, seg[k].q, arcs[k].bulge, tolerance);
+        l.insert(l.begin() + std::ptrdiff_t(arcs[k].edge + 1), pts.begin(), pts.end());
+    }
+    for (std::size_t i = 0; i < seg.size(); ++i) {
+        if (!keep[i]) continue;
+        const glm::dvec2 t = (seg[i].p + seg[i].q) / 2.0 + seg[i].normal * (seg[i].sagitta / 2);
+        int depth = 0;
+        for (const Chain& l : out.loops) depth += inside(l, t);
+        seg[i].hole = depth % 2 == 1;
+        out.segments.push_back(seg[i]);
+    }
+}
+
 // dxflib skips what it cannot parse, so a text file that is no DXF at all
 // would read as an empty drawing: every other line of an ASCII DXF is an
 // integer group code, checked here first to name the line that is not.
@@ -288,7 +427,9 @@ DxfShape import_dxf(const std::string& path, const DxfOptions& options) {
     if (!got.bad.empty()) throw MeshFormatError("not a readable DXF file: " + got.bad);
     DxfShape out;
     out.loops = join_chains(std::move(got.chains), out.open_paths);
+    const std::size_t base = out.loops.size();
     for (Chain& l : got.loops) out.loops.push_back(std::move(l));
+    keep_arcs(out, got.arcs, base, got.circles, options.tolerance);
     // A circle stays exact when it meets no other outline and holds none.
     const std::vector<DxfCircle>& cs = got.circles;
     std::vector<bool> exact(cs.size(), true);

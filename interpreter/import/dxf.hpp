@@ -18,12 +18,28 @@ struct DxfCircle {
     double r;
 };
 
+// A bulge of a closed polyline (the arc from p to q, centre and radius)
+// kept exact: the circular segment between chord and arc is the disc cut
+// by the chord's half-plane on the arc's side; the loops hold the chord, so
+// the drawing is their even-odd region XOR the segment, which is a union
+// (hole = false) or a cut (hole = true) because the segment meets no other
+// outline.
+struct DxfSegment {
+    glm::dvec2 centre;
+    double r;
+    glm::dvec2 p, q;
+    glm::dvec2 normal;  // unit, from the chord toward the arc
+    double sagitta;
+    bool hole;
+};
+
 struct DxfShape {
     std::vector<std::vector<glm::dvec2>> loops;  // closed, arcs flattened within the tolerance
     // Whole circles that cross no other outline and hold none inside: kept
     // exact, each with its even-odd depth (how many outlines hold it).
     std::vector<DxfCircle> circles;
     std::vector<int> circle_depth;
+    std::vector<DxfSegment> segments;  // exact bulges (the rest flattened into loops)
     std::size_t open_paths = 0;  // chains that do not close: closed by a straight edge, as OpenSCAD does
 };
 

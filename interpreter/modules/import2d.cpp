@@ -2,7 +2,7 @@
 // (shapes2d.cpp): its flattened loops one even-odd Prism, its exact circles
 // Cylinders — added where the loops around them are even, cut where odd,
 // which is the even-odd fill because such a circle crosses nothing and
-// holds nothing.
+// holds nothing; its exact bulges so too, each a disc ∩ square.
 #include "interpreter/modules/import2d.hpp"
 
 #include <limits>
@@ -33,6 +33,23 @@ void add_circle(ModuleCall& c, const DxfCircle& circle) {
     g.wrap(mark, graph::NodeKind::Transform, static_cast<std::uint32_t>(g.graph.matrices.size() - 1), c.st.loc);
 }
 
+// A bulge's circular segment: its disc cut by a square in the chord's frame
+// (x along the chord, y toward the arc from the chord line), which holds
+// the whole segment and no more of the disc than lies beyond the chord.
+void add_segment(ModuleCall& c, const DxfSegment& s) {
+    GraphBuilder& g = c.graph();
+    const std::size_t mark = g.mark();
+    add_circle(c, {s.centre, s.r});
+    add_flat(c, P::Box, {-1.001 * s.r, 0, 0, 1.001 * s.r, 1.001 * s.sagitta, 1});
+    glm::dmat4 m(1.0);
+    m[0] = glm::dvec4(s.normal.y, -s.normal.x, 0, 0);  // (x, normal) right-handed
+    m[1] = glm::dvec4(s.normal, 0, 0);
+    m[3] = glm::dvec4((s.p + s.q) / 2.0, 0, 1);
+    g.graph.matrices.push_back(m);
+    g.wrap(g.mark() - 1, graph::NodeKind::Transform, static_cast<std::uint32_t>(g.graph.matrices.size() - 1), c.st.loc);
+    g.make_node(mark, graph::NodeKind::Intersection, c.st.loc);
+}
+
 }  // namespace
 
 void import_drawing(ModuleCall& c, const std::string& path) {
@@ -56,7 +73,7 @@ void import_drawing(ModuleCall& c, const std::string& path) {
     if (shape.open_paths)
         c.warn(std::to_string(shape.open_paths) + " open path(s) in " + name +
                " closed by a straight edge from end to start, as OpenSCAD does");
-    if (shape.loops.empty() && shape.circles.empty())
+    if (shape.loops.empty() && shape.circles.empty() && shape.segments.empty())
         return c.warn(name + (o.layer.empty() ? "" : " layer \"" + o.layer + "\"") +
                       " holds no closed outline: the empty shape");
     GraphBuilder& g = c.graph();
@@ -76,9 +93,13 @@ void import_drawing(ModuleCall& c, const std::string& path) {
     }
     for (std::size_t i = 0; i < shape.circles.size(); ++i)
         if (shape.circle_depth[i] % 2 == 0) add_circle(c, shape.circles[i]);
+    for (const DxfSegment& s : shape.segments)
+        if (!s.hole) add_segment(c, s);
     const std::size_t holes = g.mark();
     for (std::size_t i = 0; i < shape.circles.size(); ++i)
         if (shape.circle_depth[i] % 2 == 1) add_circle(c, shape.circles[i]);
+    for (const DxfSegment& s : shape.segments)
+        if (s.hole) add_segment(c, s);
     if (g.mark() == holes) return g.group(mark, c.st.loc);
     // The filled part first (a union when several), then the holes cut from it.
     std::vector<std::uint32_t> cut(g.pending.begin() + std::ptrdiff_t(holes), g.pending.end());

@@ -4,6 +4,7 @@
 // 2021's own import of the same file (its STL export's volume).
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <numbers>
@@ -40,6 +41,15 @@ std::string circle(Pt c, double r, const std::string& layer = "0") {
 std::string lwpolyline(std::initializer_list<Pt> pts, const std::string& layer = "0") {
     std::string s = entity("LWPOLYLINE", layer, {{90, std::to_string(pts.size())}, {70, "1"}});
     for (const Pt& p : pts) s += "10\n" + num(p.first) + "\n20\n" + num(p.second) + "\n";
+    return s;
+}
+// A closed LWPOLYLINE of (x, y, bulge) vertices (group 42 where nonzero).
+std::string bulged(std::initializer_list<std::array<double, 3>> pts) {
+    std::string s = entity("LWPOLYLINE", "0", {{90, std::to_string(pts.size())}, {70, "1"}});
+    for (const auto& p : pts) {
+        s += "10\n" + num(p[0]) + "\n20\n" + num(p[1]) + "\n";
+        if (p[2] != 0) s += "42\n" + num(p[2]) + "\n";
+    }
     return s;
 }
 std::string dxf(const std::string& entities) { return "0\nSECTION\n2\nENTITIES\n" + entities + "0\nENDSEC\n0\nEOF\n"; }
@@ -180,4 +190,51 @@ TEST_CASE("OpenSCAD's example013: four INSERTs of two BLOCKs, measured as OpenSC
     // example013.scad` has volume 61333.33 (Debian's openscad 2021.01).
     const Measured m = measure(dir, slurp(examples / "example013.scad"));
     check_volume(m, 61333.33, 1e-3);
+}
+
+TEST_CASE("LWPOLYLINE bulges are exact arcs: a disc, a rounded square, a bite out of an edge", "[dxf]") {
+    auto dir = test_dir("dxf_bulge");
+    const double t = std::tan(pi / 8);  // a quarter circle's bulge
+    write_file(dir / "disc.dxf", dxf(bulged({{0, 0, 1}, {10, 0, 1}})));
+    write_file(dir / "round.dxf", dxf(bulged({{2, 0, 0}, {8, 0, t}, {10, 2, 0}, {10, 8, t}, {8, 10, 0}, {2, 10, t},
+                                              {0, 8, 0}, {0, 2, t}})));
+    // Clockwise from (3, 0) to (7, 0): the half disc lies inside the square, a hole.
+    write_file(dir / "bite.dxf", dxf(bulged({{0, 0, 0}, {3, 0, -1}, {7, 0, 0}, {10, 0, 0}, {10, 10, 0}, {0, 10, 0}})));
+    check_volume(measure(dir, "linear_extrude(height = 2) import(\"disc.dxf\");"), 2 * 25 * pi, 1e-6);
+    const double round = 100 - (4 - pi) * 4;
+    check_volume(measure(dir, "linear_extrude(height = 1) import(\"round.dxf\");"), round, 1e-6);
+    check_volume(measure(dir, "linear_extrude(height = 1) import(\"bite.dxf\");"), 100 - 2 * pi, 1e-6);
+    // Exact: the bulges are discs cut by boxes in the dump, not chords.
+    auto r = run_kerf("dump '" + write_file(dir / "d.scad", "import(\"bite.dxf\");\n") + "'", dir);
+    CHECK(r.out.find("cylinder z0=0 z1=1 r0=2 r1=2") != std::string::npos);
+    // OpenSCAD 2021.01 reads no bulges (the disc file is an empty object
+    // there), so its oracle is the same outline drawn with its own circles.
+    const double ref = openscad_volume(dir, "$fn = 512; translate([2, 2]) offset(r = 2) square(6); "
+                                            "translate([20, 0]) linear_extrude(2) circle(5);");
+    if (std::isfinite(ref)) {
+        const Measured both = measure(dir, "linear_extrude(height = 1) import(\"round.dxf\"); "
+                                           "translate([20, 0]) linear_extrude(2) translate([-5, 0]) import(\"disc.dxf\");");
+        check_volume(both, ref, 1e-4);
+    }
+}
+
+TEST_CASE("bulges that meet other outlines are flattened within the curve tolerance", "[dxf]") {
+    auto dir = test_dir("dxf_bulge_flat");
+    // A half disc on the square's top edge, and a second square crossing it:
+    // the arc meets the other outline, so it is chords, within tolerance.
+    write_file(dir / "x.dxf", dxf(bulged({{0, 0, 0}, {4, 0, 0}, {4, 4, 1}, {0, 4, 0}}) +
+                                  lwpolyline({{1, 5}, {3, 5}, {3, 7}, {1, 7}})));
+    // Even-odd: the half disc (radius 2 about (2, 4)) XOR the square
+    // [1, 3] x [5, 7]; their overlap `in` counted on a fine grid.
+    const double half = 16 + 2 * pi;
+    double in = 0;
+    const int n = 4000;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            const double x = -1 + 2.0 * (i + 0.5) / n, y = 1 + 2.0 * (j + 0.5) / n;
+            in += x * x + y * y < 4;
+        }
+    in *= 4.0 / (double(n) * n);
+    const double want = half - in + (4 - in);
+    check_volume(measure(dir, "linear_extrude(height = 1) import(\"x.dxf\");"), want, 2e-3);
 }
