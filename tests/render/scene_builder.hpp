@@ -109,6 +109,16 @@ inline csg::Scene make_scene(const Tree& root, std::vector<csg::Material> materi
     return s;
 }
 
+// An orthographic camera straight down -z onto `at` from `above`, +y up,
+// `height` units of the scene across the image.
+inline void look_down(csg::Scene& s, glm::dvec3 at, double above, double height) {
+    s.camera.orthographic = true;
+    s.camera.position = at + glm::dvec3(0, 0, above);
+    s.camera.look_at = at;
+    s.camera.up = {0, 1, 0};
+    s.camera.height = height;
+}
+
 inline glm::dmat4 translate(double x, double y, double z) { return glm::translate(glm::dmat4(1.0), {x, y, z}); }
 inline glm::dmat4 scale(double x, double y, double z) { return glm::scale(glm::dmat4(1.0), {x, y, z}); }
 inline glm::dmat4 rotate_deg(double deg, glm::dvec3 axis) { return glm::rotate(glm::dmat4(1.0), glm::radians(deg), axis); }

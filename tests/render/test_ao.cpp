@@ -73,11 +73,7 @@ TEST_CASE("ambient occlusion in a render: ambient dimmed by the closed-form shar
     csg::Scene s = make_scene(t);
     s.lights.clear();
     s.ambient_occlusion = {256, 2.0};
-    s.camera.orthographic = true;
-    s.camera.position = {0, 0, 0.5};
-    s.camera.look_at = {0, 0, 0};
-    s.camera.up = {0, 1, 0};
-    s.camera.height = 0.01;
+    look_down(s, {0, 0, 0}, 0.5, 0.01);
     render::RenderOptions o;
     o.width = o.height = 4;
     const auto [one, two] = on_1_and_2_threads(s, o);

@@ -144,11 +144,7 @@ TEST_CASE("planar texture on a box seen head-on: each quadrant where the mapping
     s.leaves.at(0).material_frame = 1;
     s.lights.clear();  // colour = ambient 0.1 × albedo, nothing else
     s.background = glm::dvec3(0.5, 0.25, 0.125);
-    s.camera.orthographic = true;
-    s.camera.position = {4, 1, 10};
-    s.camera.look_at = {4, 1, 0};
-    s.camera.up = {0, 1, 0};
-    s.camera.height = 2;
+    look_down(s, {4, 1, 0}, 10, 2);
     render::RenderOptions o;
     o.width = o.height = 8;
     o.threads = 1;
