@@ -215,6 +215,7 @@ Value Evaluator::call_closure(const Value& f, const std::vector<ast::Binding>& a
 }
 
 Value Evaluator::call_builtin(const ast::Expr& e, Scope& s) {
+    if (e.text == "dxf_dim" || e.text == "dxf_cross") return call_dxf_function(e, s);
     const Builtin* fn = find_builtin(e.text);
     if (!fn) {
         if (!lenient_)

@@ -120,6 +120,7 @@ private:
     void push_element(ValueList& out, Value v, const SourceLoc& loc);
     void do_echo(const std::vector<ast::Binding>& args, Scope& s);
     Value call_builtin(const ast::Expr& e, Scope& s);
+    Value call_dxf_function(const ast::Expr& e, Scope& s);  // dxf_functions.cpp: dxf_dim, dxf_cross
     // function_values.cpp: function literals, their captures and calls.
     Value make_closure(const ast::Expr& e, Scope& s);
     Value call_closure(const Value& f, const std::vector<ast::Binding>& args, Scope& caller, const SourceLoc& loc,

@@ -232,7 +232,7 @@ private:
 // kJoin grid, neighbours searched). Returns the loops; a chain that does
 // not close is closed by a straight edge, as OpenSCAD 2021 does ("we don't
 // support open paths; closing them to be compatible"), and counted.
-std::vector<Chain> join_chains(std::vector<Chain> chains, std::size_t& open) {
+std::vector<Chain> join_chains(std::vector<Chain> chains, std::size_t& open, std::vector<Chain>& lone) {
     struct Key {
         std::int64_t x, y;
         bool operator==(const Key&) const = default;
@@ -288,6 +288,7 @@ std::vector<Chain> join_chains(std::vector<Chain> chains, std::size_t& open) {
             // closed by the straight edge from its end back to its start.
             ++open;
             while (const Chain* piece = take(start, start)) loop.insert(loop.begin(), piece->rbegin(), piece->rend() - 1);
+            if (loop.size() == 2) lone.push_back(loop);
         }
         if (loop.size() >= 3) loops.push_back(std::move(loop));
     }
@@ -426,7 +427,7 @@ DxfShape import_dxf(const std::string& path, const DxfOptions& options) {
     if (!ok) throw MeshFormatError("not a readable DXF file");
     if (!got.bad.empty()) throw MeshFormatError("not a readable DXF file: " + got.bad);
     DxfShape out;
-    out.loops = join_chains(std::move(got.chains), out.open_paths);
+    out.loops = join_chains(std::move(got.chains), out.open_paths, out.lone_lines);
     const std::size_t base = out.loops.size();
     for (Chain& l : got.loops) out.loops.push_back(std::move(l));
     keep_arcs(out, got.arcs, base, got.circles, options.tolerance);

@@ -40,7 +40,8 @@ struct DxfShape {
     std::vector<DxfCircle> circles;
     std::vector<int> circle_depth;
     std::vector<DxfSegment> segments;  // exact bulges (the rest flattened into loops)
-    std::size_t open_paths = 0;  // chains that do not close: closed by a straight edge, as OpenSCAD does
+    std::size_t open_paths = 0;
+    std::vector<std::vector<glm::dvec2>> lone_lines;  // open chains of one segment, in file order (dxf_cross)  // chains that do not close: closed by a straight edge, as OpenSCAD does
 };
 
 struct DxfOptions {
