@@ -71,7 +71,7 @@ TEST_CASE("viewport variables left unset take OpenSCAD's defaults; none set keep
     same(c.position, {0, 0, 20});
 }
 
-TEST_CASE("-D sets the viewport like a top-level binding") {
+TEST_CASE("a -D value sets the viewport like a top-level binding") {
     EvalOptions o;
     o.defines = {{"$vpr", "[0, 0, 0]"}, {"$vpd", "7"}};
     auto f = std::make_shared<SourceFile>();
