@@ -78,7 +78,8 @@ Value Evaluator::lookup(const ast::Expr& e, Scope& s) {
         if (name == "$fs") return Value(2);
         if (name == "$preview") return Value(false);
         // The viewport, as OpenSCAD 2021 has it when run from the command
-        // line (`openscad -o x.echo`): read only; kerf's camera is its own.
+        // line (`openscad -o x.echo`); a top-level binding of one places the
+        // default camera (viewport.cpp).
         if (name == "$vpr" || name == "$vpt") return Value::list(ValueList{Value(0), Value(0), Value(0)});
         if (name == "$vpd") return Value(500);
         if (name == "$vpf") return Value(22.5);
