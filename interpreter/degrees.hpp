@@ -3,10 +3,13 @@
 // 45, 60, 90 and every multiple) give exact values and sin(180) is 0, not
 // 1.2e-16. One definition for both rotate() and the sin()/cos() built-ins,
 // so a multmatrix written with sin() is the same solid as rotate().
+// rotate([x, y, z])'s matrix is here too, for the viewport's $vpr.
 #pragma once
 #include <cmath>
 #include <limits>
 #include <numbers>
+
+#include <glm/glm.hpp>
 
 namespace kerf {
 
@@ -35,5 +38,21 @@ inline double cos_deg(double x) {
     if (!std::isfinite(x)) return std::numeric_limits<double>::quiet_NaN();
     return sin_deg(std::fmod(x, 360.0) + 90.0);
 }
+
+// A rotation by `d` degrees turning axis i towards axis j (column-major:
+// row r, column k is m[k][r]); about x, y and z below.
+inline glm::dmat4 rot_plane(double d, int i, int j) {
+    const double c = cos_deg(d), s = sin_deg(d);
+    glm::dmat4 m(1.0);
+    m[i][i] = c, m[i][j] = s;
+    m[j][i] = -s, m[j][j] = c;
+    return m;
+}
+inline glm::dmat4 rot_x(double d) { return rot_plane(d, 1, 2); }
+inline glm::dmat4 rot_y(double d) { return rot_plane(d, 2, 0); }
+inline glm::dmat4 rot_z(double d) { return rot_plane(d, 0, 1); }
+
+// rotate([x, y, z]): about x first, then y, then z.
+inline glm::dmat4 euler_rotation(const glm::dvec3& deg) { return rot_z(deg.z) * rot_y(deg.y) * rot_x(deg.x); }
 
 }  // namespace kerf

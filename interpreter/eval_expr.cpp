@@ -1,6 +1,7 @@
 // Expressions: names, operators, calls, list comprehensions, let/echo/assert.
 #include <cmath>
 #include <iostream>
+#include <utility>
 
 #include "interpreter/builtins/builtins.hpp"
 #include "interpreter/evaluator.hpp"
@@ -77,7 +78,8 @@ Value Evaluator::lookup(const ast::Expr& e, Scope& s) {
         if (name == "$fs") return Value(2);
         if (name == "$preview") return Value(false);
         // The viewport, as OpenSCAD 2021 has it when run from the command
-        // line (`openscad -o x.echo`): read only; kerf's camera is its own.
+        // line (`openscad -o x.echo`); a top-level binding of one places the
+        // default camera (viewport.cpp).
         if (name == "$vpr" || name == "$vpt") return Value::list(ValueList{Value(0), Value(0), Value(0)});
         if (name == "$vpd") return Value(500);
         if (name == "$vpf") return Value(22.5);
@@ -397,8 +399,19 @@ Value Evaluator::eval(const ast::Expr& e, Scope& s) {
                 if (!std::isfinite(x.as_number())) throw SourceError(e.items[i]->loc, "range bound must be finite, got " + format_number(x.as_number()));
                 v[i] = x.as_number();
             }
-            if (e.items.size() == 2) return Value::range(v[0], 1, v[1]);
+            if (e.items.size() == 2) {
+                // OpenSCAD 2021 counts [5:1] down as [1:1:5] (docs/openscad.md, "Ranges").
+                if (lenient_ && v[0] > v[1]) {
+                    warn(e.loc, "Using ranges of the form [begin:end] with begin value greater than the end value is deprecated");
+                    std::swap(v[0], v[1]);
+                }
+                return Value::range(v[0], 1, v[1]);
+            }
             if (v[1] == 0) throw SourceError(e.items[1]->loc, "range step must not be 0");
+            // A step pointing away from the end: empty in both dialects, and
+            // OpenSCAD says so where the range is made.
+            if (lenient_ && v[0] < v[2] && v[1] < 0) warn(e.loc, "begin is smaller than the end, but step is negative");
+            if (lenient_ && v[0] > v[2] && v[1] > 0) warn(e.loc, "begin is greater than the end, but step is positive");
             return Value::range(v[0], v[1], v[2]);
         }
         case K::Unary: {

@@ -186,6 +186,7 @@ void Evaluator::bind_block(const BlockInfo& info, Scope& scope, bool top_level) 
             }
         }
         if (is_dollar(a->name)) {
+            if (top_level) note_viewport(a->name, v, &a->loc);
             dyn_.push_back(DynVar{a->name, std::move(v)});
         } else {
             scope.vars[slot].value = std::move(v);

@@ -219,6 +219,17 @@ private:
     };
     std::vector<Define> defines_;
 
+    // viewport.cpp: the main file's top-level $vpr, $vpt, $vpd, $vpf (or
+    // -D ones; loc null) in binding order, and the default camera they make.
+    struct ViewportVar {
+        std::string_view name;
+        Value value;
+        const SourceLoc* loc;
+    };
+    std::vector<ViewportVar> viewport_;
+    void note_viewport(std::string_view name, const Value& v, const SourceLoc* loc);
+    void viewport_camera(const SourceLoc& top);
+
     ModuleState modules_;              // what built-in modules remember
     std::vector<Diagnostic> warnings_;
     std::int64_t root_override_ = -1;  // the first `!` subtree

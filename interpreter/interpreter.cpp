@@ -78,6 +78,7 @@ graph::SceneGraph Evaluator::run(ast::Program program) {
         // A `$` variable ($fn, $t...) may be set for the whole run even when
         // the script never assigns it, as with OpenSCAD's -D '$fn=64'.
         if (!found && !d.name.empty() && d.name[0] == '$') {
+            note_viewport(d.name, d.value, nullptr);
             dyn_.push_back(DynVar{d.name, d.value});
             continue;
         }
@@ -88,12 +89,13 @@ graph::SceneGraph Evaluator::run(ast::Program program) {
     } catch (const RunLimitError& e) {
         record_error(e);
     }
+    SourceLoc top{prog.file, 1, 1};
+    if (!out_.graph.camera) viewport_camera(top);
     if (exact_curves_)
         warn(first_exact_curve_, "$fn, $fa and $fs are ignored on " + std::to_string(exact_curves_) +
                                      (exact_curves_ == 1 ? " curved shape" : " curved shapes") +
                                      " (the first here): kerf renders curves exact");
     if (!errors_.empty() || (opt_.werror && !warnings_.empty())) throw_errors();
-    SourceLoc top{prog.file, 1, 1};
     if (root_override_ >= 0) {
         out_.pending.assign(1, static_cast<std::uint32_t>(root_override_));
     }

@@ -169,10 +169,12 @@ void appear(ModuleCall& c, const CurrentMaterial& cur) {
 void color(ModuleCall& c) {
     const Args& a = c.args;
     CurrentMaterial cur = enclosing(c);
-    // OpenSCAD 2021: `color()` leaves its children as they are, silently.
-    if (!a.has(0) && !a.has(1) && c.lenient()) return appear(c, cur);
-    if (!a.has(0)) arg_error(a, "c is required");
-    glm::dvec4 col = arg_color(a, 0, "c");
+    // OpenSCAD 2021 (c undef is no c): `color()` leaves its children as they
+    // are, silently; `color(alpha = 0.5)` keeps the colour and sets the alpha.
+    const bool has_c = a.has(0) && !(c.lenient() && a[0].is_undef());
+    if (!has_c && !a.has(1) && c.lenient()) return appear(c, cur);
+    if (!has_c && !c.lenient()) arg_error(a, "c is required");
+    glm::dvec4 col = has_c ? arg_color(a, 0, "c") : glm::dvec4(cur.m.color, 1);
     if (a.has(1)) col.a = unit_interval(a, 1, "alpha", 1);
     set_color(cur, col);
     appear(c, cur);

@@ -147,6 +147,7 @@ void paraboloid(ModuleCall& c) {
     const Args& a = c.args;
     double h = arg_positive(a, 0, "h", 1);
     double r = arg_positive(a, 1, "r", 1);
+    c.exact_curve();
     c.add_primitive(P::Paraboloid, {h, r});
 }
 
@@ -157,6 +158,7 @@ void hyperboloid(ModuleCall& c) {
     double w = arg_positive(a, 2, "waist", 0.5);
     if (!(w < r))
         arg_error(a, "waist must be smaller than r, got waist = " + format_number(w) + ", r = " + format_number(r));
+    c.exact_curve();
     c.add_primitive(P::Hyperboloid, {h, r, w});
 }
 

@@ -10,28 +10,6 @@ namespace kerf::eval {
 
 namespace {
 
-glm::dmat4 rot_x(double d) {
-    double c = cos_deg(d), s = sin_deg(d);
-    glm::dmat4 m(1.0);
-    m[1][1] = c; m[1][2] = s;
-    m[2][1] = -s; m[2][2] = c;
-    return m;
-}
-glm::dmat4 rot_y(double d) {
-    double c = cos_deg(d), s = sin_deg(d);
-    glm::dmat4 m(1.0);
-    m[0][0] = c; m[0][2] = -s;
-    m[2][0] = s; m[2][2] = c;
-    return m;
-}
-glm::dmat4 rot_z(double d) {
-    double c = cos_deg(d), s = sin_deg(d);
-    glm::dmat4 m(1.0);
-    m[0][0] = c; m[0][1] = s;
-    m[1][0] = -s; m[1][1] = c;
-    return m;
-}
-
 glm::dmat4 rot_axis(double d, glm::dvec3 u) {
     double c = cos_deg(d), s = sin_deg(d), t = 1 - c;
     glm::dmat4 m(1.0);
@@ -55,7 +33,7 @@ glm::dmat4 rotate_matrix(const Args& a) {
             e[i] = l[i].as_number();
             if (!std::isfinite(e[i])) arg_error(a, "angles must be finite, got " + to_repr(ang));
         }
-        return rot_z(e[2]) * rot_y(e[1]) * rot_x(e[0]);
+        return euler_rotation({e[0], e[1], e[2]});
     }
     double deg = arg_number(a, 0, "a", 0);
     if (!a.has(1)) return rot_z(deg);
@@ -96,12 +74,38 @@ glm::dmat4 planar(const Args& a, const glm::dmat4& m) {
     return p;
 }
 
+// |det| of the columns scaled to unit length (Hadamard's bound): 0 for a
+// map that flattens, 1 for a rotation, whatever the model's size.
+double volume_ratio(const glm::dmat3& l) {
+    glm::dmat3 u;
+    for (int k = 0; k < 3; ++k) {
+        if (!(glm::length(l[k]) > 0)) return 0;
+        u[k] = glm::normalize(l[k]);
+    }
+    return std::abs(glm::determinant(u));
+}
+
+// OpenSCAD 2021 removes a 2D shape whose transform is singular in the plane
+// (with the warning below) and keeps a 3D solid flattened to a sheet of no
+// volume, which kerf cannot show: in .scad both make nothing, with a warning.
+bool flattened_away(ModuleCall& c, const glm::dmat4& m, bool flat) {
+    if (!c.lenient()) return false;
+    if (flat && m[0][0] * m[1][1] - m[0][1] * m[1][0] == 0) {
+        c.warn("Scaling a 2D object with 0 - removing object");
+        return true;
+    }
+    if (flat || volume_ratio(glm::dmat3(m)) > 1e-12) return false;
+    c.warn("the transform flattens its children to no volume: nothing is made (OpenSCAD keeps a flat sheet)");
+    return true;
+}
+
 // The children under world_from_child `m`; nothing when they make no solid.
 void transformed(ModuleCall& c, glm::dmat4 m) {
     GraphBuilder& g = c.graph();
     std::size_t mark = g.mark();
     c.children();
     if (g.mark() == mark) return;
+    if (flattened_away(c, m, g.flat_since(mark))) return g.pending.resize(mark);
     if (g.flat_since(mark)) m = planar(c.args, m);
     g.add_matrix(m);
     g.wrap(mark, NK::Transform, static_cast<std::uint32_t>(g.graph.matrices.size() - 1), c.st.loc);
@@ -120,8 +124,8 @@ void scale(ModuleCall& c) {
     glm::dvec3 f(1);
     if (a.has(0) && a[0].is_number()) f = glm::dvec3(arg_number(a, 0, "v", 1));
     else f = arg_vec3(a, 0, "v", f, true, 1);
-    for (int k = 0; k < 3; ++k)
-        if (f[k] == 0) arg_error(a, "factor must not be 0");
+    for (int k = 0; k < 3; ++k)  // .scad: see flattened_away
+        if (f[k] == 0 && !c.lenient()) arg_error(a, "factor must not be 0");
     glm::dmat4 m(1.0);
     m[0][0] = f.x;
     m[1][1] = f.y;
@@ -140,9 +144,44 @@ void mirror(ModuleCall& c) {
     transformed(c, m);
 }
 
+// multmatrix as OpenSCAD 2021 reads it (measured from its STL): each entry
+// that is a number replaces the identity's, the matrix is divided by its
+// corner m[3][3], and the rest of the last row is dropped (no perspective).
+// A matrix that is then not finite removes the children, with OpenSCAD's
+// warning.
+void openscad_multmatrix(ModuleCall& c) {
+    const Args& a = c.args;
+    if (!a[0].is_list()) arg_error(a, "m must be a 4x4 or 3x4 matrix of numbers");
+    glm::dmat4 m(1.0);
+    bool whole = a[0].as_list().size() == 3 || a[0].as_list().size() == 4;
+    for (std::size_t r = 0; r < a[0].as_list().size() && r < 4; ++r) {
+        const Value& row = a[0].as_list()[r];
+        whole = whole && row.is_vector(4);
+        for (std::size_t k = 0; row.is_list() && k < row.as_list().size() && k < 4; ++k)
+            if (row.as_list()[k].is_number()) m[k][r] = row.as_list()[k].as_number();
+    }
+    if (!whole) c.warn("m is not a 4x4 or 3x4 matrix of numbers: the entries missing take the identity's, as OpenSCAD does");
+    const glm::dvec3 perspective(m[0][3], m[1][3], m[2][3]);
+    if (m[3][3] != 1) m /= m[3][3];
+    bool finite = true;
+    for (int k = 0; k < 4; ++k)
+        for (int r = 0; r < 4; ++r) finite = finite && std::isfinite(m[k][r]);
+    if (finite && perspective != glm::dvec3(0))
+        c.warn("the last row's " + to_repr(Value::list(ValueList{Value(perspective.x), Value(perspective.y), Value(perspective.z)})) +
+               " is ignored, as OpenSCAD does (the matrix is used as an affine map)");
+    m[0][3] = m[1][3] = m[2][3] = 0, m[3][3] = 1;
+    if (finite) return transformed(c, m);
+    GraphBuilder& g = c.graph();
+    const std::size_t mark = g.mark();
+    c.children();
+    c.warn("Transformation matrix contains Not-a-Number and/or Infinity - removing object.");
+    g.pending.resize(mark);
+}
+
 void multmatrix(ModuleCall& c) {
     const Args& a = c.args;
     if (!a.has(0)) arg_error(a, "m is required");
+    if (c.lenient()) return openscad_multmatrix(c);
     glm::dmat4 m = arg_matrix(a, 0, "m");
     transformed(c, m);
 }
