@@ -67,9 +67,10 @@ std::vector<std::size_t> polygon_hull(const std::vector<glm::dvec3>& pts, const 
 // qhull over a full-dimensional set; false (and qhull's first message
 // line in `failure`) when qhull gives up.
 bool polytope(const std::vector<glm::dvec3>& pts, ConvexHull& out, const char* opts, std::string& failure) {
-    std::vector<coordT> coords;
-    coords.reserve(pts.size() * 3);
-    for (const glm::dvec3& p : pts) coords.insert(coords.end(), {p.x, p.y, p.z});
+    // qhull reads the points in place: none of the options used here scales,
+    // projects or joggles them, so they are never written.
+    static_assert(sizeof(glm::dvec3) == 3 * sizeof(coordT));
+    coordT* coords = const_cast<coordT*>(&pts[0].x);
     char* message = nullptr;
     std::size_t message_size = 0;
     FILE* err = open_memstream(&message, &message_size);
@@ -77,30 +78,35 @@ bool polytope(const std::vector<glm::dvec3>& pts, ConvexHull& out, const char* o
     qhT* qh = &qh_storage;
     qh_zero(qh, err);
     std::string options = opts;
-    const int code = qh_new_qhull(qh, 3, int(pts.size()), coords.data(), False, options.data(), nullptr, err);
+    const int code = qh_new_qhull(qh, 3, int(pts.size()), coords, False, options.data(), nullptr, err);
     if (code == 0) {
-        std::vector<std::uint32_t> remap(pts.size(), UINT32_MAX);
+        // Corners numbered in the order the facets first meet them, looked
+        // up by qhull's vertex id (qh_pointid once per corner, not per use).
+        std::vector<std::uint32_t> remap(std::size_t(qh->vertex_id), UINT32_MAX);
+        out.points.reserve(std::size_t(qh->num_vertices));
+        out.faces.reserve(std::size_t(qh->num_facets));
+        out.normals.reserve(std::size_t(qh->num_facets));
         facetT* facet;
         vertexT *vertex, **vertexp;
         FORALLfacets {
             const glm::dvec3 n(facet->normal[0], facet->normal[1], facet->normal[2]);
             std::vector<std::uint32_t> loop;
             loop.reserve(std::size_t(qh_setsize(qh, facet->vertices)));
-            glm::dvec3 centre(0);
             FOREACHvertex_(facet->vertices) {
-                const std::size_t id = std::size_t(qh_pointid(qh, vertex->point));
-                if (remap[id] == UINT32_MAX) {
-                    remap[id] = std::uint32_t(out.points.size());
-                    out.points.push_back(pts[id]);
+                std::uint32_t& corner = remap[vertex->id];
+                if (corner == UINT32_MAX) {
+                    corner = std::uint32_t(out.points.size());
+                    out.points.push_back(pts[std::size_t(qh_pointid(qh, vertex->point))]);
                 }
-                loop.push_back(remap[id]);
-                centre += pts[id];
+                loop.push_back(corner);
             }
             if (loop.size() == 3) {  // a triangle: one turn tells its orientation
                 const glm::dvec3 a = out.points[loop[0]], b = out.points[loop[1]], c = out.points[loop[2]];
                 if (glm::dot(glm::cross(b - a, c - a), n) < 0) std::swap(loop[1], loop[2]);
             } else {
                 // Counter-clockwise about the outward normal: by angle in the facet's plane.
+                glm::dvec3 centre(0);
+                for (std::uint32_t v : loop) centre += out.points[v];
                 centre /= double(loop.size());
                 const glm::dvec3 e1 = perpendicular(n), e2 = glm::cross(n, e1);
                 std::vector<std::pair<double, std::uint32_t>> by_angle;

@@ -43,11 +43,12 @@ std::uint32_t GraphAppender::primitive(P kind, std::initializer_list<double> p, 
     return add(std::move(n));
 }
 
-std::uint32_t GraphAppender::mesh(std::vector<glm::dvec3> points,
-                                  const std::vector<std::vector<std::uint32_t>>& ccw_faces, const SourceLoc& loc) {
+std::uint32_t GraphAppender::mesh(std::vector<glm::dvec3> points, std::vector<std::vector<std::uint32_t>> ccw_faces,
+                                  const SourceLoc& loc) {
     graph::PolygonMesh m;
     m.points = std::move(points);
-    for (const auto& f : ccw_faces) m.faces.emplace_back(f.rbegin(), f.rend());  // the graph's order is clockwise
+    for (auto& f : ccw_faces) std::reverse(f.begin(), f.end());  // the graph's order is clockwise
+    m.faces = std::move(ccw_faces);
     g_.meshes.push_back(std::move(m));
     return primitive(P::Mesh, {}, loc, std::uint32_t(g_.meshes.size() - 1));
 }
@@ -100,7 +101,7 @@ public:
             const std::uint32_t j = (i + 1) % k;
             faces.push_back({i, j, k + j, k + i});
         }
-        parts.push_back(out_.mesh(std::move(pts), faces, loc_));
+        parts.push_back(out_.mesh(std::move(pts), std::move(faces), loc_));
     }
 
 private:
@@ -138,10 +139,10 @@ std::uint32_t grown_section(GraphAppender& out, const ConvexHull& h, double r, c
 
 }  // namespace
 
-std::uint32_t convex_solid(GraphAppender& out, const ConvexHull& h, double r, bool disc, const SourceLoc& loc) {
+std::uint32_t convex_solid(GraphAppender& out, ConvexHull h, double r, bool disc, const SourceLoc& loc) {
     if (h.dim < 0 || (r == 0 && h.dim < 3)) return out.empty(loc);
     if (disc && r > 0) return grown_section(out, h, r, loc);
-    if (r == 0) return out.mesh(h.points, h.faces, loc);
+    if (r == 0) return out.mesh(std::move(h.points), std::move(h.faces), loc);
     Offsetter o(out, r, loc);
     for (const glm::dvec3& v : h.points) o.ball(v);
     if (h.dim == 1) o.rod(h.points[0], h.points[1]);

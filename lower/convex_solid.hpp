@@ -23,8 +23,9 @@ public:
     std::uint32_t transform(const glm::dmat4& world_from_child, std::uint32_t child, const SourceLoc& loc);
     std::uint32_t primitive(csg::PrimKind kind, std::initializer_list<double> p, const SourceLoc& loc,
                             std::uint32_t index = 0);
-    // A solid Mesh leaf over faces given counter-clockwise seen from outside.
-    std::uint32_t mesh(std::vector<glm::dvec3> points, const std::vector<std::vector<std::uint32_t>>& ccw_faces,
+    // A solid Mesh leaf over faces given counter-clockwise seen from
+    // outside (taken, and turned in place: no copy per face).
+    std::uint32_t mesh(std::vector<glm::dvec3> points, std::vector<std::vector<std::uint32_t>> ccw_faces,
                        const SourceLoc& loc);
     std::uint32_t empty(const SourceLoc& loc) { return op(graph::NodeKind::Union, {}, loc); }
 
@@ -37,7 +38,7 @@ private:
 // hull ⊕ disc(radius) in the XY plane, for a hull that is a vertical prism
 // (2D shapes on their slabs): the prism of the grown section, i.e. the
 // section's prism, one box-like prism per edge and one cylinder per corner.
-std::uint32_t convex_solid(GraphAppender& out, const ConvexHull& hull, double radius, bool disc,
-                           const SourceLoc& loc);
+// The hull is taken: a plain hull's points and faces become the mesh's.
+std::uint32_t convex_solid(GraphAppender& out, ConvexHull hull, double radius, bool disc, const SourceLoc& loc);
 
 }  // namespace kerf

@@ -1,5 +1,6 @@
 #include "lower/geometry_ops.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -29,7 +30,7 @@ public:
     void run() {
         out_.matrices = g_.matrices;
         out_.materials = g_.materials;
-        out_.meshes = g_.meshes;
+        copy_used_meshes();
         out_.polygons = g_.polygons;
         out_.camera = g_.camera;
         out_.lights = g_.lights;
@@ -61,6 +62,34 @@ public:
 private:
     const graph::SceneGraph& g_;
     graph::SceneGraph& out_;
+
+    // The meshes the result still draws, copied at their indices; a mesh
+    // seen only through a hull() or minkowski() (whose pieces read it from
+    // g_, see pieces()) is left empty — a polyhedron of 10,000 points
+    // would otherwise be copied face by face only to be dropped. Below a
+    // resize() everything is kept, wherever it is: its box lowers the
+    // child itself.
+    void copy_used_meshes() {
+        constexpr std::uint8_t kUnused = 0, kDrawn = 1, kUnderResize = 2;
+        std::vector<std::uint8_t> use(g_.nodes.size(), kUnused);
+        if (g_.root < use.size()) use[g_.root] = kDrawn;
+        out_.meshes.resize(g_.meshes.size());
+        for (std::size_t i = g_.nodes.size(); i-- > 0;) {  // parents after their children: walk down
+            const graph::Node& n = g_.nodes[i];
+            if (use[i] != kUnused && n.kind == NodeKind::Primitive && n.prim == csg::PrimKind::Mesh &&
+                n.index < g_.meshes.size() && out_.meshes[n.index].points.empty())
+                out_.meshes[n.index] = g_.meshes[n.index];
+            const bool consumed = (n.kind == NodeKind::Hull || (n.kind == NodeKind::Minkowski && n.child_count > 1));
+            const std::uint8_t down = n.kind == NodeKind::Resize ? kUnderResize
+                                      : consumed && use[i] != kUnderResize ? kUnused
+                                                                           : use[i];
+            for (std::uint32_t k = 0; k < n.child_count; ++k) {
+                const std::size_t ref = std::size_t(n.first_child) + k;
+                if (ref < g_.child_refs.size() && g_.child_refs[ref] < i)
+                    use[g_.child_refs[ref]] = std::max(use[g_.child_refs[ref]], down);
+            }
+        }
+    }
     GraphAppender add_;
     std::vector<std::uint32_t> map_;
     std::unordered_map<std::uint32_t, ConvexPiece> solved_;  // a convex result's piece, for outer operations
@@ -86,7 +115,9 @@ private:
                 continue;
             }
             if (n.kind == NodeKind::Primitive) {
-                out.push_back(leaf_piece(out_, n, m, tol));
+                // The input's meshes from the input (copy_used_meshes), the hulls built here from out_.
+                const bool built = n.prim == csg::PrimKind::Mesh && n.index >= g_.meshes.size();
+                out.push_back(leaf_piece(built ? out_ : g_, n, m, tol));
                 continue;
             }
             const glm::dmat4 inner = n.kind == NodeKind::Transform ? m * out_.matrices[n.index] : m;
@@ -113,9 +144,10 @@ private:
 
     // The solid of a piece, remembered as that piece for outer operations.
     std::uint32_t solid(const ConvexPiece& p, const SourceLoc& loc) {
-        const ConvexHull h = hull_of(p.points, loc);
-        const std::uint32_t id = convex_solid(add_, h, p.radius, p.disc, loc);
-        solved_[id] = ConvexPiece{h.points, p.radius, p.exact, p.disc};
+        ConvexHull h = hull_of(p.points, loc);
+        ConvexPiece corners{h.points, p.radius, p.exact, p.disc};
+        const std::uint32_t id = convex_solid(add_, std::move(h), p.radius, p.disc, loc);
+        solved_[id] = std::move(corners);
         return id;
     }
 

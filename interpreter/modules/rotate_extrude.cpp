@@ -48,8 +48,7 @@ public:
 
     // Second pass: the revolved copy of node `id` pushed on the builder's pending stack.
     void build(std::uint32_t id) {
-        rebuild_subtree(g_, id, Map2(1.0), "rotate_extrude", "revolved",
-                        [this](const graph::Node& n, const Map2& a) { leaf(n, a); });
+        rebuild_subtree(g_, id, Map2(1.0), [this](const graph::Node& n, const Map2& a) { leaf(n, a); });
     }
 
     bool mirrored = false;  // the shape lies at x <= 0: revolve its mirror image

@@ -135,9 +135,8 @@ void taper(graph::SceneGraph& g, std::uint32_t root, double s) {
         }
         // The taper commutes with a hull (the hull of the tapered pieces is
         // the tapered hull: both are the hull of the bottom and the scaled
-        // top sections), not with a Minkowski sum or a resize's box.
-        if (n.kind == graph::NodeKind::Minkowski || n.kind == graph::NodeKind::Resize)
-            throw SourceError(n.loc, "linear_extrude: scale is not implemented yet for minkowski() and resize() of 2D shapes");
+        // top sections), not with a Minkowski sum or a resize's box: those
+        // are swept instead (linear_extrude below).
         if (n.kind == graph::NodeKind::Transform) {
             glm::dmat4& m = g.matrices[n.index];
             m[2][0] = (s - 1) * m[3][0];
@@ -145,6 +144,16 @@ void taper(graph::SceneGraph& g, std::uint32_t root, double s) {
         }
         for (std::uint32_t k = 0; k < n.child_count; ++k) todo.push_back(g.child_refs[n.first_child + k]);
     }
+}
+
+// True when the 2D subtree at `id` holds a minkowski() or resize(), which
+// a taper does not commute with.
+bool has_sum_or_resize(const graph::SceneGraph& g, std::uint32_t id) {
+    const graph::Node& n = g.nodes[id];
+    if (n.kind == graph::NodeKind::Minkowski || n.kind == graph::NodeKind::Resize) return true;
+    for (std::uint32_t k = 0; k < n.child_count; ++k)
+        if (has_sum_or_resize(g, g.child_refs[n.first_child + k])) return true;
+    return false;
 }
 
 // A scale argument: a number or [sx, sy], each finite and >= 0.
@@ -161,8 +170,9 @@ glm::dvec2 scale_arg(const Args& a, std::size_t i) {
 
 // linear_extrude(height, center, convexity, twist, slices, scale, v): the
 // section at τ = z/h is scale(τ)·rotate(−twist·τ)·shape (docs/spec.md §10).
-// A uniform scale without twist keeps the subtree (taper); anything else
-// rebuilds it with the transforms applied (sweep.hpp). `v` tilts the slab:
+// A uniform scale without twist keeps the subtree (taper) unless it holds a
+// minkowski() or resize(); anything else rebuilds it with the transforms
+// applied (sweep.hpp). `v` tilts the slab:
 // the section at τ moves by τ·h·v/|v| (the map of the unit slab, a shear).
 void linear_extrude(ModuleCall& c) {
     const Args& a = c.args;
@@ -187,7 +197,10 @@ void linear_extrude(ModuleCall& c) {
     for (std::size_t i = mark; i < g.pending.size(); ++i)
         if (!g.graph.nodes[g.pending[i]].flat)
             throw SourceError(g.graph.nodes[g.pending[i]].loc, "linear_extrude: extrudes 2D shapes, not 3D solids");
-    if (twist != 0 || top.x != top.y) {
+    bool sweep = twist != 0 || top.x != top.y;
+    for (std::size_t i = mark; i < g.pending.size() && top.x != 1; ++i)
+        sweep = sweep || has_sum_or_resize(g.graph, g.pending[i]);
+    if (sweep) {
         const std::vector<std::uint32_t> shapes(g.pending.begin() + std::ptrdiff_t(mark), g.pending.end());
         g.pending.resize(mark);
         for (std::uint32_t id : shapes) sweep_subtree(c, id, {top.x, top.y, twist * std::numbers::pi / 180});

@@ -15,8 +15,7 @@ public:
     Sweeper(ModuleCall& c, const SweepMap& map) : g_(c.graph()), map_(map), tol_(c.curve_tolerance()) {}
 
     void build(std::uint32_t id) {
-        rebuild_subtree(g_, id, Map2(1.0), "linear_extrude", "twisted or scaled unevenly",
-                        [this](const graph::Node& n, const Map2& a) { leaf(n, a); });
+        rebuild_subtree(g_, id, Map2(1.0), [this](const graph::Node& n, const Map2& a) { leaf(n, a); });
     }
 
 private:

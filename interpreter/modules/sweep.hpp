@@ -20,8 +20,9 @@ struct SweepMap {
 // pending stack: polygons and squares a swept Prism over their mapped edges;
 // a circle that stays a circle about the origin under a uniform scale a
 // cylinder or cone (a twist turns it onto itself), any other circle a
-// polygon within the curve tolerance. A hull, minkowski or resize below is
-// an error (lowering builds them from points a sweep does not carry over).
+// polygon within the curve tolerance. A hull or minkowski below is done in
+// the plane first (flat_hull_ops.hpp), its convex polygons swept; a resize
+// is its scale.
 void sweep_subtree(ModuleCall& c, std::uint32_t id, const SweepMap& map);
 
 }  // namespace kerf::eval
