@@ -6,6 +6,7 @@
 // in polyhedron()'s order and closed. Broken files are located errors.
 #include <catch2/catch.hpp>
 
+#include <fstream>
 #include <set>
 #include <tuple>
 
@@ -96,6 +97,22 @@ TEST_CASE("surface() builds OpenSCAD's mesh of .dat and PNG height maps", "[surf
     }
 }
 
+TEST_CASE("surface() of OpenSCAD's example010.dat is OpenSCAD's mesh", "[surface]") {
+    const std::string dir = "/usr/share/openscad/examples/Old/";  // the openscad package (scripts/setup.sh)
+    if (!std::ifstream(dir + "example010.dat")) return;
+    // openscad -o x.stl: 21785.62, 4321 distinct vertices, x and y in [-22.5, 22.5], z in [-10.9927, 9.96117].
+    const kerf::EvalResult r = run_in(dir, "surface(file = \"example010.dat\", center = true, convexity = 5);", "t.scad");
+    CHECK(r.warnings.empty());
+    const Measures m = measure(r);
+    // The STL prints the base -10.992667759... as -10.9927: 45² · 3.2e-5 = 0.065 more volume.
+    CHECK(-m.volume == Approx(21785.62 - 45 * 45 * (10.9927 - 10.992667759626542)).epsilon(1e-6));
+    CHECK(m.points == 4321);
+    CHECK(m.lo.x == -22.5);
+    CHECK(m.hi.y == 22.5);
+    CHECK(m.lo.z == Approx(-10.9927).margin(1e-4));
+    CHECK(m.hi.z == Approx(9.96117).margin(1e-5));
+}
+
 TEST_CASE("surface() heights: .dat rows at y = 0, 1, ..., the image's bottom row at y = 0", "[surface]") {
     const Measures dat = measure(run_in(kDir, "surface(\"steps.dat\");"));
     // The first row of numbers at y = 0, a cell's centre the mean of its corners (OpenSCAD's STL).
@@ -143,6 +160,11 @@ TEST_CASE("surface() reads a file once per loop and takes the OpenSCAD dialect's
     CHECK(n.warnings[0].message ==
           "surface: \"n.dat\" line 2: 'x' is not a number: the heights end there, as OpenSCAD reads them");
     CHECK(-measure(n).volume == Approx(3));
+    // A word first on its line adds no row (openscad: 2.5, the plane z = 1 + x + 2y over the unit square).
+    t.write("end.dat", "1 2\n3 4\nend of data\n");
+    const kerf::EvalResult e = run_in(dir, "surface(\"end.dat\");", "test.scad");
+    CHECK(e.warnings.size() == 1);
+    CHECK(-measure(e).volume == Approx(2.5));
 }
 
 TEST_CASE("surface() errors and warnings are located", "[surface][errors]") {
