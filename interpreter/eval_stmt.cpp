@@ -10,18 +10,6 @@ namespace kerf::eval {
 
 namespace {
 
-// OpenSCAD's built-in modules that kerf lacks: an error in both dialects
-// (ignoring one, as OpenSCAD ignores an unknown module, would render a
-// different solid with exit 0). Null for any other name.
-const char* unimplemented_openscad_module(std::string_view name) {
-    static constexpr std::pair<std::string_view, const char*> kMissing[] = {
-        {"surface", "a height map"},
-    };
-    for (const auto& [n, what] : kMissing)
-        if (n == name) return what;
-    return nullptr;
-}
-
 // Names bound twice in one block (by hash: a file may bind 100,000 names).
 class UniqueNames {
 public:
@@ -480,8 +468,6 @@ void Evaluator::instantiate(const ast::Stmt& st, Scope& s, bool top_level) {
     }
     count_step(st.loc);
     if (builtin_module(st, s, top_level)) return;
-    if (const char* what = unimplemented_openscad_module(name))
-        throw SourceError(st.loc, "'" + name + "' (" + what + ") is not implemented in kerf yet");
     if (!lenient_) throw SourceError(st.loc, "unknown module '" + name + "'" + did_you_mean(name, s, NameKind::Module));
     warn(st.loc, "Ignoring unknown module '" + name + "'");
 }

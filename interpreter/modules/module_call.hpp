@@ -77,6 +77,7 @@ std::span<const ModuleEntry> text_modules();     // text.cpp
 std::span<const ModuleEntry> hull_modules();     // hull_ops.cpp: hull, minkowski, resize
 std::span<const ModuleEntry> offset_modules();   // offset.cpp
 std::span<const ModuleEntry> projection_modules();  // projection.cpp
+std::span<const ModuleEntry> surface_modules();     // surface.cpp
 
 // The built-in module called `name`, or null.
 const ModuleEntry* find_module(std::string_view name);

@@ -59,7 +59,8 @@ const std::vector<const ModuleEntry*>& module_table() {
     static const std::vector<const ModuleEntry*> table = [] {
         std::vector<const ModuleEntry*> all;
         for (auto group : {solid_modules(), transform_modules(), appearance_modules(), setup_modules(), shape2d_modules(),
-                           revolve_modules(), text_modules(), hull_modules(), offset_modules(), projection_modules()})
+                           revolve_modules(), text_modules(), hull_modules(), offset_modules(), projection_modules(),
+                           surface_modules()})
             for (const ModuleEntry& e : group) all.push_back(&e);
         std::sort(all.begin(), all.end(),
                   [](const ModuleEntry* a, const ModuleEntry* b) { return std::string_view(a->name) < b->name; });

@@ -43,7 +43,7 @@ TEST_CASE("modules: arguments and unknown modules", "[modules]") {
     CHECK(error_of("module m(a) {}\nm(1, 2);") == "test.sdl:2:6: error: too many arguments for 'm' (takes 1)");
     CHECK(error_of("module m(a) {}\nm(z = 2);") == "test.sdl:2:3: error: unknown argument 'z' for 'm'");
     CHECK(error_of("nosuch(1);") == "test.sdl:1:1: error: unknown module 'nosuch'");
-    CHECK(error_of("surface(\"x.dat\");") == "test.sdl:1:1: error: 'surface' (a height map) is not implemented in kerf yet");
+    CHECK(error_of("surface(\"x.dat\");") == "test.sdl:1:1: error: cannot find 'x.dat'");
 }
 
 TEST_CASE("children(), children(i) and $children", "[modules]") {
