@@ -70,10 +70,12 @@ std::uint64_t scene_hash(const csg::Scene& s) {
     }
     const csg::Camera& c = s.camera;
     h.v3(c.position), h.v3(c.look_at), h.v3(c.up), h.d(c.fov), h.u(c.orthographic), h.d(c.height);
+    h.u(std::uint64_t(c.projection)), h.d(c.aperture), h.d(c.focal_distance), h.u(c.blur_samples);
     h.u(s.lights.size());
     for (const csg::Light& l : s.lights) h.u(l.directional), h.v3(l.position), h.v3(l.direction), h.v3(l.color), h.d(l.intensity);
     h.v3(s.background);
     h.u(std::uint64_t(s.ambient_occlusion.samples)), h.d(s.ambient_occlusion.distance);
+    h.d(s.fog.distance), h.v3(s.fog.color);
     return h.h;
 }
 

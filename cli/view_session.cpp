@@ -39,7 +39,8 @@ double seconds(Clock::duration d) { return std::chrono::duration<double>(d).coun
 
 bool same_camera(const csg::Camera& a, const csg::Camera& b) {
     return a.position == b.position && a.look_at == b.look_at && a.up == b.up && a.fov == b.fov &&
-           a.orthographic == b.orthographic && a.height == b.height;
+           a.orthographic == b.orthographic && a.height == b.height && a.projection == b.projection &&
+           a.aperture == b.aperture && a.focal_distance == b.focal_distance && a.blur_samples == b.blur_samples;
 }
 
 // What the render thread is asked to do next; requests that arrive while

@@ -167,11 +167,20 @@ void dump(const Scene& s, std::string& out, Flush&& flush) {
     out += "scene leaves=" + std::to_string(s.leaves.size()) + " nodes=" + std::to_string(s.nodes.size()) +
            " materials=" + std::to_string(s.materials.size()) + " meshes=" + std::to_string(s.meshes.size()) + '\n';
     const Camera& c = s.camera;
-    out += c.orthographic ? "camera orthographic" : "camera perspective";
+    out += c.orthographic                               ? "camera orthographic"
+           : c.projection == Projection::Fisheye   ? "camera fisheye"
+           : c.projection == Projection::Panoramic ? "camera panoramic"
+                                                   : "camera perspective";
     field(out, "position", c.position);
     field(out, "look_at", c.look_at);
     field(out, "up", c.up);
     if (c.orthographic) field(out, "height", c.height); else field(out, "fov", c.fov);
+    // Depth of field only where it is on, so pinhole dumps read as before.
+    if (c.aperture > 0) {
+        field(out, "aperture", c.aperture);
+        field(out, "focal_distance", c.focal_distance);
+        field(out, "blur_samples", double(c.blur_samples));
+    }
     out += '\n';
     for (const Light& l : s.lights) {
         if (l.directional) {
@@ -200,6 +209,12 @@ void dump(const Scene& s, std::string& out, Flush&& flush) {
     out += "background";
     field(out, "color", s.background);
     out += '\n';
+    if (s.fog.on()) {
+        out += "fog";
+        field(out, "distance", s.fog.distance);
+        field(out, "color", s.fog.color);
+        out += '\n';
+    }
     for (std::size_t i = 0; i < s.materials.size(); ++i) {
         const Material& m = s.materials[i];
         out += "material " + std::to_string(i);

@@ -166,13 +166,36 @@ struct AmbientOcclusion {
     double distance = std::numeric_limits<double>::infinity();
 };
 
+// How pixels map to directions (docs/spec.md §12). Planar: the pinhole or,
+// with Camera::orthographic, the parallel projection of §6. Fisheye:
+// equidistant, the image circle inscribed in the shorter side spanning
+// `fov` degrees across. Panoramic: equirectangular, `fov` degrees of
+// longitude across the width and fov / 2 of latitude down the height.
+enum class Projection : std::uint8_t { Planar, Fisheye, Panoramic };
+
 struct Camera {
     glm::dvec3 position{0, -10, 5};
     glm::dvec3 look_at{0, 0, 0};
     glm::dvec3 up{0, 0, 1};
-    double fov = 40;           // vertical, degrees
+    double fov = 40;           // vertical, degrees (fisheye, panoramic: see Projection)
     bool orthographic = false;
     double height = 1;         // orthographic view height
+    Projection projection = Projection::Planar;
+    // Depth of field (perspective only): a thin lens `aperture` across,
+    // sharp at `focal_distance` along the view direction, each pixel the
+    // mean of `blur_samples` rays over lens and pixel; aperture 0: a pinhole.
+    double aperture = 0;
+    double focal_distance = 1;
+    std::uint32_t blur_samples = 16;
+};
+
+// fog(distance, color): POV-Ray's constant fog. A ray that travels s keeps
+// exp(−s / distance) of what it sees, the rest is `color`; a ray that
+// escapes sees `color` alone. An infinite distance: no fog.
+struct Fog {
+    double distance = std::numeric_limits<double>::infinity();
+    glm::dvec3 color{0, 0, 0};
+    bool on() const { return distance < std::numeric_limits<double>::infinity(); }
 };
 
 struct Light {
@@ -215,6 +238,7 @@ struct Scene {
     // ambient_occlusion(samples, distance) (render/ao.hpp): the ambient term
     // scaled by the share of the hemisphere open within `distance`; 0 samples: off.
     AmbientOcclusion ambient_occlusion;
+    Fog fog;
 
     std::vector<SourceRef> sources;
     std::vector<std::string> files;

@@ -69,6 +69,7 @@ struct SceneGraph {
     std::vector<csg::Light> lights;              // empty: default lights
     std::optional<glm::dvec3> background;    // none: default dark grey
     std::optional<csg::AmbientOcclusion> ambient_occlusion;  // none: off
+    std::optional<csg::Fog> fog;                             // none: clear air
 };
 
 }  // namespace kerf::graph

@@ -36,6 +36,7 @@ public:
         out_.lights = g_.lights;
         out_.background = g_.background;
         out_.ambient_occlusion = g_.ambient_occlusion;
+        out_.fog = g_.fog;
         map_.resize(g_.nodes.size());
         for (std::uint32_t i = 0; i < g_.nodes.size(); ++i) {
             const graph::Node& n = g_.nodes[i];

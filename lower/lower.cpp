@@ -22,6 +22,7 @@ void apply_scene_statements(const graph::SceneGraph& g, csg::Scene& s) {
     s.lights = g.lights.empty() ? default_lights(s.camera) : g.lights;
     s.background = g.background.value_or(glm::dvec3(0.2, 0.2, 0.2));
     s.ambient_occlusion = g.ambient_occlusion.value_or(csg::AmbientOcclusion{});
+    s.fog = g.fog.value_or(csg::Fog{});
 }
 
 }  // namespace

@@ -23,8 +23,7 @@ void aov_pixel(Aov aov, const CameraModel& camera, const CsgTracer& tracer, int 
     glm::dvec3 o, d;
     TraceHit hit;
     bool found = false;
-    if (traced) {
-        camera.ray(x + 0.5, y + 0.5, o, d);
+    if (traced && camera.ray(x + 0.5, y + 0.5, o, d)) {
         found = tracer.intersect(TraceRay{o, d, 0, std::numeric_limits<double>::infinity()}, hit, ts.scratch);
     }
     if (aov == Aov::Depth) {

@@ -67,27 +67,38 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
     // reset per pixel, needs no change to the sample paths below.
     static thread_local int hits = 0;
     auto put = [&](int x, int y, const glm::dvec3& c, int samples) {
-        if (alpha) store.color_alpha(x, y, c, double(hits) / samples, scene.background, options.alpha == Alpha::Premultiplied);
+        if (alpha) store.color_alpha(x, y, c, double(hits) / samples, shader.miss(), options.alpha == Alpha::Premultiplied);
         else store.color(x, y, c);
         hits = 0;
     };
     tbb::enumerable_thread_specific<ThreadState> states;
 
-    // One sample through (px, py); `surface` as Shader::radiance.
-    auto sample = [&](double px, double py, ThreadState& ts, bool traced, std::uint32_t* surface) {
-        ++ts.rays.primary;
-        if (!traced) {
-            if (surface) *surface = 0;
-            return scene.background;
-        }
-        glm::dvec3 o, d;
-        camera.ray_unnormalised(px, py, o, d);
+    // The colour seen along (o, d); `surface` as Shader::radiance.
+    auto trace = [&](const glm::dvec3& o, const glm::dvec3& d, ThreadState& ts, std::uint32_t* surface) {
         if (!alpha) return shader.radiance(TraceRay{o, d, 0, std::numeric_limits<double>::infinity()}, 0, ts, surface);
         std::uint32_t id = 0;
         const glm::dvec3 c = shader.radiance(TraceRay{o, d, 0, std::numeric_limits<double>::infinity()}, 0, ts, &id);
         if (surface) *surface = id;
         hits += id != 0;
         return c;
+    };
+    // One sample through (px, py); `surface` as Shader::radiance.
+    auto sample = [&](double px, double py, ThreadState& ts, bool traced, std::uint32_t* surface) {
+        ++ts.rays.primary;
+        glm::dvec3 o, d;
+        if (!traced || !camera.ray_unnormalised(px, py, o, d)) {  // culled, or outside a fisheye's circle
+            if (surface) *surface = 0;
+            return shader.miss();
+        }
+        return trace(o, d, ts, surface);
+    };
+    // Depth of field: one sample through (px, py) from lens point `lens`.
+    auto lens_sample = [&](double px, double py, glm::dvec2 lens, ThreadState& ts, bool traced) {
+        ++ts.rays.primary;
+        if (!traced) return shader.miss();
+        glm::dvec3 o, d;
+        camera.ray_through_lens(px, py, lens, o, d);
+        return trace(o, d, ts, nullptr);
     };
     // The mean of `pattern`'s samples in pixel (x, y).
     auto samples_mean = [&](const SamplePattern& pattern, int x, int y, ThreadState& ts, bool traced) {
@@ -106,6 +117,27 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
     if (aov != Aov::None) {
         complete &= for_each_tile(arena, region, camera, tracer, states, progress, stack_need, options.cancel, [&](int x, int y, ThreadState& ts, bool traced) {
             aov_pixel(aov, camera, tracer, x, y, ts, traced, store.values(x, y));
+        });
+    } else if (camera.has_lens() && !options.preview) {
+        // Depth of field: every pixel is blurred somewhere, so no adaptive
+        // pass; max(blur_samples, spp) samples, stratified over the pixel
+        // (the `--spp` pattern and stream, so the plane of focus gets the
+        // pinhole's pixels) and over the lens (the same pattern from a
+        // stream of its own, strata paired by a per-pixel shifted golden step).
+        const SamplePattern blur(std::max(int(scene.camera.blur_samples), options.spp));
+        const int n = blur.count();
+        complete &= for_each_tile(arena, region, camera, tracer, states, progress, stack_need, options.cancel, [&](int x, int y, ThreadState& ts, bool traced) {
+            hits = 0;
+            std::uint64_t rng = SamplePattern::pixel_rng(options.seed, x, y);
+            std::uint64_t lens_rng = rng ^ 0x6C656E73u;  // "lens"
+            const int shift = int(splitmix64(lens_rng) % std::uint64_t(n));
+            glm::dvec3 sum(0.0);
+            for (int i = 0; i < n; ++i) {
+                const glm::dvec2 s = blur.offset(i, rng);
+                const glm::dvec2 l = blur.offset(int((std::int64_t(i) * blur.step() + shift) % n), lens_rng);
+                sum += lens_sample(x + s.x, y + s.y, l, ts, traced);
+            }
+            put(x, y, sum / double(n), n);
         });
     } else if (options.adaptive && !options.preview) {
         // Centres first (about a quarter of the time), then the refinement.

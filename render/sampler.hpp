@@ -30,6 +30,9 @@ public:
         while (std::gcd(step_, n) != 1) ++step_;
     }
     int count() const { return n_; }
+    // A step coprime with count() near its golden section: i → i·step mod n
+    // pairs strata of two patterns without lining them up.
+    int step() const { return step_; }
 
     // The jitter generator of pixel (x, y).
     static std::uint64_t pixel_rng(std::uint64_t seed, int x, int y) {

@@ -31,7 +31,7 @@ double highlight(double x, double s) {
 }  // namespace
 
 Shader::Shader(const csg::Scene& scene, const CsgTracer& tracer, int max_depth)
-    : scene_(scene), tracer_(tracer), max_depth_(max_depth) {
+    : scene_(scene), tracer_(tracer), max_depth_(max_depth), miss_(scene.fog.on() ? scene.fog.color : scene.background) {
     for (csg::Light l : scene.lights) {
         l.direction = glm::normalize(l.direction);  // once, not per shading point
         lights_.push_back(l);
@@ -122,9 +122,17 @@ glm::dvec3 Shader::radiance(const TraceRay& ray, int depth, ThreadState& ts, std
     TraceHit hit;
     if (!tracer_.intersect(ray, hit, ts.scratch)) {
         if (surface) *surface = 0;
-        return scene_.background;
+        return miss_;  // fog: as if at infinite distance, all fog
     }
     if (surface) *surface = (hit.surface.leaf + 1) * 2 + hit.surface.cut;
+    const glm::dvec3 c = shade(ray, hit, depth, ts);
+    if (!scene_.fog.on()) return c;
+    // ray.d need not be unit (primary rays): the distance is t·|d|.
+    const double keep = std::exp(-hit.t * glm::length(ray.d) / scene_.fog.distance);
+    return keep * c + (1 - keep) * scene_.fog.color;
+}
+
+glm::dvec3 Shader::shade(const TraceRay& ray, const TraceHit& hit, int depth, ThreadState& ts) const {
     const glm::dvec3 p = ray.o + hit.t * ray.d;
     glm::dvec3 n = tracer_.normal(hit, p);
     if (glm::dot(n, ray.d) > 0) n = -n;  // grazing round-off: light the side we see

@@ -38,7 +38,10 @@ public:
     // reflections and refractions so far.
     // `surface`, if given, gets 0 for a miss, else an id of the surface the
     // ray hit (leaf and cut face), for adaptive anti-aliasing.
+    // Fog (csg::Fog) dims every ray's colour by the distance it travels.
     glm::dvec3 radiance(const TraceRay& ray, int depth, ThreadState& ts, std::uint32_t* surface = nullptr) const;
+    // What a ray that hits nothing sees: the background, or the fog's colour.
+    const glm::dvec3& miss() const { return miss_; }
 
     // Linear RGB arriving at `p` along a ray that travels in unit direction
     // `d` inside the solid of material `m` from p on: absorbed on its way to
@@ -52,6 +55,8 @@ public:
     glm::dvec3 transmitted(const TraceRay& ray, ThreadState& ts) const;
 
 private:
+    // The colour of the surface `hit` seen along `ray`, before fog.
+    glm::dvec3 shade(const TraceRay& ray, const TraceHit& hit, int depth, ThreadState& ts) const;
     const csg::Material& material_of(std::uint32_t leaf) const;
     glm::dvec3 mirror(const glm::dvec3& origin, const glm::dvec3& r, const glm::dvec3& n, double roughness, int depth,
                       ThreadState& ts) const;
@@ -59,6 +64,7 @@ private:
     const csg::Scene& scene_;
     const CsgTracer& tracer_;
     int max_depth_;
+    glm::dvec3 miss_;
     bool any_transparent_ = false;  // else shadow rays only ask whether anything is in the way
     std::vector<csg::Light> lights_;       // the scene's, directions of unit length
     std::vector<SamplePattern> patterns_;  // per light: where its shadow rays go

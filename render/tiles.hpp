@@ -60,12 +60,15 @@ bool for_each_tile(tbb::task_arena& arena, const std::array<int, 4>& region, con
                 if (cancel && cancel->load(std::memory_order_relaxed)) break;
                 const int tx0 = region[0] + (tile % tiles_x) * kTile, ty0 = region[1] + (tile / tiles_x) * kTile;
                 const int tx1 = std::min(tx0 + kTile, region[2]), ty1 = std::min(ty0 + kTile, region[3]);
-                glm::dvec3 co[4], cd[4];  // the tile's corner rays, in order round it
-                camera.ray(tx0, ty0, co[0], cd[0]);
-                camera.ray(tx1, ty0, co[1], cd[1]);
-                camera.ray(tx1, ty1, co[2], cd[2]);
-                camera.ray(tx0, ty1, co[3], cd[3]);
-                const bool traced = !tracer.misses_all(co, cd);
+                bool traced = true;
+                if (camera.corners_bound_tiles()) {  // else (a lens, a fisheye) the corners bound nothing
+                    glm::dvec3 co[4], cd[4];  // the tile's corner rays, in order round it
+                    camera.ray(tx0, ty0, co[0], cd[0]);
+                    camera.ray(tx1, ty0, co[1], cd[1]);
+                    camera.ray(tx1, ty1, co[2], cd[2]);
+                    camera.ray(tx0, ty1, co[3], cd[3]);
+                    traced = !tracer.misses_all(co, cd);
+                }
                 for (int y = ty0; y < ty1; ++y)
                     for (int x = tx0; x < tx1; ++x) pixel(x, y, ts, traced);
                 if (progress) {

@@ -1,5 +1,5 @@
-// The scene statements camera, light, spotlight and background (docs/spec.md §6): top
-// level only, each of camera and background at most once.
+// The scene statements camera, light, spotlight, background, ambient_occlusion
+// and fog (docs/spec.md §6, §12): top level only, all but the lights at most once.
 #include <cmath>
 
 #include "interpreter/modules/args.hpp"
@@ -35,17 +35,47 @@ void camera(ModuleCall& c) {
         arg_error(a, "position and look_at must be at least " + format_number(1 / csg::kRenderableRange) + " apart");
     if (!(glm::length(glm::cross(dir, cam.up)) > 1e-12 * glm::length(dir) * glm::length(cam.up)))
         arg_error(a, "up must not be parallel to the view direction");
+    std::string projection = "perspective";
     if (a.has(4)) {
-        if (!a[4].is_string() || (a[4].as_string() != "perspective" && a[4].as_string() != "orthographic"))
-            arg_error(a, "projection must be \"perspective\" or \"orthographic\"");
-        cam.orthographic = a[4].as_string() == "orthographic";
+        projection = a[4].is_string() ? a[4].as_string() : "";
+        if (projection != "perspective" && projection != "orthographic" && projection != "fisheye" &&
+            projection != "panoramic")
+            arg_error(a, "projection must be \"perspective\", \"orthographic\", \"fisheye\" or \"panoramic\"");
     }
+    cam.orthographic = projection == "orthographic";
+    if (projection == "fisheye") cam.projection = csg::Projection::Fisheye;
+    if (projection == "panoramic") cam.projection = csg::Projection::Panoramic;
     if (cam.orthographic) {
         cam.height = arg_positive(a, 5, "height", 1);
     } else {
         if (a.has(5)) arg_error(a, "height is only for projection = \"orthographic\"");
-        if (!(cam.fov > 0 && cam.fov < 180)) arg_error(a, "fov must be between 0 and 180, got " + format_number(cam.fov));
+        if (cam.projection == csg::Projection::Planar) {
+            if (!(cam.fov > 0 && cam.fov < 180)) arg_error(a, "fov must be between 0 and 180, got " + format_number(cam.fov));
+        } else {
+            // A fisheye sees a half-space by default, a panorama all round.
+            cam.fov = arg_number(a, 3, "fov", cam.projection == csg::Projection::Fisheye ? 180 : 360);
+            if (!(cam.fov > 0 && cam.fov <= 360))
+                arg_error(a, "fov must be above 0 and at most 360 for projection = \"" + projection + "\", got " +
+                                 format_number(cam.fov));
+        }
     }
+    // Depth of field: a thin lens on the pinhole camera only.
+    cam.aperture = arg_number(a, 6, "aperture", 0);
+    if (!(cam.aperture >= 0 && cam.aperture <= csg::kRenderableRange))
+        arg_error(a, "aperture must be a number from 0 to " + format_number(csg::kRenderableRange) + ", got " +
+                         format_number(cam.aperture));
+    if (cam.aperture > 0 && projection != "perspective")
+        arg_error(a, "aperture is only for projection = \"perspective\"");
+    if (cam.aperture == 0 && (a.has(7) || a.has(8)))
+        arg_error(a, std::string(a.has(7) ? "focal_distance" : "blur_samples") + " is only for a camera with an aperture above 0");
+    cam.focal_distance = arg_positive(a, 7, "focal_distance", glm::length(dir));
+    if (cam.focal_distance > csg::kRenderableRange)
+        arg_error(a, "focal_distance must be at most " + format_number(csg::kRenderableRange) + ", got " +
+                         format_number(cam.focal_distance));
+    const double blur = arg_number(a, 8, "blur_samples", 16);
+    if (!(blur >= 1 && blur <= 4096) || blur != std::floor(blur))
+        arg_error(a, "blur_samples must be a whole number from 1 to 4096, got " + format_number(blur));
+    cam.blur_samples = static_cast<std::uint32_t>(blur);
     c.graph().graph.camera = cam;
     state.camera_loc = &c.st.loc;
 }
@@ -140,8 +170,22 @@ void ambient_occlusion(ModuleCall& c) {
     slot = ao;
 }
 
+// fog(distance, color) (csg::Fog): at most once.
+void fog(ModuleCall& c) {
+    const Args& a = c.args;
+    auto& slot = c.graph().graph.fog;
+    if (slot) throw SourceError(c.st.loc, "fog is already defined");
+    if (!a.has(0)) arg_error(a, "distance is required");
+    if (!a.has(1)) arg_error(a, "color is required");
+    csg::Fog f;
+    f.distance = arg_positive(a, 0, "distance", 1);
+    f.color = glm::dvec3(arg_color(a, 1, "color"));
+    slot = f;
+}
+
 const ModuleEntry kSetup[] = {
-    {"camera", ModuleKind::Setup, {"position", "look_at", "up", "fov", "projection", "height"}, camera},
+    {"camera", ModuleKind::Setup,
+     {"position", "look_at", "up", "fov", "projection", "height", "aperture", "focal_distance", "blur_samples"}, camera},
     {"light", ModuleKind::Setup,
      {"position", "direction", "color", "intensity", "radius", "samples", "shadows", "attenuation"}, light},
     {"spotlight", ModuleKind::Setup,
@@ -149,6 +193,7 @@ const ModuleEntry kSetup[] = {
      spotlight},
     {"background", ModuleKind::Setup, {"color"}, background},
     {"ambient_occlusion", ModuleKind::Setup, {"samples", "distance"}, ambient_occlusion},
+    {"fog", ModuleKind::Setup, {"distance", "color"}, fog},
 };
 
 }  // namespace
