@@ -225,6 +225,8 @@ private:
     }
 
     void add_disc(xmlNode* n, const Map2& m) {
+        for (int i = 0; i < 3; ++i)
+            if (!std::isfinite(m[i][0]) || !std::isfinite(m[i][1])) fail(n, "a coordinate out of range");
         if (std::abs(glm::determinant(glm::dmat2(glm::dvec2(m[0]), glm::dvec2(m[1])))) == 0) return;
         count(n, 1);
         out_.items.push_back({{}, m});
@@ -273,13 +275,13 @@ private:
             if (pts.size() >= 3) add_loops(n, m, {std::move(pts)});
             return;
         }
-        if (pts.size() >= 2) add_loops(n, m, svg::stroke_outline({pts}, stroke(n), o_.tolerance));
+        if (pts.size() >= 2) add_loops(n, m, outline(n, {pts}));
     }
 
     void path(xmlNode* n, const Map2& m) {
         std::vector<svg::Subpath> subs;
         try {
-            subs = svg::parse_path(attr(n, "d").value_or(""), o_.tolerance);
+            subs = svg::parse_path(attr(n, "d").value_or(""), o_.tolerance, o_.max_items);
         } catch (const svg::DataError& e) {
             fail(n, std::string("path data (d) of <path>: ") + e.what());
         }
@@ -289,7 +291,19 @@ private:
             else if (!s.closed && s.points.size() >= 2) open.push_back(std::move(s.points));
         }
         add_loops(n, m, std::move(closed));
-        if (!open.empty()) add_loops(n, m, svg::stroke_outline(open, stroke(n), o_.tolerance));
+        if (!open.empty()) add_loops(n, m, outline(n, open));
+    }
+
+    std::vector<Chain> outline(xmlNode* n, const std::vector<Chain>& open) {
+        try {
+            std::vector<Chain> out = svg::stroke_outline(open, stroke(n), o_.tolerance);
+            if (out.empty() && stroke(n).width > 0)
+                warn(n, std::string("the stroke of <") + reinterpret_cast<const char*>(n->name) +
+                            "> is too thin for its extent to draw (below 2^-50 of it)");
+            return out;
+        } catch (const svg::DataError& e) {
+            fail(n, std::string("the stroke of <") + reinterpret_cast<const char*>(n->name) + ">: " + e.what());
+        }
     }
 
     // The element's own stroke properties (OpenSCAD 2021.01 inherits none

@@ -148,7 +148,8 @@ void arc(Chain& out, glm::dvec2 p, glm::dvec2 q, double rx, double ry, double ph
 
 }  // namespace
 
-std::vector<Subpath> parse_path(std::string_view d, double tolerance) {
+std::vector<Subpath> parse_path(std::string_view d, double tolerance, std::uint64_t max_points) {
+    std::uint64_t points = 0;  // in the subpaths before the last
     Reader r(d);
     std::vector<Subpath> out;
     glm::dvec2 cur(0), start(0), ctrl(0);  // ctrl: the last control point, for S and T
@@ -161,6 +162,7 @@ std::vector<Subpath> parse_path(std::string_view d, double tolerance) {
     };
     auto begin = [&](glm::dvec2 p) {
         finish();
+        if (!out.empty()) points += out.back().points.size();
         out.push_back({{p}, false});
     };
     r.skip_separators();
@@ -225,6 +227,8 @@ std::vector<Subpath> parse_path(std::string_view d, double tolerance) {
             cur = start;
             break;
         }
+        if (max_points && !out.empty() && points + out.back().points.size() > max_points)
+            throw DataError("more than " + std::to_string(max_points) + " points once its curves are flattened");
         last = curve ? char(std::toupper(static_cast<unsigned char>(cmd))) : 0;
         ctrl = next_ctrl;
         r.skip_separators();
@@ -314,9 +318,11 @@ double parse_number_prefix(std::string_view s, std::string_view& rest) {
 std::vector<Chain> stroke_outline(const std::vector<Chain>& open, const Stroke& stroke, double tolerance) {
     using namespace ClipperLib;
     if (!(stroke.width > 0)) return {};
+    if (!std::isfinite(stroke.width)) throw DataError("a stroke too wide to draw");
     double size = stroke.width;
     for (const Chain& c : open)
         for (glm::dvec2 p : c) size = std::max({size, std::abs(p.x), std::abs(p.y)});
+    if (!std::isfinite(size + stroke.width)) throw DataError("coordinates too large to stroke");
     // Integer grid of 2^-50 of the extent, as region2d.hpp's.
     const double scale = std::ldexp(1.0, 50 - std::ilogb(size + stroke.width) - 1);
     const double delta = stroke.width / 2 * scale;

@@ -4,6 +4,7 @@
 // `transform` list, and the stroke outline of open paths (Clipper's
 // offset, which is what OpenSCAD draws for them).
 #pragma once
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -31,7 +32,9 @@ struct Subpath {
 // Path data with curves flattened: an arc (A) into chords whose sagitta is
 // within `tolerance` of its larger radius, a Bézier (C S Q T) within
 // `tolerance` of its control polygon's extent.
-std::vector<Subpath> parse_path(std::string_view d, double tolerance);
+// More than `max_points` points (0: no bound) is a DataError, found while
+// flattening, before the memory is spent.
+std::vector<Subpath> parse_path(std::string_view d, double tolerance, std::uint64_t max_points = 0);
 
 // `points` of <polyline> and <polygon>: pairs of numbers (an odd count
 // drops the last, as SVG says).

@@ -261,6 +261,13 @@ TEST_CASE("bad SVG files are located errors; what kerf does not draw, a warning"
     r = check_scad("e.svg", svg("", ""), ", dpi = 0");
     CHECK(r.err.find("s.scad:2:3: warning: import: dpi must be positive, got 0") != std::string::npos);
 
+    // Curves flattened past the list limit stop at it, before the memory is spent.
+    write_file(dir / "big.svg", svg("", "<path d=\"M0 0 A 1 1 0 0 1 2 0 A 1 1 0 0 1 0 0 Z\"/>"));
+    r = run_kerf("check '" + write_file(dir / "b.scad", "import(\"big.svg\");\n") + "' --max-list 100", dir);
+    CHECK(r.status == 1);
+    CHECK(error(r) == "b.scad:1:1: error: import(\"big.svg\"): line 3: path data (d) of <path>: more than 100 points "
+                      "once its curves are flattened");
+
     r = run_kerf("check '" + write_file(dir / "n.scad", "import(\"missing.svg\");\n") + "'", dir);
     CHECK(r.status == 1);
     CHECK(r.err.find("n.scad:1:1: error:") != std::string::npos);
