@@ -215,6 +215,23 @@ TEST_CASE("open SVG paths are drawn as their stroke, as OpenSCAD 2021.01 draws t
     }
 }
 
+TEST_CASE("a mixed SVG drawing measures as OpenSCAD 2021.01's import of it", "[svg]") {
+    auto dir = test_dir("svg_mixed");
+    // A viewBox page, nested transforms, a rounded rect holding a turned
+    // trapezoid, a circle, a Bézier outline with an arc-drawn hole, and a
+    // stroked polyline. `openscad -o x.stl`: volume 3238.61.
+    const std::string body =
+        "<g transform=\"translate(30 20)\"><rect x=\"-28\" y=\"-18\" width=\"56\" height=\"36\" rx=\"4\"/>"
+        "<g transform=\"rotate(15)\"><path d=\"M -10 -5 h 20 l 5 10 h -30 z\"/></g></g>"
+        "<circle cx=\"70\" cy=\"20\" r=\"8\"/>"
+        "<path d=\"M 80 5 C 90 -5, 100 15, 110 5 L 110 35 Q 95 45 80 35 Z M 90 15 a 4 4 0 1 0 8 0 a 4 4 0 1 0 -8 0 z\"/>"
+        "<polyline points=\"0,45 20,50 40,45\" stroke-width=\"2\"/>";
+    const Measured m = extrude(dir, "logo.svg", body, "", "width=\"60mm\" height=\"40mm\" viewBox=\"0 0 60 40\"");
+    check_volume(m, 3238.61, 1e-3);
+    check_bounds(m, {-1.21, -11.03, 110, 38}, 0.2);  // bounds of the measure's ray grid, 1/256 of the size
+    if (const double ref = reference(dir, "logo.svg"); std::isfinite(ref)) CHECK(ref == Approx(3238.61).epsilon(1e-5));
+}
+
 TEST_CASE("bad SVG files are located errors; what kerf does not draw, a warning", "[svg]") {
     auto dir = test_dir("svg_bad");
     auto check_scad = [&](const std::string& file, const std::string& text, const std::string& args = "") {
