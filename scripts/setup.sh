@@ -13,6 +13,7 @@ packages=(
   libqhull-dev   # hull(), minkowski(): convex hulls (libqhull_r)
   libpolyclipping-dev   # offset(): Clipper's polygon booleans and offsets
   libdxflib-dev   # import() of .dxf drawings
+  libxml2-dev   # import() of .svg drawings: the XML (kerf parses path data itself)
   libcpp-httplib-dev   # kerf view's HTTP server
 )
 if [[ "${1:-}" != "--render" ]]; then

@@ -11,14 +11,16 @@
 
 #include "interpreter/import/dxf.hpp"
 #include "interpreter/import/mesh_import.hpp"
+#include "interpreter/import/svg.hpp"
 #include "interpreter/modules/args.hpp"
+#include "interpreter/modules/projection_leaf.hpp"
 
 namespace kerf::eval {
 
 namespace {
 
 using P = csg::PrimKind;
-enum { File, Solid, Convexity, Layer, Origin, Scale };
+enum { File, Solid, Convexity, Layer, Origin, Scale, Center, Dpi };
 
 void add_flat(ModuleCall& c, P kind, std::initializer_list<double> p, std::uint32_t index = 0) {
     c.add_primitive(kind, p, index);
@@ -50,7 +52,59 @@ void add_segment(ModuleCall& c, const DxfSegment& s) {
     g.make_node(mark, graph::NodeKind::Intersection, c.st.loc);
 }
 
+// Loops as one even-odd Prism section.
+void add_loops(ModuleCall& c, const std::vector<std::vector<glm::dvec2>>& loops) {
+    GraphBuilder& g = c.graph();
+    g.graph.polygons.push_back(projection::loops_polygon(loops));
+    add_flat(c, P::Prism, {0, 1}, static_cast<std::uint32_t>(g.graph.polygons.size() - 1));
+}
+
+// The unit disc under a plane map: an exact circle or ellipse.
+void add_disc(ModuleCall& c, const Map2& a) {
+    GraphBuilder& g = c.graph();
+    const std::size_t mark = g.mark();
+    add_flat(c, P::Cylinder, {0, 1, 1, 1});
+    glm::dmat4 m(1.0);
+    // A mirrored map draws the same disc as its mirror image turned back
+    // (the disc is symmetric), which keeps the leaf's frame right-handed.
+    const double flip = a[0][0] * a[1][1] - a[1][0] * a[0][1] < 0 ? -1 : 1;
+    m[0] = glm::dvec4(a[0][0], a[0][1], 0, 0);
+    m[1] = glm::dvec4(flip * a[1][0], flip * a[1][1], 0, 0);
+    m[3] = glm::dvec4(a[2][0], a[2][1], 0, 1);
+    g.graph.matrices.push_back(m);
+    g.wrap(mark, graph::NodeKind::Transform, static_cast<std::uint32_t>(g.graph.matrices.size() - 1), c.st.loc);
+}
+
+// The reader's result; its MeshFormatError an error at the import, naming the file.
+template <typename Read>
+auto read_drawing(ModuleCall& c, Read&& read) {
+    try {
+        return read();
+    } catch (const MeshFormatError& e) {
+        throw SourceError(c.st.loc, "import(\"" + c.args[File].as_string() + "\"): " + e.what());
+    }
+}
+
 }  // namespace
+
+void import_svg_drawing(ModuleCall& c, const std::string& path) {
+    const Args& a = c.args;
+    SvgOptions o;
+    o.center = arg_bool(a, Center, "center", false);
+    o.dpi = arg_positive(a, Dpi, "dpi", 72);
+    o.tolerance = c.curve_tolerance();
+    o.max_items = c.limits().list_elements;
+    const SvgDrawing drawing = read_drawing(c, [&] { return import_svg(path, o); });
+    const std::string name = "\"" + a[File].as_string() + "\"";
+    for (const std::string& w : drawing.warnings) c.warn(name + " " + w);
+    if (drawing.items.empty()) return c.warn(name + " holds no shape: the empty shape");
+    const std::size_t mark = c.graph().mark();
+    for (const SvgItem& it : drawing.items) {
+        if (it.loops.empty()) add_disc(c, it.disc);
+        else add_loops(c, it.loops);
+    }
+    c.graph().group(mark, c.st.loc);
+}
 
 void import_drawing(ModuleCall& c, const std::string& path) {
     const Args& a = c.args;
@@ -63,12 +117,7 @@ void import_drawing(ModuleCall& c, const std::string& path) {
     o.scale = arg_positive(a, Scale, "scale", 1);
     o.tolerance = c.curve_tolerance();
     o.max_entities = c.limits().list_elements;
-    DxfShape shape;
-    try {
-        shape = import_dxf(path, o);
-    } catch (const MeshFormatError& e) {
-        throw SourceError(c.st.loc, "import(\"" + a[File].as_string() + "\"): " + e.what());
-    }
+    const DxfShape shape = read_drawing(c, [&] { return import_dxf(path, o); });
     const std::string name = "\"" + a[File].as_string() + "\"";
     if (shape.open_paths)
         c.warn(std::to_string(shape.open_paths) + " open path(s) in " + name +
@@ -78,19 +127,7 @@ void import_drawing(ModuleCall& c, const std::string& path) {
                       " holds no closed outline: the empty shape");
     GraphBuilder& g = c.graph();
     const std::size_t mark = g.mark();
-    if (!shape.loops.empty()) {
-        csg::Polygon2 poly;
-        poly.lo = glm::dvec2(std::numeric_limits<double>::infinity());
-        poly.hi = -poly.lo;
-        for (const auto& loop : shape.loops)
-            for (std::size_t i = 0; i < loop.size(); ++i) {
-                const glm::dvec2 p = loop[i], q = loop[(i + 1) % loop.size()];
-                if (p != q) poly.edges.emplace_back(p.x, p.y, q.x, q.y);
-                poly.lo = glm::min(poly.lo, p), poly.hi = glm::max(poly.hi, p);
-            }
-        g.graph.polygons.push_back(std::move(poly));
-        add_flat(c, P::Prism, {0, 1}, static_cast<std::uint32_t>(g.graph.polygons.size() - 1));
-    }
+    if (!shape.loops.empty()) add_loops(c, shape.loops);
     for (std::size_t i = 0; i < shape.circles.size(); ++i)
         if (shape.circle_depth[i] % 2 == 0) add_circle(c, shape.circles[i]);
     for (const DxfSegment& s : shape.segments)

@@ -153,7 +153,7 @@ std::vector<std::vector<glm::dvec2>> section_loops(const std::vector<Tri>& tris)
     return loops;
 }
 
-std::uint32_t prism_node(GraphBuilder& g, const std::vector<std::vector<glm::dvec2>>& loops, const SourceLoc& loc) {
+csg::Polygon2 loops_polygon(const std::vector<std::vector<glm::dvec2>>& loops) {
     csg::Polygon2 poly;
     poly.lo = glm::dvec2(std::numeric_limits<double>::infinity());
     poly.hi = -poly.lo;
@@ -164,6 +164,11 @@ std::uint32_t prism_node(GraphBuilder& g, const std::vector<std::vector<glm::dve
             poly.lo = glm::min(poly.lo, p);
             poly.hi = glm::max(poly.hi, p);
         }
+    return poly;
+}
+
+std::uint32_t prism_node(GraphBuilder& g, const std::vector<std::vector<glm::dvec2>>& loops, const SourceLoc& loc) {
+    csg::Polygon2 poly = loops_polygon(loops);
     if (poly.edges.empty()) return kEmpty;
     g.graph.polygons.push_back(std::move(poly));
     graph::Node n;

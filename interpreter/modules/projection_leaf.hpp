@@ -26,6 +26,8 @@ std::vector<Tri> leaf_triangles(const graph::SceneGraph& g, const graph::Node& n
 // vertex at z = 0 counts as above, so every loop is well defined.
 std::vector<std::vector<glm::dvec2>> section_loops(const std::vector<Tri>& tris);
 
+// The loops' edges as one even-odd Prism section, with its box.
+csg::Polygon2 loops_polygon(const std::vector<std::vector<glm::dvec2>>& loops);
 // A flat Prism node over the loops (even-odd), or kNone for no edges.
 std::uint32_t prism_node(GraphBuilder& g, const std::vector<std::vector<glm::dvec2>>& loops, const SourceLoc& loc);
 // A flat node over existing children.

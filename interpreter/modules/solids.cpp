@@ -203,10 +203,11 @@ void polyhedron(ModuleCall& c) {
 
 void import_file(ModuleCall& c) {
     const Args& a = c.args;
-    if (!a.has(0) || !a[0].is_string()) arg_error(a, "file must be a string naming an .stl, .obj, .ply or .dxf file");
+    if (!a.has(0) || !a[0].is_string()) arg_error(a, "file must be a string naming an .stl, .obj, .ply, .dxf or .svg file");
     const bool solid = arg_bool(a, 1, "solid", true);
     const std::string path = c.files().resolve(a[0].as_string(), c.st.loc);
     if (path.size() >= 4 && strcasecmp(path.c_str() + path.size() - 4, ".dxf") == 0) return import_drawing(c, path);
+    if (path.size() >= 4 && strcasecmp(path.c_str() + path.size() - 4, ".svg") == 0) return import_svg_drawing(c, path);
     const std::string key = (solid ? "1|" : "0|") + path;
     auto it = c.state().imported.find(key);
     if (it == c.state().imported.end()) {
@@ -233,7 +234,7 @@ const ModuleEntry kSolids[] = {
     {"paraboloid", ModuleKind::Solid, {"h", "r"}, paraboloid},
     {"hyperboloid", ModuleKind::Solid, {"h", "r", "waist"}, hyperboloid},
     {"polyhedron", ModuleKind::Solid, {"points", "faces", "convexity", "triangles"}, polyhedron},
-    {"import", ModuleKind::Solid, {"file", "solid", "convexity", "layer", "origin", "scale"}, import_file},
+    {"import", ModuleKind::Solid, {"file", "solid", "convexity", "layer", "origin", "scale", "center", "dpi"}, import_file},
 };
 
 }  // namespace
