@@ -13,11 +13,14 @@ It checks, as a user would see them:
   typed and saved lists it again and keeps the image;
 - "kerf view" prints the URL of its page in the task's terminal, and that
   page, opened in the browser, shows the render.
-Exit 1 on the first failure; screenshots of each state go to --shots DIR.
+Exit 1 if a check failed; screenshots of each state go to --shots DIR.
 
-Usage: editor_check.py KERF CODE_SERVER [--shots DIR]   (scripts/editor_check.sh)"""
+Usage: editor_check.py KERF CODE_SERVER [--shots DIR]
+(docs/editors.md, "Running the check again", says how to install code-server.)"""
 import argparse
+import base64
 import json
+import math
 import os
 import re
 import shutil
@@ -32,6 +35,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, os.path.join(ROOT, "tests", "cli", "view"))
 from webdriver import Browser, find_tools, free_port  # noqa: E402
+from test_view_browser import full_image_after  # noqa: E402
 
 # WebDriver's key codes (W3C WebDriver, "Keyboard actions").
 KEY = {"Enter": "\ue007", "Escape": "\ue00c", "Control": "\ue009", "Shift": "\ue008", "F1": "\ue031",
@@ -90,6 +94,7 @@ class Editor:
 
     def __init__(self, code_server, folder, kerf, shots):
         self.folder = folder
+        self.kerf = kerf
         self.shots = shots
         self.home = tempfile.mkdtemp(prefix="kerf_vscode_")
         data = os.path.join(self.home, "data")
@@ -130,9 +135,20 @@ class Editor:
             time.sleep(0.2)
         self.browser = Browser(*find_tools(), width=1280, height=800, limit=60)
 
-    def shot(self, name):
-        if self.shots:
-            self.browser.screenshot(os.path.join(self.shots, name + ".png"))
+    def shot(self, name, workbench=True):
+        """A screenshot: of the editors and the panel below them (the part
+        of the workbench docs/editors.md shows), or of the whole window."""
+        if not self.shots:
+            return
+        path = os.path.join(self.shots, name + ".png")
+        area = workbench and self.browser.js(
+            "const a = document.querySelector('.part.editor'), b = document.querySelector('.part.panel');"
+            " let n = a; while (n && !n.contains(b)) n = n.parentElement; return n;")
+        if not area:
+            return self.browser.screenshot(path)
+        png = self.browser._s("GET", "/element/%s/screenshot" % next(iter(area.values())), timeout=30)
+        with open(path, "wb") as f:
+            f.write(base64.b64decode(png))
 
     def keys(self, *chord):
         """One chord (all keys down, then up in reverse), e.g. keys("Control", "s")."""
@@ -220,6 +236,7 @@ class Editor:
             if want in re.sub(r"\s+", "", self.terminal_text() or ""):
                 return True
             time.sleep(0.2)
+        print("  (the terminals showed:\n%s)" % self.terminal_text(), flush=True)
         return False
 
     def terminal_text(self):
@@ -272,6 +289,23 @@ def edit(ed, text):
             " return t && !t.classList.contains('dirty');", "the scene saved")
 
 
+def task_ran(ed, *args):
+    """Whether a task's kerf runs with exactly these arguments, read from
+    /proc: the terminal shows only its last rows, and the `Executing task`
+    line has scrolled away once kerf has printed a few lines."""
+    kerf = os.path.realpath(ed.kerf)
+    for pid in filter(str.isdigit, os.listdir("/proc")):
+        try:
+            exe = os.path.realpath("/proc/%s/exe" % pid)
+            with open("/proc/%s/cmdline" % pid, "rb") as f:
+                argv = [a.decode() for a in f.read().split(b"\0")[:-1]]
+        except OSError:
+            continue
+        if exe == kerf and argv[1:] == list(args):
+            return True
+    return False
+
+
 def wait_file(path, newer_than, what, limit=30.0):
     deadline = time.monotonic() + limit
     while time.monotonic() < deadline:
@@ -308,8 +342,8 @@ def run(ed, folder):
     ed.choose("kerf watch")
     ed.wait("return %s.test(document.querySelector('.panel').textContent);" % "/kerf watch: nothing written to /",
             "the watch task's first run in its terminal")
-    check(ed.terminal_has("kerf watch " + scene + " --no-progress"),
-          "kerf watch task: the terminal ran `kerf watch %s --no-progress`" % scene)
+    check(task_ran(ed, "watch", scene, "--no-progress"),
+          "kerf watch task: kerf runs `kerf watch %s --no-progress`" % scene)
     markers(ed, [marker(BAD_AT)], "kerf watch task, first run")
     check(not os.path.exists(png), "kerf watch task: no image for a scene with an error")
 
@@ -322,6 +356,9 @@ def run(ed, folder):
     size = ed.wait("return [...document.querySelectorAll('.statusbar-item')].map(r => r.textContent.trim())"
                    ".find(t => /^\\d+x\\d+$/.test(t));", "the image preview's size in the status bar")
     check(size == "800x600", "scene.png opens in an editor tab (Image Preview, %s)" % size)
+    # Beside the scene, as the docs advise.
+    ed.palette("View: Move Editor into Right Group")
+    ed.wait("return document.querySelectorAll('.editor-group-container').length === 2;", "the image beside the scene")
     ed.shot("vscode_watch_image")
 
     # A new error, saved: listed at its place, the last image kept.
@@ -334,6 +371,37 @@ def run(ed, folder):
     edit(ed, GOOD)
     wait_file(png, kept, "kerf watch task: the next fix renders again")
     markers(ed, [], "kerf watch task, after the second fix")
+
+    # kerf view: the URL of its page in the task's terminal; the page, opened
+    # in the browser (a tab of its own), shows the render.
+    ed.palette("Tasks: Run Task")
+    ed.choose("kerf view")
+    url = ed.wait("const m = /kerf view: (http:\\/\\/127\\.0\\.0\\.1:\\d+\\/) shows/.exec("
+                  "[...document.querySelectorAll('.terminal-wrapper .xterm-rows')]"
+                  ".map(x => [...x.children].map(r => r.textContent).join('')).join(''));"
+                  " return m && m[1];", "kerf view's URL in the task's terminal")
+    check(task_ran(ed, "view", scene), "kerf view task: kerf runs `kerf view %s`" % scene)
+    ed.shot("vscode_view_terminal")
+    handle = ed.browser._s("POST", "/window/new", {"type": "tab"})["handle"]
+    ed.browser._s("POST", "/window", {"handle": handle})
+    ed.browser.get(url)
+    page = full_image_after(ed.browser, 0, "the full render in kerf view's page", 60)
+    # The sphere of radius 1 seen from the page's camera covers the disc a
+    # pinhole camera projects (vertical fov), less its darkest rim, which
+    # is as grey as the background (tests/cli/view/test_view_browser.py
+    # checks the disc exactly, with a red sphere).
+    cam = re.search(r"position = \[([-\d.e]+), ([-\d.e]+), ([-\d.e]+)\].*look_at = \[0, 0, 0\].*fov = ([\d.]+)",
+                    page["statement"])
+    disc = 0.0
+    if cam:
+        dist = math.sqrt(sum(float(cam.group(k)) ** 2 for k in (1, 2, 3)))
+        r_px = math.tan(math.asin(1 / dist)) / math.tan(math.radians(float(cam.group(4)) / 2)) * page["h"] / 2
+        disc = math.pi * r_px * r_px
+    check(page["w"] == 800 and page["h"] == 600 and not page["diag"].strip() and
+          0.85 * disc < page["object"] < 1.02 * disc,
+          "kerf view's page (%s) shows the %dx%d render, %d px of sphere (the projected disc: %.0f px), no diagnostic"
+          % (url, page["w"], page["h"], page["object"], disc))
+    ed.shot("vscode_view_page", workbench=False)
 
 
 def main():
@@ -366,7 +434,7 @@ def main():
                 ed.open_workbench()
                 ed.click_explorer("scene.sdl")
         except Exception:
-            ed.shot("failure")
+            ed.shot("failure", workbench=False)
             raise
         if a.keep:
             print(ed.url, ed.browser.base, ed.browser.session, flush=True)
