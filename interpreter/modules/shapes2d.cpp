@@ -43,7 +43,7 @@ void circle(ModuleCall& c) {
     if (a.has(0) && a.has(1)) arg_error(a, "give r or d, not both");
     const double r = a.has(1) ? arg_number(a, 1, "d", 2) / 2 : arg_number(a, 0, "r", 1);
     if (!(r > 0)) arg_error(a, "radius must be positive, got " + format_number(r));
-    if (const int n = honoured_facets(c)) return add_regular_prism(c, n, r);
+    if (const int n = honoured_facets(c, r)) return add_regular_prism(c, n, r);
     c.exact_curve();
     c.add_primitive(P::Cylinder, {0, 1, r, r});
     mark_flat(c);
