@@ -11,7 +11,7 @@
 
 #include "tests/cli/measure_scene.hpp"
 
-TEST_CASE("--facets takes auto, exact or openscad; anything else is exit 2 with one line") {
+TEST_CASE("the facets option takes auto, exact or openscad, anything else is exit 2 with one line") {
     auto dir = test_dir("facets_option");
     const std::string scene = write_file(dir / "nut.scad", "cylinder(h = 3, r = 5, $fn = 6);\n");
     for (const char* cmd : {"render", "check", "dump", "measure"}) {

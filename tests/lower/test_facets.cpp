@@ -67,7 +67,7 @@ csg::Scene lowered_in(FacetMode mode, const std::string& text) {
 glm::dvec3 polar(double r, double a, double z) { return {r * std::cos(a * M_PI / 180), r * std::sin(a * M_PI / 180), z}; }
 }  // namespace
 
-TEST_CASE("--facets exact ignores every $fn: the hex nut is round") {
+TEST_CASE("facets exact ignores every $fn: the hex nut is round") {
     const std::string nut = "cylinder(h = 3, r = 5, $fn = 6);";
     const csg::Scene exact = lowered_in(FacetMode::Exact, nut), faceted = lowered_in(FacetMode::Auto, nut);
     // Along a ray at 30° (through the middle of a hexagon side, 4.33 from the
@@ -85,7 +85,7 @@ TEST_CASE("--facets exact ignores every $fn: the hex nut is round") {
 // one.scad; openscad -o one.stl one.scad`, the box of the STL's vertices
 // (6 significant digits). Meshes and prisms have exact boxes (the box of
 // their corners), so the boxes must agree to the STL's rounding.
-TEST_CASE("--facets openscad places the vertices where OpenSCAD 2021 does") {
+TEST_CASE("facets openscad places the vertices where OpenSCAD 2021 does") {
     struct Case {
         const char* scad;
         glm::dvec3 lo, hi;
@@ -128,7 +128,7 @@ TEST_CASE("--facets openscad places the vertices where OpenSCAD 2021 does") {
 // (`rotate_extrude(angle = 90, $fn = 8) ...`: 2 steps, vertices at 0°, 45°,
 // 90°, e.g. (2.12132, 2.12132, 1)); between two meridians the faces are flat,
 // so halfway round the ring reaches only r·cos(half the step).
-TEST_CASE("--facets openscad revolves in OpenSCAD's steps") {
+TEST_CASE("facets openscad revolves in the steps of OpenSCAD") {
     const csg::Scene ring = lowered_in(FacetMode::OpenScad, "rotate_extrude($fn = 7) translate([2, 0]) square(1);");
     const double half = 180.0 / 7, c = std::cos(half * M_PI / 180);
     for (int k = 0; k < 7; ++k) {
