@@ -198,6 +198,9 @@ void linear_extrude(ModuleCall& c) {
         if (!g.graph.nodes[g.pending[i]].flat)
             throw SourceError(g.graph.nodes[g.pending[i]].loc, "linear_extrude: extrudes 2D shapes, not 3D solids");
     bool sweep = twist != 0 || top.x != top.y;
+    // OpenSCAD cuts these sides into slices of flat triangles; kerf sweeps them exactly in every mode.
+    if (sweep && c.facet_mode() == FacetMode::OpenScad)
+        c.warn("a twisted or unevenly scaled extrusion is swept exactly, not in OpenSCAD's slices");
     for (std::size_t i = mark; i < g.pending.size() && top.x != 1; ++i)
         sweep = sweep || has_sum_or_resize(g.graph, g.pending[i]);
     if (sweep) {
