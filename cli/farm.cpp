@@ -83,7 +83,7 @@ int render_frames(const Options& o) {
         }
         const std::string n = std::to_string(i) + "/" + std::to_string(f.frames);
         render_one(o, scene, o.render, frame_path(o.output, i, f.frames),
-                   render_key(scene, o.render) + " frame=" + n);
+                   render_key(scene, o.render, o.eval.facets) + " frame=" + n);
     }
     return 0;
 }
@@ -102,7 +102,7 @@ int render_band(const Options& o) {
     ro.crop = std::array<int, 4>{0, rows[0], ro.width, rows[1]};
     const std::string n = std::to_string(f.tile) + "/" + std::to_string(f.tiles);
     // The key names the whole image; the band says which part this is.
-    render_one(o, scene, ro, path, render_key(scene, o.render) + " band=" + n);
+    render_one(o, scene, ro, path, render_key(scene, o.render, o.eval.facets) + " band=" + n);
     return 0;
 }
 

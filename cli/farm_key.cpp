@@ -79,7 +79,7 @@ std::uint64_t scene_hash(const csg::Scene& s) {
     return h.h;
 }
 
-std::string render_key(const csg::Scene& scene, const render::RenderOptions& ro) {
+std::string render_key(const csg::Scene& scene, const render::RenderOptions& ro, FacetMode facets) {
     char hash[17];
     std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(scene_hash(scene)));
     std::string options = ro.adaptive ? "aa:" + std::to_string(ro.aa_samples) + ":" + number(ro.aa_threshold)
@@ -88,6 +88,7 @@ std::string render_key(const csg::Scene& scene, const render::RenderOptions& ro)
     if (ro.aov != render::Aov::None) options += ",aov:" + std::to_string(int(ro.aov));
     options += ro.double_precision ? ",double" : ",float";
     options += ",reflect:" + std::to_string(ro.max_reflect_depth);
+    if (facets != FacetMode::Auto) options += facets == FacetMode::Exact ? ",facets:exact" : ",facets:openscad";
     if (ro.crop) {
         const auto& k = *ro.crop;
         options += ",crop:" + std::to_string(k[0]) + ":" + std::to_string(k[1]) + ":" + std::to_string(k[2]) + ":" +

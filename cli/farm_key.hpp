@@ -8,6 +8,7 @@
 #include <string>
 
 #include "csg/scene.hpp"
+#include "interpreter/interpreter.hpp"
 #include "render/render.hpp"
 
 namespace kerf::cli {
@@ -20,8 +21,10 @@ constexpr const char* kFarmKeyword = "kerf";
 std::uint64_t scene_hash(const csg::Scene& scene);
 
 // "scene=HASH width=W height=H seed=S options=..." where options lists the
-// sampling, precision and crop settings, each exactly.
-std::string render_key(const csg::Scene& scene, const render::RenderOptions& ro);
+// sampling, precision and crop settings, each exactly, and --facets unless
+// auto (bands cut in other modes are refused together even where the scene
+// has no curve to tell them apart).
+std::string render_key(const csg::Scene& scene, const render::RenderOptions& ro, FacetMode facets = FacetMode::Auto);
 
 // The rows [y0, y1) of band k of n of an image `height` rows tall.
 inline std::array<int, 2> band_rows(int height, int k, int n) {

@@ -79,6 +79,7 @@ const char* usage_text() {
            "                        [--seed N] [--precision double|float] [--base DIR]\n"
            "                        [--max-depth 4]  (reflections and refractions per ray, 0..32)\n"
            "                        [--curve-tolerance 1e-4]  (text(), hull(), minkowski(), offset(): flattening, a fraction of size)\n"
+           "                        [--facets auto|exact|openscad]  ($fn/$fa/$fs: docs/openscad.md \"Facets\")\n"
            "                        [--frames N [--frame I]] [--tile K/N] [--resume]\n"
            "    SCENE '-' reads standard input (includes resolve against --base DIR or the\n"
            "    working folder); -o - writes the PNG to standard output\n"
@@ -91,6 +92,7 @@ const char* usage_text() {
            "  kerf check  SCENE.sdl   parse, evaluate and lower; print diagnostics only\n"
            "  kerf dump   SCENE.sdl   print the lowered, flattened CSG tree\n"
            "  kerf measure SCENE.sdl [--resolution 512] [--threads N] [--precision double|float]\n"
+           "                         [--facets auto|exact|openscad]\n"
            "    volume, area, centroid and bounds of the exact solid, with error estimates\n"
            "  kerf assemble OUT TILE...   join --tile bands into the bytes of a single render\n"
            "farm (docs/farm.md): --frames N renders OUT_0001..OUT_N ($t = (I-1)/N for frame I),\n"
@@ -191,6 +193,14 @@ Options parse_options(const std::vector<std::string>& args) {
         } else if (a == "-D") parse_define(value(), o);
         else if (a.size() > 2 && a.rfind("-D", 0) == 0) parse_define(a.substr(2), o);
         else if (a == "--base") o.base = value();
+        else if (a == "--facets") {
+            // docs/spec.md §11: what $fn, $fa and $fs do to curves.
+            const std::string& v = value();
+            if (v == "auto") o.eval.facets = FacetMode::Auto;
+            else if (v == "exact") o.eval.facets = FacetMode::Exact;
+            else if (v == "openscad") o.eval.facets = FacetMode::OpenScad;
+            else throw UsageError("--facets expects auto, exact or openscad, got '" + v + "'");
+        }
         else if (a == "--curve-tolerance")
             o.eval.curve_tolerance = parse_real(a, value(), 1e-9, 0.1, "from 1e-9 to 0.1");
         else if (a == "-I") o.eval.include_dirs.push_back(value());

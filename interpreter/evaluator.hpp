@@ -72,6 +72,11 @@ struct BlockInfo {
     bool needs_scope = false;
 };
 
+// The facet settings a curve is cut by (docs/openscad.md, "Facets").
+struct FacetVars {
+    double fn = 0, fa = 12, fs = 2;
+};
+
 // Arguments of a built-in module matched to its parameter names
 // (modules/module_call.hpp).
 struct Args {
@@ -81,6 +86,9 @@ struct Args {
     std::vector<bool> given;
     double fn = 0;  // a $fn given in the call itself (docs/openscad.md, "Facets")
     bool facet_args = false;  // a $fn, $fa or $fs given in the call
+    // Every `$` argument of the call, bound for its children and its own
+    // facet settings as OpenSCAD binds them (the call's dynamic scope).
+    std::vector<DynVar> dollars;
 
     bool has(std::size_t i) const { return given[i]; }
     const Value& operator[](std::size_t i) const { return values[i]; }
@@ -100,6 +108,10 @@ public:
     // A curve made exact although $fn/$fa/$fs asked for facets (a call's
     // own, or set around it): counted, one warning at the end of the run.
     void exact_curve(const Args& a, const SourceLoc& loc);
+    // The $fn, $fa and $fs in force (innermost binding, OpenSCAD's defaults
+    // 0, 12, 2 otherwise), and what --facets does with them.
+    FacetVars facet_vars() const;
+    FacetMode facet_mode() const { return opt_.facets; }
     // Top-level statements fail independently: each error is kept and the
     // run goes on with the next statement, up to kMaxErrors; run() then
     // throws the first with all of them (SourceError::reported).

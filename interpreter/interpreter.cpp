@@ -94,7 +94,10 @@ graph::SceneGraph Evaluator::run(ast::Program program) {
     if (exact_curves_)
         warn(first_exact_curve_, "$fn, $fa and $fs are ignored on " + std::to_string(exact_curves_) +
                                      (exact_curves_ == 1 ? " curved shape" : " curved shapes") +
-                                     " (the first here): kerf renders curves exact");
+                                     " (the first here): kerf renders curves exact" +
+                                     (opt_.facets == FacetMode::Exact      ? " (--facets exact)"
+                                      : opt_.facets == FacetMode::OpenScad ? " (--facets openscad cuts only OpenSCAD's curves)"
+                                                                           : ""));
     if (!errors_.empty() || (opt_.werror && !warnings_.empty())) throw_errors();
     if (root_override_ >= 0) {
         out_.pending.assign(1, static_cast<std::uint32_t>(root_override_));
@@ -176,6 +179,19 @@ void Evaluator::exact_curve(const Args& a, const SourceLoc& loc) {
     }
     if (!set) return;
     if (exact_curves_++ == 0) first_exact_curve_ = loc;
+}
+
+FacetVars Evaluator::facet_vars() const {
+    FacetVars f;
+    bool fn = false, fa = false, fs = false;
+    for (auto it = dyn_.rbegin(); it != dyn_.rend(); ++it) {
+        // A binding that is not a number leaves OpenSCAD's default, as there.
+        const bool number = it->value.is_number();
+        if (it->name == "$fn" && !std::exchange(fn, true) && number) f.fn = it->value.as_number();
+        else if (it->name == "$fa" && !std::exchange(fa, true) && number) f.fa = it->value.as_number();
+        else if (it->name == "$fs" && !std::exchange(fs, true) && number) f.fs = it->value.as_number();
+    }
+    return f;
 }
 
 void Evaluator::warn(const SourceLoc& loc, std::string message) {

@@ -29,6 +29,13 @@ struct EvalLimits {
 // the main file's extension: `.scad` is lenient, everything else strict.
 enum class Dialect { Auto, Strict, Lenient };
 
+// --facets (docs/spec.md §11, docs/openscad.md "Facets"): what `$fn`, `$fa`
+// and `$fs` do. Auto: an explicit `$fn` from 3 to 12 on a circle or
+// cylinder call makes OpenSCAD's regular polygon, every other curve is
+// exact. Exact: every curve is exact. OpenScad: every curve OpenSCAD 2021
+// facets is cut into its facets, as OpenSCAD cuts it (the printed part).
+enum class FacetMode { Auto, Exact, OpenScad };
+
 struct EvalOptions {
     EvalLimits limits;
     Dialect dialect = Dialect::Auto;
@@ -42,6 +49,7 @@ struct EvalOptions {
     // --curve-tolerance: how far a flattened curve (a glyph's Béziers) may
     // be from the true one, as a fraction of the shape's size.
     double curve_tolerance = 1e-4;
+    FacetMode facets = FacetMode::Auto;  // --facets
     // Receives every file the run depends on, as it is looked up: the main
     // file, each file an include, use or import resolved to, and each place
     // searched before it (a file created there would be found instead).

@@ -33,6 +33,8 @@ public:
     Loader& files();
     const EvalLimits& limits() const;
     double curve_tolerance() const;  // EvalOptions::curve_tolerance
+    FacetVars facet_vars() const;    // the $fn, $fa, $fs in force for this call
+    FacetMode facet_mode() const;    // EvalOptions::facets
     // A primitive node at the statement, counted against the limit.
     void add_primitive(csg::PrimKind kind, std::initializer_list<double> p, std::uint32_t index = 0);
     // A warning at the statement (Evaluator::warn).

@@ -11,10 +11,14 @@
 //   of width 2|r| around each boundary edge added (r > 0) or taken away
 //   (r < 0) by Clipper, then a disc of radius |r| at the corners added or
 //   subtracted as Cylinder leaves: the set of points within |r| of the
-//   boundary is exactly those rectangles and discs (round_offset).
+//   boundary is exactly those rectangles and discs (round_offset);
+// - under --facets openscad, `r` is OpenSCAD's own: Clipper's round join
+//   with the arc tolerance OpenSCAD derives from $fn, $fa and $fs.
 #include <cmath>
 
+#include "interpreter/degrees.hpp"
 #include "interpreter/modules/args.hpp"
+#include "interpreter/modules/facets.hpp"
 #include "interpreter/modules/module_call.hpp"
 #include "interpreter/modules/plane_map.hpp"
 #include "interpreter/modules/region2d.hpp"
@@ -142,8 +146,11 @@ void offset(ModuleCall& c) {
         for (std::uint32_t id : shapes) g.push(id);
         return g.group(mark, c.st.loc);
     }
+    // --facets openscad: OpenSCAD's own round join, Clipper's arcs of
+    // get_fragments_from_r(|r|) steps per turn (its arc tolerance).
+    const bool openscad_arcs = round && c.facet_mode() == FacetMode::OpenScad;
     Map2 m(1.0);
-    if (shapes.size() == 1) {
+    if (shapes.size() == 1 && !openscad_arcs) {
         if (graph::Node* circle = lone_circle(g.graph, shapes[0], m); circle) {
             if (const double k = similarity_scale(m); k > 0) {
                 // Every join of a smooth curve is its round join: r, delta and chamfer agree.
@@ -157,10 +164,14 @@ void offset(ModuleCall& c) {
     Region2 region;
     try {
         region = flatten_region(g.graph, shapes, dist, c.curve_tolerance(), c.st.loc);
-        if (round) return round_offset(c, std::move(region), dist, c.curve_tolerance());
+        if (round && !openscad_arcs) return round_offset(c, std::move(region), dist, c.curve_tolerance());
         // OpenSCAD's miter limit: high enough never to square a sharp corner.
         ClipperOffset off(1e6);
-        off.AddPaths(region.paths, chamfer ? jtSquare : jtMiter, etClosedPolygon);
+        if (openscad_arcs) {
+            const int n = openscad_fragments(c, std::abs(dist), c.facet_vars());
+            off.ArcTolerance = std::abs(dist) * (1 - cos_deg(180.0 / n)) * region.scale;
+        }
+        off.AddPaths(region.paths, openscad_arcs ? jtRound : chamfer ? jtSquare : jtMiter, etClosedPolygon);
         Paths out;
         off.Execute(out, dist * region.scale);
         region.paths = std::move(out);

@@ -16,6 +16,7 @@
 #include "interpreter/modules/args.hpp"
 #include "interpreter/modules/module_call.hpp"
 #include "interpreter/modules/plane_rebuild.hpp"
+#include "interpreter/modules/revolve_facets.hpp"
 
 namespace kerf::eval {
 
@@ -126,33 +127,8 @@ private:
     }
 };
 
-// The half-space {n·x <= 0} with n in the XY plane.
-void push_halfspace(GraphBuilder& g, const SourceLoc& loc, double nx, double ny) {
-    graph::Node h;
-    h.kind = graph::NodeKind::Primitive;
-    h.prim = P::Plane;
-    h.p[0] = nx, h.p[1] = ny;
-    h.loc = loc;
-    g.push(g.add(std::move(h)));
-}
-
-// The revolution pending[mark..] (one node) limited to the wedge swept from
-// angle `from` by `angle` degrees (|angle| < 360): below 180° the overlap of
-// the two half-planes' half-spaces, above it their union.
-void cut_wedge(GraphBuilder& g, std::size_t mark, double from, double angle, const SourceLoc& loc) {
-    const double a1 = from + angle;
-    const double sign = angle > 0 ? 1 : -1;  // counter-clockwise, or clockwise for a negative angle
-    const std::size_t wedge = g.mark();
-    // Left of the start ray (counter-clockwise) and right of the end ray.
-    push_halfspace(g, loc, sign * sin_deg(from), -sign * cos_deg(from));
-    push_halfspace(g, loc, -sign * sin_deg(a1), sign * cos_deg(a1));
-    if (std::abs(angle) > 180) g.make_node(wedge, graph::NodeKind::Union, loc);
-    g.make_node(mark, graph::NodeKind::Intersection, loc);
-}
-
 void rotate_extrude(ModuleCall& c) {
     const Args& a = c.args;
-    c.exact_curve();  // revolved exactly, not in $fn steps
     static constexpr const char* kDxf[] = {"file", "layer", "origin", "scale"};
     for (std::size_t i = 0; i < 4; ++i) {
         if (!a.has(i)) continue;
@@ -179,6 +155,8 @@ void rotate_extrude(ModuleCall& c) {
                                         range + ")");
     }
     rev.mirrored = rev.xmax <= 0 && rev.xmin < 0;
+    if (c.facet_mode() != FacetMode::OpenScad) c.exact_curve();  // revolved exactly, not in $fn steps
+    else if (faceted_revolve(c, shapes, angle, rev.mirrored)) return;
     for (std::uint32_t id : shapes) rev.build(id);
     g.group(mark, c.st.loc);
     // OpenSCAD sweeps from the side the profile lies on: +x, or −x when mirrored.

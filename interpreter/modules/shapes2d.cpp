@@ -43,7 +43,7 @@ void circle(ModuleCall& c) {
     if (a.has(0) && a.has(1)) arg_error(a, "give r or d, not both");
     const double r = a.has(1) ? arg_number(a, 1, "d", 2) / 2 : arg_number(a, 0, "r", 1);
     if (!(r > 0)) arg_error(a, "radius must be positive, got " + format_number(r));
-    if (const int n = honoured_facets(c)) return add_regular_prism(c, n, r);
+    if (const int n = honoured_facets(c, r)) return add_regular_prism(c, n, r);
     c.exact_curve();
     c.add_primitive(P::Cylinder, {0, 1, r, r});
     mark_flat(c);
@@ -198,6 +198,9 @@ void linear_extrude(ModuleCall& c) {
         if (!g.graph.nodes[g.pending[i]].flat)
             throw SourceError(g.graph.nodes[g.pending[i]].loc, "linear_extrude: extrudes 2D shapes, not 3D solids");
     bool sweep = twist != 0 || top.x != top.y;
+    // OpenSCAD cuts these sides into slices of flat triangles; kerf sweeps them exactly in every mode.
+    if (sweep && c.facet_mode() == FacetMode::OpenScad)
+        c.warn("a twisted or unevenly scaled extrusion is swept exactly, not in OpenSCAD's slices");
     for (std::size_t i = mark; i < g.pending.size() && top.x != 1; ++i)
         sweep = sweep || has_sum_or_resize(g.graph, g.pending[i]);
     if (sweep) {

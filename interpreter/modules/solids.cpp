@@ -9,6 +9,7 @@
 #include "interpreter/modules/facets.hpp"
 #include "interpreter/modules/mesh_check.hpp"
 #include "interpreter/modules/module_call.hpp"
+#include "interpreter/modules/revolve_facets.hpp"
 
 namespace kerf::eval {
 
@@ -50,7 +51,8 @@ void sphere(ModuleCall& c) {
     const Args& a = c.args;
     double r = radius(a, 0, 1, "r", "d").value_or(1);
     if (!(r > 0)) arg_error(a, "radius must be positive, got " + format_number(r));
-    if (honoured_facets(c))  // OpenSCAD's rings of facets are not built: say so, the sphere is round
+    if (c.facet_mode() == FacetMode::OpenScad) return add_openscad_sphere(c, honoured_facets(c, r), r);
+    if (honoured_facets(c))  // auto builds no rings of facets: say so, the sphere is round
         c.warn("$fn = " + format_number(c.args.fn) + " is not honoured on a sphere; the sphere is exact");
     else c.exact_curve();
     c.add_primitive(P::Sphere, {r});
@@ -72,6 +74,19 @@ void cube(ModuleCall& c) {
 void frustum(ModuleCall& c, double h, double r1, double r2, bool center) {
     double z0 = center ? -h / 2 : 0;
     c.add_primitive(P::Cylinder, {z0, z0 + h, r1, r2});
+}
+
+// OpenSCAD's n-sided prism, frustum or pyramid: the n-gon of the larger
+// radius extruded and tapered to the other (to a point for a cone's tip),
+// upside down when the larger radius is on top.
+void faceted_frustum(ModuleCall& c, int n, double h, double r1, double r2, bool center) {
+    GraphBuilder& g = c.graph();
+    const std::size_t mark = g.mark();
+    const bool flip = r2 > r1;
+    add_regular_prism(c, n, flip ? r2 : r1, (flip ? r1 / r2 : r2 / r1) - 1);
+    const double z0 = center ? -h / 2 : 0;
+    if (flip) g.extrude(mark, z0 + h, z0, c.st.loc);
+    else g.extrude(mark, z0, z0 + h, c.st.loc);
 }
 
 // In the OpenSCAD dialect, a cylinder given both takes what OpenSCAD 2021
@@ -99,16 +114,8 @@ void cylinder(ModuleCall& c) {
     bool center = arg_bool(a, 3, "center", false);
     if (r1 < 0 || r2 < 0) arg_error(a, "radius must not be negative, got " + format_number(std::min(r1, r2)));
     if (r1 == 0 && r2 == 0) arg_error(a, "radius must be positive, got 0");
-    const int n = honoured_facets(c);
-    if (n && r1 > 0 && r2 > 0) {
-        // OpenSCAD's n-sided prism or frustum: the n-gon extruded, tapered to r2.
-        GraphBuilder& g = c.graph();
-        const std::size_t mark = g.mark();
-        add_regular_prism(c, n, r1, r2 / r1 - 1);
-        const double z0 = center ? -h / 2 : 0;
-        g.extrude(mark, z0, z0 + h, c.st.loc);
-        return;
-    }
+    const int n = honoured_facets(c, std::max(r1, r2));
+    if (n && ((r1 > 0 && r2 > 0) || c.facet_mode() == FacetMode::OpenScad)) return faceted_frustum(c, n, h, r1, r2, center);
     if (n) c.warn("$fn = " + format_number(c.args.fn) + " is not honoured on a cone's tip; the cone is exact");
     else c.exact_curve();
     frustum(c, h, r1, r2, center);
@@ -119,8 +126,11 @@ void cone(ModuleCall& c) {
     double h = arg_positive(a, 0, "h", 1);
     double r = radius(a, 1, 3, "r", "d").value_or(1);
     if (!(r > 0)) arg_error(a, "radius must be positive, got " + format_number(r));
-    c.exact_curve();  // curved like a cylinder: a $fn on it is ignored too
-    frustum(c, h, r, 0, arg_bool(a, 2, "center", false));
+    const bool center = arg_bool(a, 2, "center", false);
+    // --facets openscad: OpenSCAD's cylinder(h, r, 0); otherwise exact (a $fn on it is ignored too).
+    if (c.facet_mode() == FacetMode::OpenScad) return faceted_frustum(c, honoured_facets(c, r), h, r, 0, center);
+    c.exact_curve();
+    frustum(c, h, r, 0, center);
 }
 
 void torus(ModuleCall& c) {
@@ -129,6 +139,8 @@ void torus(ModuleCall& c) {
     double r = arg_positive(a, 1, "r", 0.25);
     if (!(r < R))
         arg_error(a, "minor radius r must be smaller than R, got r = " + format_number(r) + ", R = " + format_number(R));
+    // --facets openscad: as OpenSCAD's rotate_extrude() translate([R, 0]) circle(r).
+    if (c.facet_mode() == FacetMode::OpenScad) return faceted_torus(c, R, r);
     c.exact_curve();
     c.add_primitive(P::Torus, {R, r});
 }

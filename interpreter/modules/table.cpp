@@ -11,7 +11,7 @@ namespace {
 
 Args match_args(Evaluator& ev, const ModuleEntry& e, const ast::Stmt& st, Scope& s) {
     const std::size_t n = e.params.size();
-    Args a{e.name, &st, std::vector<Value>(n), std::vector<bool>(n, false)};
+    Args a{e.name, &st, std::vector<Value>(n), std::vector<bool>(n, false), 0, false, {}};
     std::size_t positional = 0;
     for (const ast::Binding& b : st.args) {
         std::size_t i = n;
@@ -26,13 +26,12 @@ Args match_args(Evaluator& ev, const ModuleEntry& e, const ast::Stmt& st, Scope&
             }
             i = positional++;
         } else {
-            if (b.name[0] == '$') {  // $fa, $fs...: accepted and ignored; $fn read by circle and cylinder
+            if (b.name[0] == '$') {  // bound for the call (builtin_module); $fn, $fa, $fs cut its curves
                 const bool facet = b.name == "$fn" || b.name == "$fa" || b.name == "$fs";
                 a.facet_args = a.facet_args || facet;
-                if (b.name == "$fn" && b.value) {
-                    const Value v = ev.eval(*b.value, s);
-                    if (v.is_number()) a.fn = v.as_number();
-                }
+                Value v = b.value ? ev.eval(*b.value, s) : Value();
+                if (b.name == "$fn" && v.is_number()) a.fn = v.as_number();
+                a.dollars.push_back(DynVar{b.name, std::move(v)});
                 continue;
             }
             for (std::size_t j = 0; j < n; ++j)
@@ -93,6 +92,9 @@ bool Evaluator::builtin_module(const ast::Stmt& st, Scope& s, bool top_level) {
         if (!lenient_) arg_error(a, e->kind == ModuleKind::Solid ? "a solid takes no children" : "takes no children");
         warn(st.loc, std::string("module ") + e->name + "() does not support child modules");  // ignored, as OpenSCAD
     }
+    // The call's `$` arguments hold for it and its children, as in OpenSCAD.
+    DynRestore restore(dyn_);
+    for (DynVar& d : a.dollars) dyn_.push_back(std::move(d));
     ModuleCall call(*this, st, s, std::move(a));
     if (lenient_) return builtin_module_lenient(*e, call);
     e->handler(call);
@@ -130,6 +132,8 @@ ModuleState& ModuleCall::state() { return ev_.modules_; }
 Loader& ModuleCall::files() { return ev_.files_; }
 const EvalLimits& ModuleCall::limits() const { return ev_.opt_.limits; }
 double ModuleCall::curve_tolerance() const { return ev_.opt_.curve_tolerance; }
+FacetVars ModuleCall::facet_vars() const { return ev_.facet_vars(); }
+FacetMode ModuleCall::facet_mode() const { return ev_.facet_mode(); }
 
 void ModuleCall::add_primitive(csg::PrimKind kind, std::initializer_list<double> p, std::uint32_t index) {
     const std::uint64_t limit = ev_.opt_.limits.primitives;

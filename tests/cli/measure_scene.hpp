@@ -18,10 +18,11 @@ struct Measured {
     int status = -1;
 };
 
-// `kerf measure` of `scad` (which imports the drawings beside it).
-inline Measured measure(const std::filesystem::path& dir, const std::string& scad) {
+// `kerf measure` of `scad` (which imports the drawings beside it), with
+// `options` added to the command line.
+inline Measured measure(const std::filesystem::path& dir, const std::string& scad, const std::string& options = "") {
     const std::string scene = write_file(dir / "scene.scad", scad + "\n");
-    auto r = run_kerf("measure '" + scene + "' --resolution 256", dir);
+    auto r = run_kerf("measure '" + scene + "' --resolution 256" + options, dir);
     Measured m;
     m.status = r.status, m.out = r.out, m.err = r.err;
     if (const std::size_t at = r.out.find("volume: "); at != std::string::npos) {

@@ -73,6 +73,7 @@ TEST_CASE("bands that do not join are exit 2 with one line, and the output stays
     render_bands(dir, "seed", 3, base + " --seed 9");
     render_bands(dir, "opts", 3, base + " --spp 4");
     render_bands(dir, "split", 2, base);
+    render_bands(dir, "facets", 3, base + " --facets exact");  // the same scene: it has no $fn
     render_farm_scene(dir, base + " -o " + quoted(dir, "plain.png"));
     write_file(dir / "text.png", "not a picture");
     const std::string a0 = quoted(dir, "a_tile0of3.png"), a1 = quoted(dir, "a_tile1of3.png"),
@@ -97,6 +98,8 @@ TEST_CASE("bands that do not join are exit 2 with one line, and the output stays
         foreign("opts_tile1of3.png",
                 "other options (spp:4,double,reflect:4, not aa:16:0.050000000000000003,double,reflect:4)"),
         foreign("split_tile1of2.png", "a split into 2 bands, not 3"),
+        foreign("facets_tile1of3.png", "other options (aa:16:0.050000000000000003,double,reflect:4,facets:exact, not "
+                                       "aa:16:0.050000000000000003,double,reflect:4)"),
         {" " + a0 + " " + quoted(dir, "plain.png"),
          p("plain.png") + ": not a band of a kerf render (render bands with kerf render --tile K/N)"},
         {" " + a0 + " " + quoted(dir, "text.png"), p("text.png") + ": not a PNG file"},

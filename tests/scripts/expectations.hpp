@@ -6,7 +6,8 @@
 // met again at the same place ends in " (N times)"); `// note: LINE:COL:
 // MESSAGE` a call-site note (all of them, in order: the warnings' notes,
 // then the error's);
-// `// limits: fuzz` runs the script under the fuzzer's limits. A location
+// `// limits: fuzz` runs the script under the fuzzer's limits; `// facets:
+// exact` or `// facets: openscad` under that --facets mode. A location
 // in another file than the script is written FILE:LINE:COL with FILE
 // relative to the repository (stdlib/shapes.sdl:11:5). Shared by the golden
 // script runner (test_scripts.cpp) and the docs/language.md examples.
@@ -37,6 +38,7 @@ struct Expectations {
     std::vector<std::string> warnings;
     std::vector<std::string> notes;
     bool fuzz_limits = false;
+    std::string facets = "auto";  // --facets
 };
 
 inline Expectations expectations_of(const std::string& text) {
@@ -46,6 +48,7 @@ inline Expectations expectations_of(const std::string& text) {
     e.warnings = markers(text, "// warning: ");
     e.notes = markers(text, "// note: ");
     for (const std::string& t : markers(text, "// limits: ")) e.fuzz_limits = e.fuzz_limits || t == "fuzz";
+    for (const std::string& t : markers(text, "// facets: ")) e.facets = t;
     return e;
 }
 

@@ -50,6 +50,8 @@ TEST_CASE("golden scripts do what their comments say", "[scripts]") {
 
     EvalOptions opt;
     if (want.fuzz_limits) opt.limits = test::fuzz_limits();
+    REQUIRE((want.facets == "auto" || want.facets == "exact" || want.facets == "openscad"));
+    opt.facets = want.facets == "exact" ? FacetMode::Exact : want.facets == "openscad" ? FacetMode::OpenScad : FacetMode::Auto;
     std::vector<std::string> echoed;
     opt.echo = [&](const std::string& line) { echoed.push_back(line); };
     std::vector<std::string> warnings, notes, errors;
