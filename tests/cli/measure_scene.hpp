@@ -18,9 +18,11 @@ struct Measured {
     int status = -1;
 };
 
-// `kerf measure` of `scad` (which imports the drawings beside it).
-inline Measured measure(const std::filesystem::path& dir, const std::string& scad) {
-    const std::string scene = write_file(dir / "scene.scad", scad + "\n");
+// `kerf measure` of `scad` (which imports the drawings beside it), as the
+// scene file `name` (its extension picks the dialect).
+inline Measured measure(const std::filesystem::path& dir, const std::string& scad,
+                        const std::string& name = "scene.scad") {
+    const std::string scene = write_file(dir / name, scad + "\n");
     auto r = run_kerf("measure '" + scene + "' --resolution 256", dir);
     Measured m;
     m.status = r.status, m.out = r.out, m.err = r.err;
