@@ -73,6 +73,18 @@ std::string mesh_3mf(int id) {
     return s + "</triangles></mesh></object>";
 }
 
+// A zip archive of `entries` (name, text).
+void write_zip(TempTree& t, const std::string& name, const std::vector<std::pair<std::string, std::string>>& entries) {
+    int err = 0;
+    zip_t* z = zip_open(t.path(name).c_str(), ZIP_CREATE | ZIP_TRUNCATE, &err);
+    REQUIRE(z);
+    for (const auto& [entry, text] : entries) {
+        zip_source_t* src = zip_source_buffer(z, text.data(), text.size(), 0);
+        REQUIRE(zip_file_add(z, entry.c_str(), src, ZIP_FL_OVERWRITE) >= 0);
+    }
+    REQUIRE(zip_close(z) == 0);
+}
+
 // A 3MF package (a zip of the model and the two parts that point at it).
 void write_3mf(TempTree& t, const std::string& name, const std::string& resources, const std::string& build,
                const std::string& unit = "") {
@@ -89,15 +101,7 @@ void write_3mf(TempTree& t, const std::string& name, const std::string& resource
         "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<Relationships xmlns=\"http://schemas.openxmlformats.org/package/"
         "2006/relationships\"><Relationship Target=\"/3D/3dmodel.model\" Id=\"rel0\" Type=\"http://schemas.microsoft."
         "com/3dmanufacturing/2013/01/3dmodel\"/></Relationships>";
-    int err = 0;
-    zip_t* z = zip_open(t.path(name).c_str(), ZIP_CREATE | ZIP_TRUNCATE, &err);
-    REQUIRE(z);
-    for (const auto& [entry, text] : {std::pair{"[Content_Types].xml", &types}, {"_rels/.rels", &rels},
-                                      {"3D/3dmodel.model", &model}}) {
-        zip_source_t* src = zip_source_buffer(z, text->data(), text->size(), 0);
-        REQUIRE(zip_file_add(z, entry, src, ZIP_FL_OVERWRITE) >= 0);
-    }
-    REQUIRE(zip_close(z) == 0);
+    write_zip(t, name, {{"[Content_Types].xml", types}, {"_rels/.rels", rels}, {"3D/3dmodel.model", model}});
 }
 
 // The parts an import made (its meshes, in order) and its warnings.
@@ -151,6 +155,15 @@ TEST_CASE("AMF objects are parts to unite; units scale in .sdl and are ignored i
     REQUIRE(r.warnings.size() == 1);
     CHECK(r.warnings[0] ==
           "import: \"inch.amf\": unit=\"inch\" is ignored (read as millimetres), as OpenSCAD 2021.01 ignores it");
+    // Compressed: the entry named like the file, or the only one, as OpenSCAD looks for it.
+    write_zip(t, "zipped.amf", {{"zipped.amf", amf(amf_object(0), "inch")}, {"notes.txt", "not the model"}});
+    CHECK(import_of(t, "zipped.amf").parts.at(0).volume == Approx(-25.4 * 25.4 * 25.4));
+    write_zip(t, "one.amf", {{"model.xml", amf(amf_object(0))}});
+    CHECK(import_of(t, "one.amf").parts.at(0).volume == Approx(-1.0));
+    write_zip(t, "two.amf", {{"a.amf", amf(amf_object(0))}, {"b.amf", amf(amf_object(0))}});
+    CHECK(error_in(t.write("s.sdl", "import(\"two.amf\");\n")) ==
+          "1:1: error: import(\"two.amf\"): a compressed AMF file must hold one file or one named 'two.amf', this "
+          "one holds 2");
     t.write("m.amf", amf(amf_object(0), "meter"));
     CHECK(import_of(t, "m.amf").parts[0].volume == Approx(-1e9));
     // Curved triangles and constellations are read as OpenSCAD reads them, with a warning.
