@@ -13,7 +13,8 @@ packages=(
   libqhull-dev   # hull(), minkowski(): convex hulls (libqhull_r)
   libpolyclipping-dev   # offset(): Clipper's polygon booleans and offsets
   libdxflib-dev   # import() of .dxf drawings
-  libxml2-dev   # import() of .svg drawings: the XML (kerf parses path data itself)
+  libxml2-dev   # import() of .svg drawings and .amf meshes: the XML (kerf parses path data itself)
+  lib3mf-dev libzip-dev   # import() of .3mf meshes (the lib3mf 1.8 OpenSCAD 2021.01 links; it needs -lzip) and zipped .amf
   libcpp-httplib-dev   # kerf view's HTTP server
 )
 if [[ "${1:-}" != "--render" ]]; then

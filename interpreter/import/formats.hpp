@@ -1,12 +1,14 @@
-// The three file formats of import(), each parsed from the file into a mesh
+// The mesh file formats of import(), each parsed from the file into meshes
 // in the file's own (counter-clockwise) face order. mesh_import.cpp
 // validates and reorients the result.
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 
+#include "interpreter/import/mesh_import.hpp"
 #include "interpreter/scene_graph.hpp"
 
 namespace kerf::eval::mesh_format {
@@ -39,6 +41,10 @@ private:
 graph::PolygonMesh read_stl(const MeshFile& file, std::uint64_t max_faces);
 graph::PolygonMesh read_obj(std::string_view bytes, std::uint64_t max_faces);
 graph::PolygonMesh read_ply(const MeshFile& file, std::uint64_t max_faces);
+graph::PolygonMesh read_off(const MeshFile& file, std::uint64_t max_faces);
+ImportedMesh read_amf(const MeshFile& file, const std::string& path, const MeshReading& how);
+// lib3mf reads the file itself (by its path, after MeshFile checked its size).
+ImportedMesh read_3mf(const std::string& path, const MeshReading& how);
 
 // Line number (1-based) of byte offset `at`, for text-format errors.
 std::size_t line_of(std::string_view bytes, std::size_t at);
@@ -58,6 +64,8 @@ public:
     void skip_line();
     bool at_end();
     [[noreturn]] void fail(const std::string& message) const;
+    // A bound passed (--max-list): a MeshLimitError at the last token's line.
+    [[noreturn]] void fail_limit(const std::string& message) const;
     // A token as error messages quote it: "'facet'" or "the end of the file".
     static std::string quoted(std::string_view token);
 
@@ -65,6 +73,22 @@ private:
     std::string_view s_;
     std::size_t pos_;
     std::size_t last_;  // start of the last token, for error lines
+};
+
+// The lines of a text format with '#' comments cut off and blank lines
+// skipped (OBJ, OFF), each read through Tokens so errors name its number.
+class Lines {
+public:
+    explicit Lines(std::string_view text, std::size_t from = 0) : s_(text), pos_(from) {}
+    // The next line that is not blank, or none at the end of the text.
+    std::optional<Tokens> next();
+    // The next line that must be there: at the end, an error naming `what`.
+    Tokens need(const char* what);
+    std::size_t left() const { return pos_ < s_.size() ? s_.size() - pos_ : 0; }
+
+private:
+    std::string_view s_;
+    std::size_t pos_;
 };
 
 // A number token: decimal or scientific, an optional leading '+'. Returns

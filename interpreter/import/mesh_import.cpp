@@ -1,4 +1,4 @@
-// import(): file reading (bounded: the size is checked before reading),
+// import() of meshes: file reading (bounded: the size is checked before reading),
 // dispatch by extension, validation shared by all formats, and the turn into
 // OpenSCAD's clockwise face order.
 #include "interpreter/import/mesh_import.hpp"
@@ -62,6 +62,28 @@ void Tokens::fail(const std::string& message) const {
     throw MeshFormatError("line " + std::to_string(line_of(s_, last_)) + ": " + message);
 }
 
+void Tokens::fail_limit(const std::string& message) const {
+    throw MeshLimitError("line " + std::to_string(line_of(s_, last_)) + ": " + message);
+}
+
+std::optional<Tokens> Lines::next() {
+    while (pos_ < s_.size()) {
+        std::size_t eol = s_.find('\n', pos_);
+        if (eol == std::string_view::npos) eol = s_.size();
+        std::string_view line = s_.substr(pos_, eol - pos_);
+        if (std::size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
+        Tokens t(s_.substr(0, pos_ + line.size()), pos_);
+        pos_ = eol + 1;
+        if (!Tokens(t).at_end()) return t;
+    }
+    return std::nullopt;
+}
+
+Tokens Lines::need(const char* what) {
+    if (std::optional<Tokens> t = next()) return *t;
+    Tokens(s_, s_.size()).fail(std::string("expected ") + what + ", got the end of the file");
+}
+
 bool parse_number(std::string_view tok, double& out) {
     if (!tok.empty() && tok.front() == '+') tok.remove_prefix(1);
     if (tok.empty()) return false;
@@ -72,7 +94,7 @@ bool parse_number(std::string_view tok, double& out) {
 void check_count(std::uint64_t count, std::uint64_t bytes_left, std::size_t min_bytes, const std::string& what,
                  std::uint64_t limit, std::uint64_t slack) {
     if (count > limit)
-        throw MeshFormatError("the file declares " + std::to_string(count) + " " + what + ", more than the limit " +
+        throw MeshLimitError("the file declares " + std::to_string(count) + " " + what + ", more than the limit " +
                               std::to_string(limit) + " (--max-list)");
     if (count > (bytes_left + slack) / min_bytes)
         throw MeshFormatError("the file declares " + std::to_string(count) + " " + what + " but only " +
@@ -104,7 +126,7 @@ MeshFile::MeshFile(const std::string& path) {
     if (!S_ISREG(st.st_mode)) throw MeshFormatError("not a regular file");
     size_ = static_cast<std::uint64_t>(st.st_size);
     if (size_ > kMaxImportBytes)
-        throw MeshFormatError("longer than " + std::to_string(kMaxImportBytes >> 20) + " MiB (" +
+        throw MeshLimitError("longer than " + std::to_string(kMaxImportBytes >> 20) + " MiB (" +
                               std::to_string(size_) + " bytes), too large to import");
     std::swap(fd_, guard.fd);
 }
@@ -156,18 +178,27 @@ void validate(const graph::PolygonMesh& m) {
 
 }  // namespace
 
-graph::PolygonMesh import_mesh(const std::string& path, std::uint64_t max_faces) {
+ImportedMesh import_mesh(const std::string& path, const MeshReading& how) {
     std::string ext = std::filesystem::path(path).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    if (ext != ".stl" && ext != ".obj" && ext != ".ply")
-        throw MeshFormatError("unknown mesh format '" + ext + "' (kerf reads .stl, .obj and .ply)");
+    static const char* const kExtensions[] = {".stl", ".obj", ".ply", ".off", ".amf", ".3mf"};
+    if (std::none_of(std::begin(kExtensions), std::end(kExtensions), [&](const char* e) { return ext == e; }))
+        throw MeshFormatError("unknown mesh format '" + ext + "' (kerf reads .stl, .obj, .ply, .off, .amf and .3mf)");
     const mesh_format::MeshFile file(path);
-    graph::PolygonMesh m = ext == ".stl"   ? mesh_format::read_stl(file, max_faces)
-                    : ext == ".ply" ? mesh_format::read_ply(file, max_faces)
-                                    : mesh_format::read_obj(file.read_all(), max_faces);
-    validate(m);
-    for (auto& f : m.faces) std::reverse(f.begin(), f.end());  // counter-clockwise → OpenSCAD's clockwise
-    return m;
+    ImportedMesh r;
+    if (ext == ".amf") r = mesh_format::read_amf(file, path, how);
+    else if (ext == ".3mf") r = mesh_format::read_3mf(path, how);
+    else
+        r.parts.push_back(ext == ".stl"   ? mesh_format::read_stl(file, how.max_faces)
+                          : ext == ".ply" ? mesh_format::read_ply(file, how.max_faces)
+                          : ext == ".off" ? mesh_format::read_off(file, how.max_faces)
+                                          : mesh_format::read_obj(file.read_all(), how.max_faces));
+    if (r.parts.empty()) throw MeshFormatError("the file holds no faces");
+    for (graph::PolygonMesh& m : r.parts) {
+        validate(m);
+        for (auto& f : m.faces) std::reverse(f.begin(), f.end());  // counter-clockwise → OpenSCAD's clockwise
+    }
+    return r;
 }
 
 }  // namespace kerf::eval

@@ -9,13 +9,9 @@ namespace kerf::eval::mesh_format {
 
 graph::PolygonMesh read_obj(std::string_view bytes, std::uint64_t max_faces) {
     graph::PolygonMesh m;
-    std::size_t line_start = 0;
-    while (line_start < bytes.size()) {
-        std::size_t eol = bytes.find('\n', line_start);
-        if (eol == std::string_view::npos) eol = bytes.size();
-        std::string_view line = bytes.substr(line_start, eol - line_start);
-        if (std::size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
-        Tokens in(bytes.substr(0, line_start + line.size()), line_start);
+    Lines lines(bytes);
+    while (std::optional<Tokens> line = lines.next()) {
+        Tokens& in = *line;
         std::string_view key = in.next();
         if (key == "v") {
             double x = in.number("a vertex coordinate");
@@ -23,7 +19,7 @@ graph::PolygonMesh read_obj(std::string_view bytes, std::uint64_t max_faces) {
             double z = in.number("a vertex coordinate");
             m.points.emplace_back(x, y, z);  // an optional w or colour may follow: not part of the position
         } else if (key == "f") {
-            if (m.faces.size() >= max_faces) in.fail("more than " + std::to_string(max_faces) + " faces (--max-list)");
+            if (m.faces.size() >= max_faces) in.fail_limit("more than " + std::to_string(max_faces) + " faces (--max-list)");
             std::vector<std::uint32_t> face;
             for (std::string_view c = in.next(); !c.empty(); c = in.next()) {
                 double idx = 0;
@@ -40,7 +36,6 @@ graph::PolygonMesh read_obj(std::string_view bytes, std::uint64_t max_faces) {
             if (face.size() < 3) in.fail("a face needs at least 3 corners, got " + std::to_string(face.size()));
             m.faces.push_back(std::move(face));
         }
-        line_start = eol + 1;
     }
     return m;
 }

@@ -67,7 +67,7 @@ graph::PolygonMesh read_ascii(std::string_view bytes, std::uint64_t max_faces) {
         }
         if (t != "facet") in.fail("expected 'facet' or 'endsolid', got " + Tokens::quoted(t));
         if (m.faces.size() >= max_faces)
-            in.fail("more than " + std::to_string(max_faces) + " triangles (--max-list)");
+            in.fail_limit("more than " + std::to_string(max_faces) + " triangles (--max-list)");
         in.expect("normal");
         for (int i = 0; i < 3; ++i) in.number("a normal coordinate");
         in.expect("outer");

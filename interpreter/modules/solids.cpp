@@ -213,27 +213,47 @@ void polyhedron(ModuleCall& c) {
     c.add_primitive(P::Mesh, {}, c.add_mesh(std::move(mesh)));
 }
 
+// A mesh file's parts (one, or an AMF's objects, a 3MF's build items),
+// read once per run: their mesh indices. A broken file is an error at the
+// import in .sdl; in .scad it makes nothing, with the reason as a warning,
+// as OpenSCAD imports nothing from a file it cannot read. Limits stay errors.
+std::vector<std::uint32_t> read_mesh_file(ModuleCall& c, const std::string& path, bool solid) {
+    const std::string name = "\"" + c.args[0].as_string() + "\"";
+    ImportedMesh read;
+    try {
+        read = import_mesh(path, {c.limits().list_elements, c.lenient()});
+    } catch (const MeshLimitError& e) {
+        throw SourceError(c.st.loc, "import(" + name + "): " + e.what());
+    } catch (const MeshFormatError& e) {
+        if (!c.lenient()) throw SourceError(c.st.loc, "import(" + name + "): " + e.what());
+        c.warn(name + ": " + e.what() + ": nothing is made, as OpenSCAD imports nothing from a file it cannot read");
+        return {};
+    }
+    for (const std::string& w : read.warnings) c.warn(name + (w.rfind("line ", 0) == 0 ? " " : ": ") + w);
+    std::vector<std::uint32_t> meshes;
+    for (graph::PolygonMesh& mesh : read.parts) {
+        mesh.solid = solid;
+        orient(c, mesh);
+        meshes.push_back(c.add_mesh(std::move(mesh)));
+    }
+    return meshes;
+}
+
 void import_file(ModuleCall& c) {
     const Args& a = c.args;
-    if (!a.has(0) || !a[0].is_string()) arg_error(a, "file must be a string naming an .stl, .obj, .ply, .dxf or .svg file");
+    if (!a.has(0) || !a[0].is_string())
+        arg_error(a, "file must be a string naming an .stl, .obj, .ply, .off, .amf, .3mf, .dxf or .svg file");
     const bool solid = arg_bool(a, 1, "solid", true);
     const std::string path = c.files().resolve(a[0].as_string(), c.st.loc);
     if (path.size() >= 4 && strcasecmp(path.c_str() + path.size() - 4, ".dxf") == 0) return import_drawing(c, path);
     if (path.size() >= 4 && strcasecmp(path.c_str() + path.size() - 4, ".svg") == 0) return import_svg_drawing(c, path);
     const std::string key = (solid ? "1|" : "0|") + path;
-    auto it = c.state().imported.find(key);
-    if (it == c.state().imported.end()) {
-        graph::PolygonMesh mesh;
-        try {
-            mesh = import_mesh(path, c.limits().list_elements);
-        } catch (const MeshFormatError& e) {
-            throw SourceError(c.st.loc, "import(\"" + a[0].as_string() + "\"): " + e.what());
-        }
-        mesh.solid = solid;
-        orient(c, mesh);
-        it = c.state().imported.emplace(key, c.add_mesh(std::move(mesh))).first;
-    }
-    c.add_primitive(P::Mesh, {}, it->second);
+    auto it = c.state().imported_parts.find(key);
+    if (it == c.state().imported_parts.end()) it = c.state().imported_parts.emplace(key, read_mesh_file(c, path, solid)).first;
+    // Several parts are united, as OpenSCAD unites an AMF's objects.
+    const std::size_t mark = c.graph().mark();
+    for (std::uint32_t mesh : it->second) c.add_primitive(P::Mesh, {}, mesh);
+    c.graph().group(mark, c.st.loc);
 }
 
 const ModuleEntry kSolids[] = {

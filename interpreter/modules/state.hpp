@@ -24,7 +24,8 @@ struct ModuleState {
     std::vector<CurrentMaterial> materials;
     const SourceLoc* camera_loc = nullptr;
     const SourceLoc* background_loc = nullptr;
-    std::unordered_map<std::string, std::uint32_t> imported;  // "solid|path" → mesh index: a loop imports once
+    std::unordered_map<std::string, std::uint32_t> imported;  // surface(): "options|path" → mesh index: a loop reads once
+    std::unordered_map<std::string, std::vector<std::uint32_t>> imported_parts;  // import(): "solid|path" → its parts' meshes
     std::uint64_t primitives = 0;
 };
 

@@ -18,10 +18,12 @@ struct Measured {
     int status = -1;
 };
 
-// `kerf measure` of `scad` (which imports the drawings beside it), with
+// `kerf measure` of `scad` (which imports the drawings beside it) written
+// as the scene file `name` (its extension picks the dialect), with
 // `options` added to the command line.
-inline Measured measure(const std::filesystem::path& dir, const std::string& scad, const std::string& options = "") {
-    const std::string scene = write_file(dir / "scene.scad", scad + "\n");
+inline Measured measure_file(const std::filesystem::path& dir, const std::string& scad, const std::string& name,
+                             const std::string& options = "") {
+    const std::string scene = write_file(dir / name, scad + "\n");
     auto r = run_kerf("measure '" + scene + "' --resolution 256" + options, dir);
     Measured m;
     m.status = r.status, m.out = r.out, m.err = r.err;
@@ -32,6 +34,11 @@ inline Measured measure(const std::filesystem::path& dir, const std::string& sca
         if (pm != std::string::npos) m.error = std::strtod(r.out.c_str() + pm + 2, nullptr);
     }
     return m;
+}
+
+// `kerf measure` of `scad` as a `.scad` file, with `options` added.
+inline Measured measure(const std::filesystem::path& dir, const std::string& scad, const std::string& options = "") {
+    return measure_file(dir, scad, "scene.scad", options);
 }
 
 // The volume of OpenSCAD's ASCII STL export of `scad`, or NaN without openscad.

@@ -1,4 +1,4 @@
-// import() is bounded like a scene file (docs/language.md §13): a mesh file
+// import() is bounded like a scene file (docs/language.md §13): a mesh file (any format)
 // longer than 256 MiB, or whose header declares more than its size holds, is
 // an error located at the import, found before the data is read — exit 1 at
 // once and in little memory, checked here under a 200 MB address-space limit
@@ -59,6 +59,28 @@ TEST_CASE("PLY element counts are checked against the file's size before the bod
     // 10^8 vertices of 12 bytes need 1.2 GB.
     expect_error(importing(dir, "lying.ply"), dir, 2, 3,
                  "import(\"lying.ply\"): the file declares 100000000 vertex elements but only " +
+                     std::to_string((std::uint64_t(200) << 20) - head.size()) + " bytes follow (truncated?)",
+                 "", kTight);
+}
+
+TEST_CASE("OFF, AMF and 3MF files longer than the bound are refused before they are read", "[import][limits]") {
+    const auto dir = test_dir("import_huge_formats");
+    for (const char* name : {"big.off", "big.amf", "big.3mf"}) {
+        INFO(name);
+        sparse_file(dir / name, "", std::uint64_t(2) << 30);
+        expect_error(importing(dir, name), dir, 2, 3,
+                     "import(\"" + std::string(name) + "\"): longer than 256 MiB (2147483648 bytes), too large to import",
+                     "", kTight);
+    }
+}
+
+TEST_CASE("OFF counts are checked against the file's size before the vertices are read", "[import][limits]") {
+    const auto dir = test_dir("import_lying_off");
+    const std::string head = "OFF\n100000000 1 0\n";
+    sparse_file(dir / "lying.off", head, std::uint64_t(200) << 20);
+    // 10^8 vertices need 600 MB of text ("0 0 0\n" each) and 2.4 GB as points.
+    expect_error(importing(dir, "lying.off"), dir, 2, 3,
+                 "import(\"lying.off\"): the file declares 100000000 vertices but only " +
                      std::to_string((std::uint64_t(200) << 20) - head.size()) + " bytes follow (truncated?)",
                  "", kTight);
 }

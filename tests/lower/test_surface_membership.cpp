@@ -10,8 +10,8 @@
 #include <cmath>
 #include <random>
 
-#include "render/tracer/tracer.hpp"
 #include "tests/lower/script_scene.hpp"
+#include "tests/lower/traced_inside.hpp"
 
 namespace {
 
@@ -42,13 +42,7 @@ double height(double x, double y) {
 }
 
 bool traced_inside(const kerf::render::CsgTracer& tr, kerf::render::TraceScratch& scratch, const glm::dvec3& p) {
-    const glm::dvec3 d = glm::normalize(glm::dvec3(0.23, 0.31, 1));
-    kerf::render::TraceRay ray{p - 40.0 * d, d, 0, 80};
-    std::vector<kerf::render::Span> spans;
-    tr.inside_spans(ray, scratch, spans);
-    for (const auto& s : spans)
-        if (s.t0 < 40 && 40 < s.t1) return true;
-    return false;
+    return kerf::test::traced_inside(tr, scratch, p, glm::normalize(glm::dvec3(0.23, 0.31, 1)));
 }
 
 }  // namespace

@@ -9,18 +9,13 @@
 #include <functional>
 
 #include "tests/interpreter/eval_helpers.hpp"
+#include "tests/interpreter/import/mesh_files.hpp"
 #include "tests/interpreter/temp_tree.hpp"
 
 using kerf::test::TempTree;
+using namespace kerf::test::mesh_files;
 
 namespace {
-
-// The unit cube [0,1]^3 as 12 triangles, counter-clockwise seen from
-// outside — the winding every one of the three formats prescribes.
-const std::array<glm::dvec3, 8> kCorners = {{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
-                                             {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}}};
-const std::array<std::array<int, 4>, 6> kQuads = {{{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
-                                                   {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}}};
 
 std::vector<std::array<int, 3>> triangles() {
     std::vector<std::array<int, 3>> t;
@@ -124,49 +119,6 @@ std::string ply_binary(bool big) {
     return s;
 }
 
-kerf::EvalResult eval_file(const std::string& path, kerf::EvalOptions opt = {}) {
-    opt.echo = [](const std::string&) {};
-    return kerf::evaluate_file(path, opt);
-}
-
-// "LINE:COL: error: MESSAGE" of the first error (the temp path left out).
-std::string error_in(const std::string& path, kerf::EvalOptions opt = {}) {
-    try {
-        eval_file(path, std::move(opt));
-    } catch (const kerf::SourceError& e) {
-        std::string head = kerf::format_diagnostic_head(e.diagnostic());
-        REQUIRE(head.rfind(path + ":", 0) == 0);
-        return head.substr(path.size() + 1);
-    }
-    return "no error";
-}
-
-// The message of the error importing `bytes` as `name` (the location left out).
-std::string err_of(TempTree& t, const std::string& name, const std::string& bytes) {
-    t.write(name, bytes);
-    const std::string e = error_in(t.write("s.sdl", "import(\"" + name + "\");\n"));
-    return e.rfind("1:1: error: ", 0) == 0 ? e.substr(12) : e;
-}
-
-// Signed volume (positive for counter-clockwise-outward faces), area and
-// bounds of a polygon mesh, by fanning each face.
-struct Measures {
-    double volume = 0, area = 0;
-    glm::dvec3 lo{1e300}, hi{-1e300};
-};
-
-Measures measure(const kerf::graph::PolygonMesh& m) {
-    Measures r;
-    for (const auto& f : m.faces)
-        for (std::size_t i = 1; i + 1 < f.size(); ++i) {
-            const glm::dvec3 a = m.points.at(f[0]), b = m.points.at(f[i]), c = m.points.at(f[i + 1]);
-            r.volume += glm::dot(a, glm::cross(b, c)) / 6;
-            r.area += glm::length(glm::cross(b - a, c - a)) / 2;
-        }
-    for (const auto& p : m.points) r.lo = glm::min(r.lo, p), r.hi = glm::max(r.hi, p);
-    return r;
-}
-
 }  // namespace
 
 TEST_CASE("every mesh encoding imports as the same closed cube in OpenSCAD's face order", "[import]") {
@@ -236,7 +188,7 @@ TEST_CASE("broken mesh files are errors located at the import and inside the fil
     CHECK(err("noformat.ply", "ply\nelement vertex 0\nend_header\n") ==
           "2:3: error: import(\"noformat.ply\"): the PLY header has no 'format' line");
     CHECK(err("m.xyz", "whatever") ==
-          "2:3: error: import(\"m.xyz\"): unknown mesh format '.xyz' (kerf reads .stl, .obj and .ply)");
+          "2:3: error: import(\"m.xyz\"): unknown mesh format '.xyz' (kerf reads .stl, .obj, .ply, .off, .amf and .3mf)");
     CHECK(error_in(t.write("s.sdl", "import(\"missing.stl\");\n")) == "1:1: error: cannot find 'missing.stl'");
     CHECK(error_in(t.write("s.sdl", "import(3);\n")).find("file must be a string") != std::string::npos);
 }
