@@ -47,7 +47,7 @@ TEST_CASE("render of an empty model writes its background and warns") {
     CHECK(r.err.empty());
 }
 
-TEST_CASE("--werror makes an empty model's render fail, writing nothing") {
+TEST_CASE("an empty model's render fails under --werror, writing nothing") {
     auto dir = test_dir("empty_scene_werror");
     const std::string sdl = write_file(dir / "nothing.sdl", "x = 1;\n");
     const fs::path png = dir / "nothing.png";
