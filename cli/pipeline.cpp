@@ -30,7 +30,25 @@ csg::Scene evaluate_and_lower(const Options& o, const EvalOptions& eval, Progres
     if (!evaluated.warnings.empty()) bar.print_above([&] { print_warnings(evaluated.warnings); });
     if (warnings) *warnings = evaluated.warnings;
     bar.phase("lower");
-    return lower_to_csg(evaluated.graph);
+    csg::Scene scene = lower_to_csg(evaluated.graph);
+    const bool renders = o.command == Command::Render || o.command == Command::Watch || o.command == Command::View;
+    if (scene.root == csg::kNone && renders) {
+        // Nothing to draw: the image is the background. OpenSCAD 2021.01
+        // writes that PNG silently and refuses an STL ("Current top level
+        // object is empty."); kerf renders it and says so (docs/openscad.md,
+        // "An empty model"). Located at the main file, as no statement made it.
+        SourceLoc main;
+        if (!evaluated.graph.nodes.empty()) main.file = evaluated.graph.nodes[evaluated.graph.root].loc.file;
+        Diagnostic empty{Severity::Warning, main, "the scene has no solid: the image is only its background", 1, {}};
+        if (eval.werror) {
+            empty.severity = Severity::Error;
+            empty.message += " [--werror]";
+            throw SourceError(empty);
+        }
+        bar.print_above([&] { print_warnings({empty}); });
+        if (warnings) warnings->push_back(std::move(empty));
+    }
+    return scene;
 }
 
 render::Image render_and_write(const csg::Scene& scene, const render::RenderOptions& ro, const std::string& path,

@@ -46,14 +46,28 @@ void Evaluator::flatten(const std::vector<ast::StmtPtr>& stmts, std::vector<cons
             out.push_back(&st);
             continue;
         }
-        const std::string path = files_.resolve(st.name, st.loc);
+        const std::string path = find_library(st);
+        if (path.empty()) continue;
         ChainGuard on_chain(files_.includes, path, st.loc);
         flatten(files_.load(path, st.loc).stmts, out);
     }
 }
 
+// A file named by include or use that is nowhere: an error, or in the
+// OpenSCAD dialect OpenSCAD 2021's warning, and the run goes on without it
+// (its modules and functions then warn as unknown where they are called).
+std::string Evaluator::find_library(const ast::Stmt& st) {
+    if (!lenient_) return files_.resolve(st.name, st.loc);
+    std::string path = files_.find(st.name, st.loc);
+    if (path.empty())
+        warn(st.loc, st.kind == ast::StmtKind::Include ? "Can't open include file '" + st.name + "'."
+                                                       : "Can't open library '" + st.name + "'.");
+    return path;
+}
+
 Scope* Evaluator::load_use(const ast::Stmt& st) {
-    const std::string path = files_.resolve(st.name, st.loc);
+    const std::string path = find_library(st);
+    if (path.empty()) return nullptr;
     const std::string key = Loader::identity(path);
     auto it = use_scopes_.find(key);
     if (it != use_scopes_.end()) return it->second.get();
@@ -99,7 +113,9 @@ const BlockInfo& Evaluator::prepare(const std::vector<ast::StmtPtr>& stmts) {
                 // OpenSCAD: a later definition replaces an earlier one, silently.
                 case ast::StmtKind::FunctionDef: functions.add(info.functions, *st, "function ", lenient_); break;
                 case ast::StmtKind::ModuleDef: modules.add(info.modules, *st, "module ", lenient_); break;
-                case ast::StmtKind::Use: info.used.push_back(load_use(*st)); break;
+                case ast::StmtKind::Use:
+                    if (Scope* used = load_use(*st)) info.used.push_back(used);
+                    break;
                 case ast::StmtKind::Empty:
                 case ast::StmtKind::Include: break;
                 default: info.children.push_back(st);

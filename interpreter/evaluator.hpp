@@ -155,6 +155,7 @@ private:
     const BlockInfo& prepare(const std::vector<ast::StmtPtr>& stmts);
     void warn_overwritten(const ast::Stmt& earlier, const ast::Stmt& later);
     void flatten(const std::vector<ast::StmtPtr>& stmts, std::vector<const ast::Stmt*>& out);
+    std::string find_library(const ast::Stmt& st);
     void bind_block(const BlockInfo& info, Scope& scope, bool top_level);
     void eval_block(const std::vector<ast::StmtPtr>& stmts, Scope& s, bool top_level = false);
     void eval_stmt(const ast::Stmt& st, Scope& s, bool top_level);

@@ -18,6 +18,12 @@ std::string Loader::identity(const std::string& path) {
 }
 
 std::string Loader::resolve(const std::string& name_text, const SourceLoc& loc) const {
+    std::string path = find(name_text, loc);
+    if (path.empty()) throw SourceError(loc, "cannot find '" + name_text + "'");
+    return path;
+}
+
+std::string Loader::find(const std::string& name_text, const SourceLoc& loc) const {
     fs::path name(name_text);
     std::vector<fs::path> dirs;
     if (name.is_absolute()) {
@@ -50,7 +56,7 @@ std::string Loader::resolve(const std::string& name_text, const SourceLoc& loc) 
         if (opt_.on_dependency) opt_.on_dependency(p.lexically_normal().string());
         if (fs::is_regular_file(p, ec)) return p.lexically_normal().string();
     }
-    throw SourceError(loc, "cannot find '" + name_text + "'");
+    return {};
 }
 
 const ast::Program& Loader::load(const std::string& path, const SourceLoc& loc) {

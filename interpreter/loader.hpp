@@ -20,6 +20,9 @@ public:
 
     // The path of `name` as written at `loc`; "cannot find 'name'" otherwise.
     std::string resolve(const std::string& name, const SourceLoc& loc) const;
+    // The same search; "" when no place holds `name` (an include or use the
+    // OpenSCAD dialect skips with a warning).
+    std::string find(const std::string& name, const SourceLoc& loc) const;
     // The parsed file at `path` (resolved), parsed on first use.
     const ast::Program& load(const std::string& path, const SourceLoc& loc);
     // One key per file, whatever the spelling (./a.sdl, d/../a.sdl, a symlink).

@@ -1,6 +1,7 @@
 // hull(), minkowski() and resize() of 2D shapes done in the plane, for the
 // operations that rebuild a 2D subtree with its transforms applied to the
-// leaves (linear_extrude with a twist or an uneven scale, sweep.hpp): there
+// leaves (linear_extrude with a twist or an uneven scale, sweep.hpp;
+// rotate_extrude) and for the region of a 2D subtree (region2d.hpp): there
 // the lowering of these nodes (lower/geometry_ops.hpp), which works on the
 // unit slabs, never sees them. The rules are lowering's (docs/lowering.md,
 // "Hull, Minkowski, resize"), so a twisted result is the untwisted one

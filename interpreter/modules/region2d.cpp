@@ -2,8 +2,10 @@
 
 #include <cmath>
 #include <limits>
+#include <unordered_map>
 
 #include "grammar/source.hpp"
+#include "interpreter/modules/flat_hull_ops.hpp"
 #include "interpreter/modules/plane_map.hpp"
 
 namespace kerf::eval {
@@ -59,7 +61,16 @@ public:
         const graph::Node& n = g_.nodes[id];
         if (n.kind == graph::NodeKind::Primitive) {
             for (const auto& path : outline(g_, n, a, tol_))
-                for (glm::dvec2 p : path) extent = std::max({extent, std::abs(p.x), std::abs(p.y)});
+                for (glm::dvec2 p : path) extend(p);
+            return;
+        }
+        if (convex_op(n)) {
+            for (const ConvexPolygon& part : convex_parts(id))
+                for (glm::dvec2 p : part) extend(apply(a, p));
+            return;
+        }
+        if (n.kind == graph::NodeKind::Resize) {
+            if (n.child_count > 0) measure(g_.child_refs[n.first_child], a * flat_resize_map(g_, id));
             return;
         }
         for (std::uint32_t k = 0; k < n.child_count; ++k) measure(g_.child_refs[n.first_child + k], inner(n, a));
@@ -76,6 +87,19 @@ public:
             // Normalised: a polygon's paths by the even-odd rule, a mirror's reversed orientation undone.
             return execute(ctUnion, leaf, {}, n.prim == P::Prism ? pftEvenOdd : pftNonZero);
         }
+        // A hull or a sum is no boolean of its children: its convex parts
+        // in the plane, by lowering's rules (flat_hull_ops.hpp); a resize
+        // is the scale it applies to its first child.
+        if (convex_op(n)) {
+            Paths parts;
+            for (const ConvexPolygon& part : convex_parts(id)) {
+                parts.emplace_back();
+                for (glm::dvec2 p : part) parts.back().push_back(frame.grid(apply(a, p)));
+            }
+            return execute(ctUnion, parts, {}, pftNonZero);
+        }
+        if (n.kind == graph::NodeKind::Resize)
+            return n.child_count > 0 ? region(g_.child_refs[n.first_child], a * flat_resize_map(g_, id)) : Paths{};
         std::vector<Paths> parts;
         for (std::uint32_t k = 0; k < n.child_count; ++k) parts.push_back(region(g_.child_refs[n.first_child + k], inner(n, a)));
         if (parts.empty()) return {};
@@ -98,6 +122,19 @@ public:
 private:
     const graph::SceneGraph& g_;
     double tol_;
+    std::unordered_map<std::uint32_t, std::vector<ConvexPolygon>> convex_;  // built once for both passes
+
+    void extend(glm::dvec2 p) { extent = std::max({extent, std::abs(p.x), std::abs(p.y)}); }
+
+    static bool convex_op(const graph::Node& n) {
+        return n.kind == graph::NodeKind::Hull || (n.kind == graph::NodeKind::Minkowski && n.child_count > 1);
+    }
+
+    const std::vector<ConvexPolygon>& convex_parts(std::uint32_t id) {
+        auto it = convex_.find(id);
+        if (it == convex_.end()) it = convex_.emplace(id, flat_convex_parts(g_, id)).first;
+        return it->second;
+    }
 
     Map2 inner(const graph::Node& n, const Map2& a) const {
         return n.kind == graph::NodeKind::Transform ? a * plane_part(g_.matrices[n.index]) : a;

@@ -1,8 +1,10 @@
 // A 2D subtree of the scene graph evaluated to one polygon region with
 // Clipper (docs/lowering.md, "Offsets"): every transform applied, the
 // booleans done in the plane, a polygon's paths filled by the even-odd
-// rule, a circle flattened to chords within the curve tolerance. For the
-// 2D operations whose result is not a boolean of the leaves (offset).
+// rule, a circle flattened to chords within the curve tolerance, a hull,
+// a Minkowski sum or a resize done in the plane (flat_hull_ops.hpp). For
+// the 2D operations whose result is not a boolean of the leaves (offset),
+// and for rotate_extrude's check of the result's x range.
 //
 // Clipper works on 64-bit integers: the region is held on a grid of
 // 2^-50 times the extent of the subtree (a power of two, so the scale is

@@ -6,16 +6,24 @@
 // applied to its leaves: a polygon or square becomes a Lathe leaf over its
 // mapped edges, a circle a Torus (an ellipse with axes along x and y a
 // torus scaled in z) and the booleans stay booleans (docs/lowering.md,
-// "Revolutions"). A partial angle intersects the result with the wedge of
-// two half-spaces through the Z axis.
+// "Revolutions"). Only the half-plane x >= 0 of each leaf is revolved
+// (revolve(A) = revolve(A ∩ {x >= 0}) by that definition), so a piece that
+// crosses the axis before a boolean removes that part revolves as OpenSCAD
+// revolves the result, which is what OpenSCAD checks for the x sign. A
+// hull, a Minkowski sum or a resize is done in the plane first, as for a
+// twisted linear_extrude. A partial angle intersects the result with the
+// wedge of two half-spaces through the Z axis.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <numbers>
 
 #include "interpreter/degrees.hpp"
 #include "interpreter/modules/args.hpp"
 #include "interpreter/modules/module_call.hpp"
 #include "interpreter/modules/plane_rebuild.hpp"
+#include "interpreter/modules/region2d.hpp"
 #include "interpreter/modules/revolve_facets.hpp"
 
 namespace kerf::eval {
@@ -24,30 +32,38 @@ namespace {
 
 using P = csg::PrimKind;
 
+// The even-odd edge set `edges` cut to its part at x >= 0: every edge
+// clipped (kept in its direction), and the points where edges cross the
+// axis joined in pairs, in order of height, by segments on x = 0. Each
+// closed loop crosses the axis an even number of times, so the set stays
+// closed; its region at x > 0, all a revolution sees, is the original's.
+std::vector<glm::dvec4> clip_to_half_plane(std::vector<glm::dvec4> edges) {
+    if (std::none_of(edges.begin(), edges.end(), [](const glm::dvec4& e) { return e.x < 0 || e.z < 0; })) return edges;
+    std::vector<glm::dvec4> out;
+    std::vector<double> axis;  // heights where an edge crosses x = 0
+    for (const glm::dvec4& e : edges) {
+        const bool in0 = e.x >= 0, in1 = e.z >= 0;
+        if (in0 && in1) out.push_back(e);
+        if (in0 == in1) continue;
+        // From the end inside, exact when it lies on the axis.
+        const glm::dvec2 in = in0 ? glm::dvec2(e.x, e.y) : glm::dvec2(e.z, e.w);
+        const glm::dvec2 away = in0 ? glm::dvec2(e.z, e.w) : glm::dvec2(e.x, e.y);
+        const double y = in.x == 0 ? in.y : in.y + (away.y - in.y) * (in.x / (in.x - away.x));
+        axis.push_back(y);
+        if (in.x == 0) continue;
+        out.push_back(in0 ? glm::dvec4(in.x, in.y, 0, y) : glm::dvec4(0, y, in.x, in.y));
+    }
+    std::sort(axis.begin(), axis.end());
+    for (std::size_t i = 0; i + 1 < axis.size(); i += 2)
+        if (axis[i] != axis[i + 1]) out.emplace_back(0, axis[i], 0, axis[i + 1]);
+    return out;
+}
+
 class Revolver {
 public:
     Revolver(ModuleCall& c, double tolerance) : c_(c), g_(c.graph()), tol_(tolerance) {}
 
-    // The x range every leaf's points span, for the sign check.
-    double xmin = std::numeric_limits<double>::infinity(), xmax = -xmin;
-
-    // First pass: each leaf's 2D points mapped, to learn the x range (the
-    // sign decides the mirror before anything is built).
-    void measure(std::uint32_t id, const Map2& a) {
-        const graph::Node& n = g_.graph.nodes[id];
-        if (n.kind == graph::NodeKind::Primitive) {
-            for (const glm::dvec2 p : outline(n, a)) extend(p.x);
-            return;
-        }
-        // Lowering builds these from their children's points and boxes,
-        // which a revolution does not carry over (a revolved hull is no hull).
-        if (n.kind == graph::NodeKind::Hull || n.kind == graph::NodeKind::Minkowski || n.kind == graph::NodeKind::Resize)
-            throw SourceError(n.loc, "rotate_extrude: hull(), minkowski() and resize() of 2D shapes cannot be revolved yet");
-        const Map2 inner = n.kind == graph::NodeKind::Transform ? a * plane_part(g_.graph.matrices[n.index]) : a;
-        for (std::uint32_t k = 0; k < n.child_count; ++k) measure(g_.graph.child_refs[n.first_child + k], inner);
-    }
-
-    // Second pass: the revolved copy of node `id` pushed on the builder's pending stack.
+    // The revolved copy of node `id` pushed on the builder's pending stack.
     void build(std::uint32_t id) {
         rebuild_subtree(g_, id, Map2(1.0), [this](const graph::Node& n, const Map2& a) { leaf(n, a); });
     }
@@ -59,33 +75,16 @@ private:
     GraphBuilder& g_;
     double tol_;
 
-    void extend(double x) { xmin = std::min(xmin, x), xmax = std::max(xmax, x); }
-
-    // A leaf's mapped boundary points: the polygon's vertices, or for a
-    // circle the extreme points of its image along x.
-    std::vector<glm::dvec2> outline(const graph::Node& n, const Map2& a) const {
-        std::vector<glm::dvec2> out;
-        if (n.prim == P::Box) {
-            for (glm::dvec2 p : {glm::dvec2(n.p[0], n.p[1]), glm::dvec2(n.p[3], n.p[1]), glm::dvec2(n.p[3], n.p[4]),
-                                 glm::dvec2(n.p[0], n.p[4])})
-                out.push_back(apply(a, p));
-        } else if (n.prim == P::Prism) {
-            for (const glm::dvec4& e : g_.graph.polygons[n.index].edges) out.push_back(apply(a, {e.x, e.y}));
-        } else if (n.prim == P::Cylinder) {
-            const glm::dvec2 c = apply(a, {0, 0});
-            const double ex = n.p[2] * std::hypot(a[0][0], a[1][0]);  // half the image's width
-            out = {{c.x - ex, c.y}, {c.x + ex, c.y}};
-        } else {
-            throw SourceError(n.loc, "rotate_extrude: this shape cannot be revolved");
-        }
-        return out;
-    }
+    // An operand that is empty (a piece wholly at x < 0): kept in place, as
+    // it may be the minuend or a factor of an intersection.
+    void push_empty(const graph::Node& n) { g_.make_node(g_.mark(), graph::NodeKind::Union, n.loc); }
 
     void push_polygon(const graph::Node& n, std::vector<glm::dvec4> edges) {
-        for (glm::dvec4& e : edges) {
-            if (mirrored) e.x = -e.x, e.z = -e.z;
-            e.x = std::max(e.x, 0.0), e.z = std::max(e.z, 0.0);  // -0 and a circle's rounded rim
-        }
+        if (mirrored)
+            for (glm::dvec4& e : edges) e.x = -e.x, e.z = -e.z;
+        edges = clip_to_half_plane(std::move(edges));
+        if (edges.empty()) return push_empty(n);
+        for (glm::dvec4& e : edges) e.x = std::max(e.x, 0.0), e.z = std::max(e.z, 0.0);  // -0
         g_.graph.polygons.push_back(bounded_polygon(std::move(edges)));
         graph::Node leaf;
         leaf.kind = graph::NodeKind::Primitive;
@@ -107,7 +106,8 @@ private:
         const glm::dvec2 row0(a[0][0], a[1][0]), row1(a[0][1], a[1][1]);
         const glm::dvec2 c = apply(a, {0, 0});
         const double ex = r * glm::length(row0), ez = r * glm::length(row1);
-        const double cx = std::abs(c.x);
+        const double cx = mirrored ? -c.x : c.x;
+        if (cx <= -ex) return push_empty(n);  // wholly at x <= 0
         if (glm::dot(row0, row1) == 0 && cx > ex) {
             graph::Node torus;
             torus.kind = graph::NodeKind::Primitive;
@@ -144,17 +144,30 @@ void rotate_extrude(ModuleCall& c) {
     c.children();
     const std::vector<std::uint32_t> shapes = c.flat_children(mark, "revolves");
     if (shapes.empty() || angle == 0) return;  // angle 0: the empty solid, as in OpenSCAD
-    Revolver rev(c, c.curve_tolerance());
-    for (std::uint32_t id : shapes) rev.measure(id, Map2(1.0));
-    if (rev.xmin < 0 && rev.xmax > 0) {
+    // OpenSCAD checks the sign of x on the 2D result, after the booleans
+    // (a piece may cross the axis where a difference removes it): so does
+    // kerf, on the same region flattened within the curve tolerance.
+    const Region2 region = flatten_region(g.graph, shapes, 0, c.curve_tolerance(), c.st.loc);
+    if (region.paths.empty()) return;  // no area: the empty solid
+    double xmin = std::numeric_limits<double>::infinity(), xmax = -xmin;
+    for (const ClipperLib::Path& path : region.paths)
+        for (const ClipperLib::IntPoint& p : path) {
+            const double x = region.point(p).x;
+            xmin = std::min(xmin, x), xmax = std::max(xmax, x);
+        }
+    if (xmin < 0 && xmax > 0) {
         char range[96];
-        std::snprintf(range, sizeof range, "%.2f -> %.2f", rev.xmin, rev.xmax);
-        // An error in both dialects (not the .scad warning of arg_error):
-        // OpenSCAD reports it as an ERROR and exits 1 too.
-        throw SourceError(c.st.loc, std::string("rotate_extrude: all points must have the same x coordinate sign (range is ") +
-                                        range + ")");
+        std::snprintf(range, sizeof range, "%.2f -> %.2f", xmin, xmax);
+        const std::string msg =
+            std::string("all points for rotate_extrude() must have the same X coordinate sign (range is ") + range + ")";
+        // OpenSCAD 2021.01 prints it as an ERROR, makes nothing of this
+        // rotate_extrude and goes on (exit 0 when something else remains).
+        if (!c.lenient()) throw SourceError(c.st.loc, "rotate_extrude: " + msg);
+        c.warn(msg + " (nothing is made)");
+        return;
     }
-    rev.mirrored = rev.xmax <= 0 && rev.xmin < 0;
+    Revolver rev(c, c.curve_tolerance());
+    rev.mirrored = xmax <= 0 && xmin < 0;
     if (c.facet_mode() != FacetMode::OpenScad) c.exact_curve();  // revolved exactly, not in $fn steps
     else if (faceted_revolve(c, shapes, angle, rev.mirrored)) return;
     for (std::uint32_t id : shapes) rev.build(id);

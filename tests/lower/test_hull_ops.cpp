@@ -226,7 +226,6 @@ TEST_CASE("hull(), minkowski() and resize() of 2D shapes work on their unit slab
               1e-3);
     const auto b = lowered("linear_extrude(height = 5) resize([4, 0], auto = true) square([1, 2]);").bounds();
     CHECK(b.hi == glm::dvec3(4, 8, 5));
-    CHECK(first_message("rotate_extrude() translate([2, 0]) hull() { square(1); }") ==
-          "test.sdl:1:36: error: rotate_extrude: hull(), minkowski() and resize() of 2D shapes cannot be revolved yet");
-    // Twisted, unevenly scaled, or a tapered sum or resize: tests/lower/test_swept_hull_ops.cpp.
+    // Twisted, unevenly scaled, or a tapered sum or resize: tests/lower/test_swept_hull_ops.cpp;
+    // revolved: tests/lower/test_revolve_regions.cpp.
 }

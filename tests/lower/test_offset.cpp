@@ -91,6 +91,18 @@ TEST_CASE("offset of a square against its closed forms and OpenSCAD", "[offset]"
     check_area("offset(r = 1e5) square(2e6);", 4e12 + 8e11 + kPi * 1e10);
 }
 
+TEST_CASE("offset of a hull, a Minkowski sum or a resize grows that result, not its children", "[offset]") {
+    // The hull of the squares [0, 1]² and [5, 6] × [0, 1] is the 6 × 1
+    // rectangle, grown by 0.5: 7 × 2 (it was taken as the two squares, 8,
+    // before region2d did hulls). OpenSCAD 2021.01, `openscad -o x.stl` of
+    // `linear_extrude(1)` of it: 14.0000.
+    check_area("offset(delta = 0.5) hull() { square(1); translate([5, 0]) square(1); }", 14);
+    // [0, 2] × [0, 1] grown by a disc of 0.5, then rounded by 0.5 more:
+    // 2 + 6·1 + π (OpenSCAD at $fn = 720: 11.1414).
+    check_area("offset(r = 0.5) minkowski() { square([2, 1]); circle(0.5); }", 2 + 6 + kPi);
+    check_area("offset(delta = 1) resize([4, 2]) square(1);", 6 * 4);
+}
+
 TEST_CASE("offset of concave shapes and holes", "[offset]") {
     // An L of area 3 (the 2 × 2 square less a unit corner): five convex
     // corners add a quarter disc each, the reflex corner's strips overlap in

@@ -150,7 +150,8 @@ TEST_CASE("a tilted ellipse or a circle touching the axis is revolved as a polyg
 TEST_CASE("rotate_extrude's bad input and OpenSCAD's rules", "[revolve]") {
     // OpenSCAD: "all points for rotate_extrude() must have the same X coordinate sign (range is -1.00 -> 2.00)".
     REQUIRE_THROWS_WITH(test::lowered("rotate_extrude() translate([-1, 0]) square([3, 2]);"),
-                        Catch::Contains("same x coordinate sign (range is -1.00 -> 2.00)"));
+                        Catch::Equals("test.sdl:1:1: error: rotate_extrude: all points for rotate_extrude() must have "
+                                      "the same X coordinate sign (range is -1.00 -> 2.00)"));
     REQUIRE_THROWS_WITH(test::lowered("rotate_extrude() cube(1);"), Catch::Contains("not 3D solids"));
     REQUIRE_THROWS_WITH(test::lowered("rotate_extrude(90) square(1);"), Catch::Contains("deprecated file"));
     // .scad: a 3D child is ignored with a warning, as OpenSCAD does.
@@ -160,10 +161,18 @@ TEST_CASE("rotate_extrude's bad input and OpenSCAD's rules", "[revolve]") {
     CHECK(s.leaves.size() == 1);
     CHECK(s.leaves[0].kind == csg::PrimKind::Lathe);
     CHECK(s.bounds().hi.z == 1);
-    // .scad too: the sign error is an error (OpenSCAD: ERROR, exit 1); the
+    // .scad: the sign error makes nothing of this rotate_extrude and the run
+    // goes on, as OpenSCAD 2021.01 does (it prints an ERROR, exports the
+    // cube and exits 0: `openscad -o x.stl` of these two lines); the
     // deprecated positional file argument a warning, the children revolved.
-    REQUIRE_THROWS_WITH(eval_scad("rotate_extrude() translate([-1, 0]) square([3, 2]);"),
-                        Catch::Contains("same x coordinate sign"));
+    const EvalResult sign = eval_scad("rotate_extrude() translate([-1, 0]) square([3, 2]);\ncube(1);");
+    REQUIRE(sign.warnings.size() == 1);
+    CHECK(format_diagnostic_head(sign.warnings[0]) ==
+          "test.scad:1:1: warning: rotate_extrude: all points for rotate_extrude() must have the same X coordinate "
+          "sign (range is -1.00 -> 2.00) (nothing is made)");
+    const csg::Scene cube = lower_to_csg(sign.graph);
+    REQUIRE(cube.leaves.size() == 1);
+    CHECK(cube.leaves[0].kind == csg::PrimKind::Box);
     const EvalResult dxf = eval_scad("rotate_extrude(90) translate([2, 0]) square(1);");
     CHECK(dxf.warnings.size() == 1);
     CHECK(lower_to_csg(dxf.graph).leaves[0].kind == csg::PrimKind::Lathe);
