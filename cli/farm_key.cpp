@@ -88,6 +88,7 @@ std::string render_key(const csg::Scene& scene, const render::RenderOptions& ro)
     if (ro.aov != render::Aov::None) options += ",aov:" + std::to_string(int(ro.aov));
     options += ro.double_precision ? ",double" : ",float";
     options += ",reflect:" + std::to_string(ro.max_reflect_depth);
+    if (ro.integrator == render::Integrator::Path) options += ",path:" + std::to_string(ro.max_path_depth);
     if (ro.crop) {
         const auto& k = *ro.crop;
         options += ",crop:" + std::to_string(k[0]) + ":" + std::to_string(k[1]) + ":" + std::to_string(k[2]) + ":" +
