@@ -235,6 +235,7 @@ Options parse_options(const std::vector<std::string>& args) {
             throw UsageError(std::string(o.render.preview ? "--preview" : "--aov") +
                              " traces one Whitted ray through each pixel centre; drop --integrator path");
         o.render.adaptive = false;
+        o.eval.path_integrator = true;
         if (spp_flag.empty()) o.render.spp = 64;
         if (max_depth >= 0) o.render.max_path_depth = max_depth;
     } else if (max_depth >= 0) {

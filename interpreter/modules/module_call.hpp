@@ -33,6 +33,7 @@ public:
     Loader& files();
     const EvalLimits& limits() const;
     double curve_tolerance() const;  // EvalOptions::curve_tolerance
+    bool path_integrator() const;    // EvalOptions::path_integrator
     // A primitive node at the statement, counted against the limit.
     void add_primitive(csg::PrimKind kind, std::initializer_list<double> p, std::uint32_t index = 0);
     // A warning at the statement (Evaluator::warn).

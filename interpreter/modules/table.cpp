@@ -130,6 +130,7 @@ ModuleState& ModuleCall::state() { return ev_.modules_; }
 Loader& ModuleCall::files() { return ev_.files_; }
 const EvalLimits& ModuleCall::limits() const { return ev_.opt_.limits; }
 double ModuleCall::curve_tolerance() const { return ev_.opt_.curve_tolerance; }
+bool ModuleCall::path_integrator() const { return ev_.opt_.path_integrator; }
 
 void ModuleCall::add_primitive(csg::PrimKind kind, std::initializer_list<double> p, std::uint32_t index) {
     const std::uint64_t limit = ev_.opt_.limits.primitives;

@@ -74,3 +74,15 @@ TEST_CASE("--integrator path renders 64 paths per pixel unless --spp; whitted is
     CHECK(path.find("(" + std::to_string(16 * 12 * 64) + " primary") != std::string::npos);
     CHECK(four.find("(" + std::to_string(16 * 12 * 4) + " primary") != std::string::npos);
 }
+
+TEST_CASE("--integrator path warns that it ignores ambient_occlusion") {
+    auto dir = test_dir("integrator_ao");
+    write_file(dir / "s.sdl", "ambient_occlusion(8);\nsphere(1);\n");
+    const std::string s = "render '" + (dir / "s.sdl").string() + "' -o '" + (dir / "s.ppm").string() + "' -W 8 -H 6";
+    const auto path = run_kerf(s + " --integrator path --spp 1", dir);
+    const auto whitted = run_kerf(s, dir);
+    CHECK(path.status == 0);
+    CHECK(path.err.find("s.sdl:1:1: warning: ambient_occlusion: does not apply to --integrator path") != std::string::npos);
+    CHECK(whitted.status == 0);
+    CHECK(whitted.err.find("warning") == std::string::npos);
+}
