@@ -59,7 +59,7 @@ const csg::Material& PathTracer::material_of(std::uint32_t leaf) const {
     return i < scene_.materials.size() ? scene_.materials[i] : fallback;
 }
 
-int PathTracer::light_hit(const glm::dvec3& origin, const glm::dvec3& d, double tmax) const {
+int PathTracer::light_hit(const glm::dvec3& origin, const glm::dvec3& d, double& tmax) const {
     int best = -1;
     for (std::size_t i = 0; i < lights_.size(); ++i) {
         const csg::Light& light = lights_[i];
@@ -180,7 +180,8 @@ glm::dvec3 PathTracer::radiance(const glm::dvec3& o, const glm::dvec3& d_in, Thr
         // lights, as in the Whitted tracer): its radiance as seen from the
         // point the ray left, weighted against next-event estimation there.
         if (depth > 0 && any_sphere_) {
-            if (const int li = light_hit(ro, rd, hit_solid ? hit.t : kInf); li >= 0) {
+            double t_light = hit_solid ? hit.t : kInf;
+            if (const int li = light_hit(ro, rd, t_light); li >= 0) {
                 const csg::Light& light = lights_[std::size_t(li)];
                 const glm::dvec3 to = light.position - ro;
                 const double dist = glm::length(to);
@@ -188,6 +189,7 @@ glm::dvec3 PathTracer::radiance(const glm::dvec3& o, const glm::dvec3& d_in, Thr
                 double weight = 1;
                 if (bsdf_pdf > 0 && lighting_ == PathLighting::LightOnly) weight = 0;
                 if (bsdf_pdf > 0 && lighting_ == PathLighting::Mis) weight = power_weight(bsdf_pdf, 1 / view.solid_angle);
+                add_fog(t_light);
                 L += beta * light.color * (view.radiance * weight);
                 break;
             }

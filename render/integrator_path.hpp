@@ -39,8 +39,8 @@ private:
     glm::dvec3 next_event(const glm::dvec3& origin, const glm::dvec3& n, const glm::dvec3& rho, std::uint64_t& rng,
                           ThreadState& ts) const;
     // The nearest spherical light the ray (origin, unit d) meets before
-    // `tmax`: its index into lights_, or -1.
-    int light_hit(const glm::dvec3& origin, const glm::dvec3& d, double tmax) const;
+    // `tmax` (which becomes its distance): its index into lights_, or -1.
+    int light_hit(const glm::dvec3& origin, const glm::dvec3& d, double& tmax) const;
 
     const csg::Scene& scene_;
     const CsgTracer& tracer_;

@@ -56,7 +56,7 @@ TEST_CASE("the default render anti-aliases edges; --aa off and --spp 1 do not") 
     CHECK(read("on.ppm") != read("off.ppm"));
 }
 
-TEST_CASE("--integrator path renders 64 paths per pixel unless --spp; whitted is the default") {
+TEST_CASE("the path integrator renders 64 paths per pixel unless --spp, and whitted is the default") {
     auto dir = test_dir("integrator_path");
     write_file(dir / "s.sdl", "camera(position = [0, -6, 2], look_at = [0, 0, 0]);\nlight([3, -4, 5], radius = 0.5);\nsphere(1);\n");
     // Renders s.sdl to `out` (16×12) with `flags`; the --stats report.
@@ -75,7 +75,7 @@ TEST_CASE("--integrator path renders 64 paths per pixel unless --spp; whitted is
     CHECK(four.find("(" + std::to_string(16 * 12 * 4) + " primary") != std::string::npos);
 }
 
-TEST_CASE("--integrator path warns that it ignores ambient_occlusion") {
+TEST_CASE("the path integrator warns that it ignores ambient_occlusion") {
     auto dir = test_dir("integrator_ao");
     write_file(dir / "s.sdl", "ambient_occlusion(8);\nsphere(1);\n");
     const std::string s = "render '" + (dir / "s.sdl").string() + "' -o '" + (dir / "s.ppm").string() + "' -W 8 -H 6";
