@@ -89,6 +89,7 @@ std::string render_key(const csg::Scene& scene, const render::RenderOptions& ro,
     options += ro.double_precision ? ",double" : ",float";
     options += ",reflect:" + std::to_string(ro.max_reflect_depth);
     if (facets != FacetMode::Auto) options += facets == FacetMode::Exact ? ",facets:exact" : ",facets:openscad";
+    if (ro.integrator == render::Integrator::Path) options += ",path:" + std::to_string(ro.max_path_depth);
     if (ro.crop) {
         const auto& k = *ro.crop;
         options += ",crop:" + std::to_string(k[0]) + ":" + std::to_string(k[1]) + ":" + std::to_string(k[2]) + ":" +

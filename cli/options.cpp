@@ -17,7 +17,7 @@ namespace {
 // Options that shape an image: `kerf measure` writes none and refuses them.
 bool is_image_option(const std::string& a) {
     for (const char* f : {"-o", "-W", "-H", "--spp", "--aa", "--aa-samples", "--aa-threshold", "--seed", "--preview",
-                          "--max-depth", "--watch", "--crop", "--aov", "--stats", "--alpha"})
+                          "--max-depth", "--watch", "--crop", "--aov", "--stats", "--alpha", "--integrator"})
         if (a == f) return true;
     return false;
 }
@@ -77,7 +77,9 @@ const char* usage_text() {
            "                        [--preview] [--aov depth|normal|hits] [--alpha] [--stats] [--no-progress]\n"
            "                        [-D name=value ...] [-I dir ...] [--crop x0,y0,x1,y1]\n"
            "                        [--seed N] [--precision double|float] [--base DIR]\n"
-           "                        [--max-depth 4]  (reflections and refractions per ray, 0..32)\n"
+           "                        [--integrator whitted|path]  (path: --spp 64 by default)\n"
+           "                        [--max-depth 4]  (reflections and refractions per ray, 0..32;\n"
+           "                                          path: bounces per path, default 16)\n"
            "                        [--curve-tolerance 1e-4]  (text(), hull(), minkowski(), offset(): flattening, a fraction of size)\n"
            "                        [--facets auto|exact|openscad]  ($fn/$fa/$fs: docs/openscad.md \"Facets\")\n"
            "                        [--frames N [--frame I]] [--tile K/N] [--resume]\n"
@@ -125,6 +127,7 @@ Options parse_options(const std::vector<std::string>& args) {
     constexpr std::uint64_t big = std::numeric_limits<std::uint32_t>::max();
     o.render.adaptive = true;  // --aa auto is the default
     std::string aa_flag, aa_knob, spp_flag;  // as given, to refuse contradictions
+    int max_depth = -1;                      // --max-depth as given: the chosen integrator's
     std::string image_flag;  // the first option that only an image uses (refused by measure)
     for (std::size_t i = 1; i < args.size(); ++i) {
         const std::string& a = args[i];
@@ -166,7 +169,13 @@ Options parse_options(const std::vector<std::string>& args) {
                                  "serves this machine only, got '" + o.host + "'");
         }
         else if (a == "--threads") o.render.threads = parse_int<int>(a, value(), 0, 1024);
-        else if (a == "--max-depth") o.render.max_reflect_depth = parse_int<int>(a, value(), 0, 32);
+        else if (a == "--max-depth") max_depth = parse_int<int>(a, value(), 0, 32);
+        else if (a == "--integrator") {
+            const std::string& v = value();
+            if (v == "whitted") o.render.integrator = render::Integrator::Whitted;
+            else if (v == "path") o.render.integrator = render::Integrator::Path;
+            else throw UsageError("--integrator expects whitted or path, got '" + v + "'");
+        }
         else if (a == "--seed") o.render.seed = parse_int<std::uint64_t>(a, value(), 0, UINT64_MAX);
         else if (a == "--preview") o.render.preview = true;
         else if (a == "--watch" && (o.command == Command::Render || o.command == Command::Watch)) o.command = Command::Watch;
@@ -225,6 +234,22 @@ Options parse_options(const std::vector<std::string>& args) {
         o.measure.threads = o.render.threads;
         o.measure.double_precision = o.render.double_precision;
         return o;
+    }
+    // The path tracer: uniform sampling, 64 paths per pixel unless --spp;
+    // the Whitted tracer's one-ray looks (preview, AOVs) are not paths.
+    if (o.render.integrator == render::Integrator::Path) {
+        if (!aa_flag.empty() || !aa_knob.empty())
+            throw UsageError("--integrator path samples every pixel alike (--spp N, default 64); drop " +
+                             (aa_knob.empty() ? aa_flag : aa_knob));
+        if (o.render.preview || o.render.aov != render::Aov::None)
+            throw UsageError(std::string(o.render.preview ? "--preview" : "--aov") +
+                             " traces one Whitted ray through each pixel centre; drop --integrator path");
+        o.render.adaptive = false;
+        o.eval.path_integrator = true;
+        if (spp_flag.empty()) o.render.spp = 64;
+        if (max_depth >= 0) o.render.max_path_depth = max_depth;
+    } else if (max_depth >= 0) {
+        o.render.max_reflect_depth = max_depth;
     }
     // Sampling: adaptive unless --spp, --aa off, --preview or an AOV; a knob
     // that would then be ignored is an error, never silence.

@@ -50,6 +50,9 @@ struct EvalOptions {
     // be from the true one, as a fraction of the shape's size.
     double curve_tolerance = 1e-4;
     FacetMode facets = FacetMode::Auto;  // --facets
+    // --integrator path: the path tracer has no ambient term, so
+    // ambient_occlusion() is ignored there, with a warning.
+    bool path_integrator = false;
     // Receives every file the run depends on, as it is looked up: the main
     // file, each file an include, use or import resolved to, and each place
     // searched before it (a file created there would be found instead).

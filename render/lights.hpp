@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 
 #include <glm/glm.hpp>
 
@@ -33,6 +34,27 @@ inline double arriving(const csg::Light& light, const glm::dvec3& to_point, doub
     if (light.inverse_square) k /= dist * dist;
     if (light.spot) k *= spot_factor(light, to_point);
     return k;
+}
+
+// Where a light is seen from `origin`: the unit direction `l` towards it,
+// its distance (infinite for a distant light) and the part of its
+// intensity that arrives (arriving()). False when the point sits on the
+// light or nothing arrives.
+struct LightView {
+    glm::dvec3 l;
+    double dist, k;
+};
+inline bool view_light(const csg::Light& light, const glm::dvec3& origin, LightView& v) {
+    if (light.directional) {
+        v = {-light.direction, std::numeric_limits<double>::infinity(), light.intensity};
+    } else {
+        v.l = light.position - origin;
+        v.dist = glm::length(v.l);
+        if (v.dist == 0) return false;
+        v.l /= v.dist;
+        v.k = arriving(light, -v.l, v.dist);
+    }
+    return v.k > 0;
 }
 
 // A generator for the shadow rays at one shading point: seeded by the

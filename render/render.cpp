@@ -16,6 +16,7 @@
 #include "render/adaptive.hpp"
 #include "render/aov.hpp"
 #include "render/camera.hpp"
+#include "render/integrator_path.hpp"
 #include "render/pixel_store.hpp"
 #include "render/sampler.hpp"
 #include "render/shading.hpp"
@@ -33,6 +34,7 @@ void check_options(const RenderOptions& o) {
     if (o.adaptive && (o.aa_samples < 2 || !(o.aa_threshold >= 0 && o.aa_threshold <= 1)))
         throw std::invalid_argument("adaptive anti-aliasing needs at least 2 samples and a threshold from 0 to 1");
     if (o.threads < 0) throw std::invalid_argument("thread count must not be negative");
+    if (o.max_path_depth < 0) throw std::invalid_argument("path depth must not be negative");
     if (o.crop) {
         const auto& c = *o.crop;
         if (c[0] < 0 || c[1] < 0 || c[2] > o.width || c[3] > o.height || c[0] >= c[2] || c[1] >= c[3])
@@ -54,6 +56,10 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
     if (progress) progress(0.0);  // the BVHs are built; tracing starts (render.hpp)
     const SamplePattern samples(options.preview ? 1 : options.spp);
     const Shader shader(scene, tracer, options.preview ? 0 : options.max_reflect_depth);
+    // The path tracer, when asked for (the preview stays Whitted's quick look).
+    std::optional<PathTracer> path;
+    if (options.integrator == Integrator::Path && !options.preview)
+        path.emplace(scene, tracer, options.max_path_depth, options.seed, options.path_lighting);
     const CameraModel camera(scene.camera, options.width, options.height);
 
     const std::array<int, 4> region = options.crop ? *options.crop
@@ -75,9 +81,13 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
 
     // The colour seen along (o, d); `surface` as Shader::radiance.
     auto trace = [&](const glm::dvec3& o, const glm::dvec3& d, ThreadState& ts, std::uint32_t* surface) {
-        if (!alpha) return shader.radiance(TraceRay{o, d, 0, std::numeric_limits<double>::infinity()}, 0, ts, surface);
+        auto one = [&](std::uint32_t* id) {
+            if (path) return path->radiance(o, d, ts, id);
+            return shader.radiance(TraceRay{o, d, 0, std::numeric_limits<double>::infinity()}, 0, ts, id);
+        };
+        if (!alpha) return one(surface);
         std::uint32_t id = 0;
-        const glm::dvec3 c = shader.radiance(TraceRay{o, d, 0, std::numeric_limits<double>::infinity()}, 0, ts, &id);
+        const glm::dvec3 c = one(&id);
         if (surface) *surface = id;
         hits += id != 0;
         return c;
@@ -139,7 +149,7 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
             }
             put(x, y, sum / double(n), n);
         });
-    } else if (options.adaptive && !options.preview) {
+    } else if (options.adaptive && !options.preview && !path) {
         // Centres first (about a quarter of the time), then the refinement.
         CentreSamples centres(region, options.width, options.height);
         const SamplePattern refine(options.aa_samples);

@@ -13,6 +13,7 @@
 
 #include "csg/scene.hpp"
 #include "render/image/image.hpp"
+#include "render/path_lighting.hpp"
 
 namespace kerf::render {
 
@@ -22,6 +23,10 @@ enum class Aov : std::uint8_t { None, Depth, Normal, Hits };
 // premultiplied for EXR/TIFF (colour = their sum over all samples), as
 // those formats expect.
 enum class Alpha : std::uint8_t { None, Straight, Premultiplied };
+
+// --integrator (docs/spec.md §12): the Whitted-style shader (shading.hpp,
+// the default) or the path tracer (integrator_path.hpp).
+enum class Integrator : std::uint8_t { Whitted, Path };
 
 struct RenderOptions {
     int width = 800, height = 600;
@@ -41,6 +46,12 @@ struct RenderOptions {
     std::uint64_t seed = 0;          // jitter seed; pixels are seeded by (seed, x, y)
     bool double_precision = true;    // false: primitives intersected in float
     int max_reflect_depth = 4;      // reflections and refractions into solids one ray may branch into (--max-depth)
+    // Path: `spp` paths per pixel, uniformly (adaptive sampling does not
+    // apply: every pixel is noisy), at most max_path_depth bounces each
+    // (--max-depth with --integrator path). preview and AOVs stay Whitted's.
+    Integrator integrator = Integrator::Whitted;
+    int max_path_depth = 16;
+    PathLighting path_lighting = PathLighting::Mis;  // tests compare the estimators
     // Colour only: store 8-bit sRGB codes (Image::srgb8) instead of linear
     // floats, for 8-bit files: a quarter of the memory, and fresh memory is
     // expensive (the kernel clears every page; 13 % of a 2048² render).

@@ -153,20 +153,10 @@ glm::dvec3 Shader::shade(const TraceRay& ray, const TraceHit& hit, int depth, Th
     };
     for (std::size_t li = 0; li < lights_.size(); ++li) {
         const csg::Light& light = lights_[li];
-        glm::dvec3 l;
-        double dist, k;
-        if (light.directional) {
-            l = -light.direction;
-            dist = std::numeric_limits<double>::infinity();
-            k = light.intensity;
-        } else {
-            l = light.position - origin;
-            dist = glm::length(l);
-            if (dist == 0) continue;
-            l /= dist;
-            k = arriving(light, -l, dist);
-        }
-        if (k <= 0) continue;
+        LightView view;
+        if (!view_light(light, origin, view)) continue;
+        const glm::dvec3& l = view.l;
+        const double dist = view.dist, k = view.k;
         if (light.radius <= 0 || dist <= light.radius) {
             const double ndl = glm::dot(n, l);
             if (ndl <= 0) continue;

@@ -35,6 +35,7 @@ public:
     double curve_tolerance() const;  // EvalOptions::curve_tolerance
     FacetVars facet_vars() const;    // the $fn, $fa, $fs in force for this call
     FacetMode facet_mode() const;    // EvalOptions::facets
+    bool path_integrator() const;    // EvalOptions::path_integrator
     // A primitive node at the statement, counted against the limit.
     void add_primitive(csg::PrimKind kind, std::initializer_list<double> p, std::uint32_t index = 0);
     // A warning at the statement (Evaluator::warn).

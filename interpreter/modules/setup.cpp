@@ -168,6 +168,8 @@ void ambient_occlusion(ModuleCall& c) {
     ao.distance = arg_number(a, 1, "distance", ao.distance);
     if (!(ao.distance > 0)) arg_error(a, "distance must be positive, got " + format_number(ao.distance));
     slot = ao;
+    if (c.path_integrator())
+        c.warn("does not apply to --integrator path (bounced light replaces the ambient term); ignored");
 }
 
 // fog(distance, color) (csg::Fog): at most once.

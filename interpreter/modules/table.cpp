@@ -134,6 +134,7 @@ const EvalLimits& ModuleCall::limits() const { return ev_.opt_.limits; }
 double ModuleCall::curve_tolerance() const { return ev_.opt_.curve_tolerance; }
 FacetVars ModuleCall::facet_vars() const { return ev_.facet_vars(); }
 FacetMode ModuleCall::facet_mode() const { return ev_.facet_mode(); }
+bool ModuleCall::path_integrator() const { return ev_.opt_.path_integrator; }
 
 void ModuleCall::add_primitive(csg::PrimKind kind, std::initializer_list<double> p, std::uint32_t index) {
     const std::uint64_t limit = ev_.opt_.limits.primitives;

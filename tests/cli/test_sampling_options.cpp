@@ -5,7 +5,7 @@
 
 #include "tests/cli/run_kerf.hpp"
 
-TEST_CASE("sampling knobs that would be ignored are usage errors") {
+TEST_CASE("sampling knobs that would be ignored, and bad integrators, are usage errors") {
     auto dir = test_dir("sampling");
     const struct {
         const char* args;
@@ -20,6 +20,13 @@ TEST_CASE("sampling knobs that would be ignored are usage errors") {
         {"--aa-threshold 1.5", "--aa-threshold expects a number from 0 to 1, got '1.5'"},
         {"--aa-threshold nan", "--aa-threshold expects a number from 0 to 1, got 'nan'"},
         {"--aa-samples 1", "--aa-samples expects a whole number from 2 to 4096, got '1'"},
+        {"--integrator foo", "--integrator expects whitted or path, got 'foo'"},
+        {"--integrator path --spp 0", "--spp expects a whole number from 1 to 65536, got '0'"},
+        {"--integrator path --aa auto", "--integrator path samples every pixel alike (--spp N, default 64); drop --aa auto"},
+        {"--integrator path --aa-samples 8", "--integrator path samples every pixel alike (--spp N, default 64); drop --aa-samples"},
+        {"--integrator path --preview", "--preview traces one Whitted ray through each pixel centre; drop --integrator path"},
+        {"--integrator path --aov depth", "--aov traces one Whitted ray through each pixel centre; drop --integrator path"},
+        {"--integrator path --max-depth 33", "--max-depth expects a whole number from 0 to 32, got '33'"},
     };
     for (const auto& c : cases) {
         const auto r = run_kerf(std::string("render x.sdl ") + c.args, dir);
@@ -47,4 +54,35 @@ TEST_CASE("the default render anti-aliases edges; --aa off and --spp 1 do not") 
     };
     CHECK(read("off.ppm") == read("one.ppm"));
     CHECK(read("on.ppm") != read("off.ppm"));
+}
+
+TEST_CASE("the path integrator renders 64 paths per pixel unless --spp, and whitted is the default") {
+    auto dir = test_dir("integrator_path");
+    write_file(dir / "s.sdl", "camera(position = [0, -6, 2], look_at = [0, 0, 0]);\nlight([3, -4, 5], radius = 0.5);\nsphere(1);\n");
+    // Renders s.sdl to `out` (16×12) with `flags`; the --stats report.
+    auto render = [&](const std::string& out, const std::string& flags) {
+        const auto r = run_kerf("render '" + (dir / "s.sdl").string() + "' -o '" + (dir / out).string() + "' -W 16 -H 12 --stats " + flags, dir);
+        REQUIRE(r.status == 0);
+        return r.err;
+    };
+    const std::string path = render("p.ppm", "--integrator path"), four = render("p4.ppm", "--integrator path --spp 4");
+    render("w.ppm", "--integrator whitted");
+    render("d.ppm", "");
+    CHECK(slurp(dir / "w.ppm") == slurp(dir / "d.ppm"));
+    CHECK(slurp(dir / "p.ppm") != slurp(dir / "w.ppm"));
+    // --stats counts primary rays: 64 and 4 per pixel.
+    CHECK(path.find("(" + std::to_string(16 * 12 * 64) + " primary") != std::string::npos);
+    CHECK(four.find("(" + std::to_string(16 * 12 * 4) + " primary") != std::string::npos);
+}
+
+TEST_CASE("the path integrator warns that it ignores ambient_occlusion") {
+    auto dir = test_dir("integrator_ao");
+    write_file(dir / "s.sdl", "ambient_occlusion(8);\nsphere(1);\n");
+    const std::string s = "render '" + (dir / "s.sdl").string() + "' -o '" + (dir / "s.ppm").string() + "' -W 8 -H 6";
+    const auto path = run_kerf(s + " --integrator path --spp 1", dir);
+    const auto whitted = run_kerf(s, dir);
+    CHECK(path.status == 0);
+    CHECK(path.err.find("s.sdl:1:1: warning: ambient_occlusion: does not apply to --integrator path") != std::string::npos);
+    CHECK(whitted.status == 0);
+    CHECK(whitted.err.find("warning") == std::string::npos);
 }
