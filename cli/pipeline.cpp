@@ -30,7 +30,9 @@ csg::Scene evaluate_and_lower(const Options& o, const EvalOptions& eval, Progres
     if (!evaluated.warnings.empty()) bar.print_above([&] { print_warnings(evaluated.warnings); });
     if (warnings) *warnings = evaluated.warnings;
     bar.phase("lower");
-    return lower_to_csg(evaluated.graph);
+    // The studio camera frames the full image's shape (a crop or a band
+    // shows part of the same picture).
+    return lower_to_csg(evaluated.graph, LowerOptions{o.look, double(o.render.width) / o.render.height});
 }
 
 render::Image render_and_write(const csg::Scene& scene, const render::RenderOptions& ro, const std::string& path,
