@@ -144,7 +144,7 @@ TEST_CASE("studio ground: at the solid's lowest point, outside the CSG, with the
     CHECK(!lower("").ground.on);
 }
 
-TEST_CASE("--look plain keeps the docs/spec.md §6 defaults") {
+TEST_CASE("the plain look (--look plain) keeps the docs/spec.md §6 defaults") {
     const csg::Scene s = lower("cube([100, 60, 3]);", {Look::Plain});
     CHECK(!s.ground.on);
     CHECK(s.background == glm::dvec3(0.2));
