@@ -76,6 +76,9 @@ std::uint64_t scene_hash(const csg::Scene& s) {
     h.v3(s.background);
     h.u(std::uint64_t(s.ambient_occlusion.samples)), h.d(s.ambient_occlusion.distance);
     h.d(s.fog.distance), h.v3(s.fog.color);
+    h.u(s.ground.on), h.d(s.ground.z), h.d(s.ground.shadow);
+    for (const csg::Light& l : s.lights)
+        h.d(l.radius), h.u(l.samples), h.u(l.shadows), h.u(l.inverse_square), h.u(l.spot), h.d(l.spot_angle), h.d(l.spot_falloff);
     return h.h;
 }
 

@@ -17,7 +17,7 @@ namespace {
 // Options that shape an image: `kerf measure` writes none and refuses them.
 bool is_image_option(const std::string& a) {
     for (const char* f : {"-o", "-W", "-H", "--spp", "--aa", "--aa-samples", "--aa-threshold", "--seed", "--preview",
-                          "--max-depth", "--watch", "--crop", "--aov", "--stats", "--alpha", "--integrator"})
+                          "--max-depth", "--watch", "--crop", "--aov", "--stats", "--alpha", "--integrator", "--look"})
         if (a == f) return true;
     return false;
 }
@@ -78,6 +78,7 @@ const char* usage_text() {
            "                        [-D name=value ...] [-I dir ...] [--crop x0,y0,x1,y1]\n"
            "                        [--seed N] [--precision double|float] [--base DIR]\n"
            "                        [--integrator whitted|path]  (path: --spp 64 by default)\n"
+           "                        [--look studio|plain]  (a script without camera, lights or background)\n"
            "                        [--max-depth 4]  (reflections and refractions per ray, 0..32;\n"
            "                                          path: bounces per path, default 16)\n"
            "                        [--curve-tolerance 1e-4]  (text(), hull(), minkowski(), offset(): flattening, a fraction of size)\n"
@@ -194,6 +195,11 @@ Options parse_options(const std::vector<std::string>& args) {
             else if (v == "normal") o.render.aov = render::Aov::Normal;
             else if (v == "hits") o.render.aov = render::Aov::Hits;
             else throw UsageError("--aov expects depth, normal or hits, got '" + v + "'");
+        } else if (a == "--look") {
+            const std::string& v = value();
+            if (v == "studio") o.look = Look::Studio;
+            else if (v == "plain") o.look = Look::Plain;
+            else throw UsageError("--look expects studio or plain, got '" + v + "'");
         } else if (a == "--precision") {
             const std::string& v = value();
             if (v == "double") o.render.double_precision = true;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "interpreter/interpreter.hpp"
+#include "lower/lower.hpp"
 #include "render/measure/measure.hpp"
 #include "render/render.hpp"
 
@@ -36,6 +37,7 @@ struct Options {
     FarmOptions farm;
     std::vector<std::string> tiles;  // assemble: the band files (output: OUT)
     EvalOptions eval;
+    Look look = Look::Studio;  // --look: what a script without camera, lights or background gets
     render::RenderOptions render;
     render::MeasureOptions measure;  // kerf measure: resolution; threads and precision as for render
     std::string host = "127.0.0.1";  // kerf view: --host, a loopback address only

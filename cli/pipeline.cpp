@@ -30,7 +30,9 @@ csg::Scene evaluate_and_lower(const Options& o, const EvalOptions& eval, Progres
     if (!evaluated.warnings.empty()) bar.print_above([&] { print_warnings(evaluated.warnings); });
     if (warnings) *warnings = evaluated.warnings;
     bar.phase("lower");
-    csg::Scene scene = lower_to_csg(evaluated.graph);
+    // The studio camera frames the full image's shape (a crop or a band
+    // shows part of the same picture).
+    csg::Scene scene = lower_to_csg(evaluated.graph, LowerOptions{o.look, double(o.render.width) / o.render.height});
     const bool renders = o.command == Command::Render || o.command == Command::Watch || o.command == Command::View;
     if (scene.root == csg::kNone && renders) {
         // Nothing to draw: the image is the background. OpenSCAD 2021.01

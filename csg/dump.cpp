@@ -209,6 +209,12 @@ void dump(const Scene& s, std::string& out, Flush&& flush) {
     out += "background";
     field(out, "color", s.background);
     out += '\n';
+    if (s.ground.on) {  // the studio look's shadow catcher: no solid, so not in the tree
+        out += "ground";
+        field(out, "z", s.ground.z);
+        field(out, "shadow", s.ground.shadow);
+        out += '\n';
+    }
     if (s.fog.on()) {
         out += "fog";
         field(out, "distance", s.fog.distance);

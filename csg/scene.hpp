@@ -198,6 +198,18 @@ struct Fog {
     bool on() const { return distance < std::numeric_limits<double>::infinity(); }
 };
 
+// The studio look's ground (docs/spec.md §12 "Default look"): a rendering
+// element, not a solid — no leaf, no node, unseen by the membership oracle,
+// `kerf measure` and the AOVs. A shadow catcher: the horizontal plane
+// z = `z`, seen only from above, shows what a miss shows (the background, or
+// the fog's colour) darkened by `shadow` times the share of the
+// shadow-casting lights' light that the solid blocks there (render/ground.*).
+struct Ground {
+    bool on = false;
+    double z = 0;
+    double shadow = 0.6;  // 0..1: how dark a full shadow is
+};
+
 struct Light {
     bool directional = false;
     glm::dvec3 position{0, 0, 0};
@@ -239,6 +251,7 @@ struct Scene {
     // scaled by the share of the hemisphere open within `distance`; 0 samples: off.
     AmbientOcclusion ambient_occlusion;
     Fog fog;
+    Ground ground;                        // off unless the studio look set it (lower/studio.*)
 
     std::vector<SourceRef> sources;
     std::vector<std::string> files;

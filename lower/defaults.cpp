@@ -6,22 +6,18 @@
 
 namespace kerf {
 
-namespace {
-
-bool finite(const csg::Aabb& b) {
+bool finite_box(const csg::Aabb& b) {
     for (int i = 0; i < 3; ++i)
         if (!std::isfinite(b.lo[i]) || !std::isfinite(b.hi[i])) return false;
     return !b.empty();
 }
 
-}  // namespace
-
 csg::Aabb framing_box(const csg::Scene& scene) {
     const csg::Aabb root = scene.bounds();
-    if (finite(root)) return root;
+    if (finite_box(root)) return root;
     csg::Aabb frame;
     for (const csg::Leaf& leaf : scene.leaves)
-        if (finite(leaf.bounds)) frame.extend(leaf.bounds);
+        if (finite_box(leaf.bounds)) frame.extend(leaf.bounds);
     if (frame.empty()) frame = {glm::dvec3(-1), glm::dvec3(1)};
     return frame;
 }

@@ -8,6 +8,9 @@
 
 namespace kerf {
 
+// A non-empty box with every coordinate finite.
+bool finite_box(const csg::Aabb& b);
+
 // The box the default camera frames: the root's bounds when finite; when a
 // half-space makes the root unbounded, the union of the finite leaf boxes;
 // with no finite box at all (empty scene, only planes), the cube [-1, 1]³.

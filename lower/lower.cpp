@@ -5,35 +5,53 @@
 #include "lower/flat_tree.hpp"
 #include "lower/defaults.hpp"
 #include "lower/geometry_ops.hpp"
+#include "lower/studio.hpp"
 
 namespace kerf {
 
 namespace {
 
-void apply_scene_statements(const graph::SceneGraph& g, csg::Scene& s) {
+// Each part a script leaves unset gets the look's: the camera, the lights
+// (with the studio look, the ground that catches their shadows and the
+// light background come with them), the background (docs/language.md,
+// "The default look").
+void apply_scene_statements(const graph::SceneGraph& g, const LowerOptions& o, csg::Scene& s) {
+    const bool studio = o.look == Look::Studio;
+    const csg::Aabb frame = framing_box(s);
     if (g.camera) {
         s.camera = *g.camera;
     } else {
         // Located at the top of the main file: the default camera belongs
         // to no statement of its own.
         const SourceLoc& where = g.nodes.empty() ? SourceLoc{} : g.nodes[g.root].loc;
-        s.camera = default_camera(framing_box(s), where);
+        s.camera = studio ? studio_camera(frame, o.aspect, where) : default_camera(frame, where);
     }
-    s.lights = g.lights.empty() ? default_lights(s.camera) : g.lights;
-    s.background = g.background.value_or(glm::dvec3(0.2, 0.2, 0.2));
+    if (!g.lights.empty()) s.lights = g.lights;
+    else if (!studio) s.lights = default_lights(s.camera);
+    else {
+        s.lights = studio_lights(s.camera, frame);
+        // Under the lowest point of a bounded solid (an unbounded one, a
+        // half-space, is its own floor; an empty scene has nothing to ground).
+        s.ground.on = s.root != csg::kNone && finite_box(s.bounds());
+        s.ground.z = s.ground.on ? s.bounds().lo.z : 0;
+    }
+    // The light background comes with the studio lights: a script that
+    // lights itself keeps the dark one its lights were chosen against.
+    const bool studio_lit = studio && g.lights.empty();
+    s.background = g.background.value_or(studio_lit ? glm::dvec3(kStudioBackground) : glm::dvec3(0.2, 0.2, 0.2));
     s.ambient_occlusion = g.ambient_occlusion.value_or(csg::AmbientOcclusion{});
     s.fog = g.fog.value_or(csg::Fog{});
 }
 
 }  // namespace
 
-csg::Scene lower_to_csg(const graph::SceneGraph& input) {
+csg::Scene lower_to_csg(const graph::SceneGraph& input, const LowerOptions& options) {
     graph::SceneGraph resolved;  // hull(), minkowski(), resize() replaced, when there are any
     const graph::SceneGraph& graph = resolve_geometry_ops(input, resolved) ? resolved : input;
     csg::Scene scene;
     const lowering::FlatTree tree = lowering::build_flat_tree(graph, scene.leaves);
     lowering::emit_flat_tree(graph, tree, scene);
-    apply_scene_statements(graph, scene);
+    apply_scene_statements(graph, options, scene);
     return scene;
 }
 

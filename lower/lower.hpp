@@ -7,8 +7,20 @@
 
 namespace kerf {
 
+// What a script that sets no camera, light or background gets
+// (docs/language.md, "The default look"): the studio set-up (lower/studio.hpp)
+// or the plain defaults of docs/spec.md §6 (lower/defaults.hpp).
+enum class Look { Studio, Plain };
+
+struct LowerOptions {
+    Look look = Look::Studio;
+    // The image's width / height: the studio camera fills 80 % of the frame
+    // of that shape (the plain camera fits any image at least as wide as tall).
+    double aspect = 4.0 / 3.0;
+};
+
 // Throws SourceError for scene-level problems it can locate (e.g. a
 // singular transform reaching a leaf).
-csg::Scene lower_to_csg(const graph::SceneGraph& graph);
+csg::Scene lower_to_csg(const graph::SceneGraph& graph, const LowerOptions& options = {});
 
 }  // namespace kerf

@@ -17,6 +17,7 @@
 #include "render/aov.hpp"
 #include "render/camera.hpp"
 #include "render/integrator_path.hpp"
+#include "render/ground.hpp"
 #include "render/pixel_store.hpp"
 #include "render/sampler.hpp"
 #include "render/shading.hpp"
@@ -55,11 +56,6 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
     if (cancelled()) throw RenderCancelled();
     if (progress) progress(0.0);  // the BVHs are built; tracing starts (render.hpp)
     const SamplePattern samples(options.preview ? 1 : options.spp);
-    const Shader shader(scene, tracer, options.preview ? 0 : options.max_reflect_depth);
-    // The path tracer, when asked for (the preview stays Whitted's quick look).
-    std::optional<PathTracer> path;
-    if (options.integrator == Integrator::Path && !options.preview)
-        path.emplace(scene, tracer, options.max_path_depth, options.seed, options.path_lighting);
     const CameraModel camera(scene.camera, options.width, options.height);
 
     const std::array<int, 4> region = options.crop ? *options.crop
@@ -67,6 +63,14 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
     const Aov aov = options.aov;
     Image image;
     const bool alpha = options.alpha != Alpha::None && aov == Aov::None;
+    // The ground is neither in the AOVs (they see the solid) nor in an
+    // --alpha image (transparent, as the background it stands for).
+    const Shader shader(scene, tracer, options.preview ? 0 : options.max_reflect_depth, !alpha);
+    const csg::Aabb shadow = alpha || aov != Aov::None ? csg::Aabb{} : ground_shadow_box(scene);
+    // The path tracer, when asked for (the preview stays Whitted's quick look).
+    std::optional<PathTracer> path;
+    if (options.integrator == Integrator::Path && !options.preview)
+        path.emplace(scene, tracer, options.max_path_depth, options.seed, options.path_lighting);
     PixelStore store(image, region, alpha ? 4 : aov_channels(aov), aov_content(aov), options.srgb8 && aov == Aov::None);
     // Coverage: the samples of the pixel being shaded that hit a solid. A
     // pixel is shaded start to end on one thread, so a thread-local count,
@@ -125,7 +129,7 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
 
     bool complete = true;
     if (aov != Aov::None) {
-        complete &= for_each_tile(arena, region, camera, tracer, states, progress, stack_need, options.cancel, [&](int x, int y, ThreadState& ts, bool traced) {
+        complete &= for_each_tile(arena, region, camera, tracer, shadow, states, progress, stack_need, options.cancel, [&](int x, int y, ThreadState& ts, bool traced) {
             aov_pixel(aov, camera, tracer, x, y, ts, traced, store.values(x, y));
         });
     } else if (camera.has_lens() && !options.preview) {
@@ -136,7 +140,7 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
         // stream of its own, strata paired by a per-pixel shifted golden step).
         const SamplePattern blur(std::max(int(scene.camera.blur_samples), options.spp));
         const int n = blur.count();
-        complete &= for_each_tile(arena, region, camera, tracer, states, progress, stack_need, options.cancel, [&](int x, int y, ThreadState& ts, bool traced) {
+        complete &= for_each_tile(arena, region, camera, tracer, shadow, states, progress, stack_need, options.cancel, [&](int x, int y, ThreadState& ts, bool traced) {
             hits = 0;
             std::uint64_t rng = SamplePattern::pixel_rng(options.seed, x, y);
             std::uint64_t lens_rng = rng ^ 0x6C656E73u;  // "lens"
@@ -159,7 +163,7 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
             return [&progress, from, to](double f) { progress(from + (to - from) * f); };
         };
         const std::array<int, 4> area = centres.area();
-        complete &= for_each_tile(arena, area, camera, tracer, states, part(0, 0.25), stack_need, options.cancel, [&](int x, int y, ThreadState& ts, bool traced) {
+        complete &= for_each_tile(arena, area, camera, tracer, shadow, states, part(0, 0.25), stack_need, options.cancel, [&](int x, int y, ThreadState& ts, bool traced) {
             std::uint32_t surface;
             const glm::dvec3 c = sample(x + 0.5, y + 0.5, ts, traced, &surface);
             centres.set(x, y, c, surface);
@@ -167,7 +171,7 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
             hits = 0;
         });
         // Only candidates are written again; the rest keep their centre.
-        complete &= for_each_tile(arena, region, camera, tracer, states, part(0.25, 1), stack_need, options.cancel, [&](int x, int y, ThreadState& ts, bool traced) {
+        complete &= for_each_tile(arena, region, camera, tracer, shadow, states, part(0.25, 1), stack_need, options.cancel, [&](int x, int y, ThreadState& ts, bool traced) {
             hits = 0;
             if (!centres.needs_more(x, y, threshold)) return;
             // Probes at the 4 corners first: a straight edge that crosses the
@@ -191,7 +195,7 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
             put(x, y, samples_mean(refine, x, y, ts, traced), refine.count());
         });
     } else {
-        complete &= for_each_tile(arena, region, camera, tracer, states, progress, stack_need, options.cancel, [&](int x, int y, ThreadState& ts, bool traced) {
+        complete &= for_each_tile(arena, region, camera, tracer, shadow, states, progress, stack_need, options.cancel, [&](int x, int y, ThreadState& ts, bool traced) {
             hits = 0;
             put(x, y, samples_mean(samples, x, y, ts, traced), samples.count());
         });

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "render/ao.hpp"
+#include "render/ground.hpp"
 #include "render/lights.hpp"
 #include "render/optics.hpp"
 #include "render/patterns.hpp"
@@ -30,8 +31,13 @@ double highlight(double x, double s) {
 }
 }  // namespace
 
-Shader::Shader(const csg::Scene& scene, const CsgTracer& tracer, int max_depth)
-    : scene_(scene), tracer_(tracer), max_depth_(max_depth), miss_(scene.fog.on() ? scene.fog.color : scene.background) {
+Shader::Shader(const csg::Scene& scene, const CsgTracer& tracer, int max_depth, bool ground)
+    : scene_(scene), tracer_(tracer), max_depth_(max_depth), miss_(scene.fog.on() ? scene.fog.color : scene.background),
+      ground_(ground && scene.ground.on) {
+    // Far above the round-off of a point on the plane, far below the solid's size.
+    const csg::Aabb box = scene.bounds();
+    ground_lift_ = ground_ ? 1e-7 * glm::length(box.hi - box.lo) + 1e-12 * glm::length(0.5 * (box.lo + box.hi)) : 0;
+    if (ground_) ground_shadow_ = ground_shadow_box(scene);
     for (csg::Light l : scene.lights) {
         l.direction = glm::normalize(l.direction);  // once, not per shading point
         lights_.push_back(l);
@@ -120,7 +126,18 @@ glm::dvec3 Shader::inside(const glm::dvec3& p, const glm::dvec3& d, const csg::M
 
 glm::dvec3 Shader::radiance(const TraceRay& ray, int depth, ThreadState& ts, std::uint32_t* surface) const {
     TraceHit hit;
-    if (!tracer_.intersect(ray, hit, ts.scratch)) {
+    const bool solid = tracer_.intersect(ray, hit, ts.scratch);
+    if (ground_) {
+        // In front of the solid, the ground: a miss that may be in shadow
+        // (the same surface id as a miss: the shadow's edge is refined by
+        // its colour, not a seam along the horizon).
+        const double t = ground_distance(scene_.ground, ray);
+        if (t < (solid ? hit.t : ray.tfar)) {
+            if (surface) *surface = 0;
+            return ground(ray.o + t * ray.d, ts);
+        }
+    }
+    if (!solid) {
         if (surface) *surface = 0;
         return miss_;  // fog: as if at infinite distance, all fog
     }
@@ -130,6 +147,54 @@ glm::dvec3 Shader::radiance(const TraceRay& ray, int depth, ThreadState& ts, std
     // ray.d need not be unit (primary rays): the distance is t·|d|.
     const double keep = std::exp(-hit.t * glm::length(ray.d) / scene_.fog.distance);
     return keep * c + (1 - keep) * scene_.fog.color;
+}
+
+template <class Ray>
+void Shader::light_rays(const glm::dvec3& origin, const glm::dvec3& n, ThreadState& ts, Ray&& ray) const {
+    for (std::size_t li = 0; li < lights_.size(); ++li) {
+        const csg::Light& light = lights_[li];
+        LightView view;
+        if (!view_light(light, origin, view)) continue;
+        const glm::dvec3& l = view.l;
+        const double dist = view.dist, k = view.k;
+        if (light.radius <= 0 || dist <= light.radius) {
+            const double ndl = glm::dot(n, l);
+            if (ndl <= 0) continue;
+            ray(light, l, ndl, light.color * k, light.shadows ? transmitted(TraceRay{origin, l, 0, dist}, ts) : glm::dvec3(1.0));
+            continue;
+        }
+        // A sphere: the mean response over stratified directions into the
+        // cone it fills, each with its own shadow ray (soft shadows).
+        const ConeBasis cone(l, dist, light.radius);
+        const SamplePattern& pattern = patterns_[li];
+        std::uint64_t rng = shading_rng(origin, li);
+        const glm::dvec3 share = light.color * (k / double(pattern.count()));
+        for (int i = 0; i < pattern.count(); ++i) {
+            double reach;
+            const glm::dvec3 dir = cone.direction(pattern.offset(i, rng), reach);
+            const double ndl = glm::dot(n, dir);
+            if (ndl <= 0) continue;
+            ray(light, dir, ndl, share, light.shadows ? transmitted(TraceRay{origin, dir, 0, reach}, ts) : glm::dvec3(1.0));
+        }
+    }
+}
+
+glm::dvec3 Shader::ground(const glm::dvec3& p, ThreadState& ts) const {
+    // Most of the ground is where no shadow can fall: no shadow rays there.
+    if (!(p.x >= ground_shadow_.lo.x && p.x <= ground_shadow_.hi.x && p.y >= ground_shadow_.lo.y &&
+          p.y <= ground_shadow_.hi.y))
+        return miss_;
+    const glm::dvec3 up(0, 0, 1);
+    double all = 0, blocked = 0;  // the shadow-casting lights' light reaching p: unblocked, blocked
+    light_rays(p + ground_lift_ * up, up, ts, [&](const csg::Light& light, const glm::dvec3&, double ndl, const glm::dvec3& k, const glm::dvec3& through) {
+        if (!light.shadows) return;
+        const double w = ndl * (k.r + k.g + k.b);
+        all += w;
+        blocked += w * (1 - (through.r + through.g + through.b) / 3);
+    });
+    // Nothing blocked: exactly the miss colour, as a culled tile gives.
+    if (!(blocked > 0) || !(all > 0)) return miss_;
+    return miss_ * (1 - scene_.ground.shadow * std::min(1.0, blocked / all));
 }
 
 glm::dvec3 Shader::shade(const TraceRay& ray, const TraceHit& hit, int depth, ThreadState& ts) const {
@@ -151,35 +216,9 @@ glm::dvec3 Shader::shade(const TraceRay& ray, const TraceHit& hit, int depth, Th
         diffuse += k * (m.diffuse * ndl) * albedo;
         highlights += k * (m.specular * highlight(std::max(0.0, glm::dot(n, h)), m.shininess));
     };
-    for (std::size_t li = 0; li < lights_.size(); ++li) {
-        const csg::Light& light = lights_[li];
-        LightView view;
-        if (!view_light(light, origin, view)) continue;
-        const glm::dvec3& l = view.l;
-        const double dist = view.dist, k = view.k;
-        if (light.radius <= 0 || dist <= light.radius) {
-            const double ndl = glm::dot(n, l);
-            if (ndl <= 0) continue;
-            const glm::dvec3 through = light.shadows ? transmitted(TraceRay{origin, l, 0, dist}, ts) : glm::dvec3(1.0);
-            if (through != glm::dvec3(0.0)) respond(l, ndl, light.color * k * through);
-            continue;
-        }
-        // A sphere: the mean response over stratified directions into the
-        // cone it fills, each with its own shadow ray (soft shadows).
-        const ConeBasis cone(l, dist, light.radius);
-        const SamplePattern& pattern = patterns_[li];
-        std::uint64_t rng = shading_rng(origin, li);
-        const glm::dvec3 share = light.color * (k / double(pattern.count()));
-        for (int i = 0; i < pattern.count(); ++i) {
-            double reach;
-            const glm::dvec3 dir = cone.direction(pattern.offset(i, rng), reach);
-            const double ndl = glm::dot(n, dir);
-            if (ndl <= 0) continue;
-            const glm::dvec3 through =
-                light.shadows ? transmitted(TraceRay{origin, dir, 0, reach}, ts) : glm::dvec3(1.0);
-            if (through != glm::dvec3(0.0)) respond(dir, ndl, share * through);
-        }
-    }
+    light_rays(origin, n, ts, [&](const csg::Light&, const glm::dvec3& l, double ndl, const glm::dvec3& k, const glm::dvec3& through) {
+        if (through != glm::dvec3(0.0)) respond(l, ndl, k * through);
+    });
     double open = 1;  // ambient occlusion: the ambient light's share that reaches p
     if (const csg::AmbientOcclusion& ao = scene_.ambient_occlusion; ao.samples > 0)
         open = ambient_visibility(tracer_, origin, n, ao.distance, SamplePattern(ao.samples), shading_rng(origin, 0x414F),

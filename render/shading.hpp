@@ -33,7 +33,9 @@ public:
     // primary ray may branch into (leaving a solid continues the path at the
     // same depth). Where the depth is spent a surface is shaded as if it
     // were opaque, and an internal reflection is dropped.
-    Shader(const csg::Scene& scene, const CsgTracer& tracer, int max_depth);
+    // ground: show the scene's ground (csg::Ground) if it has one; --alpha
+    // renders without it (its pixels would be neither solid nor background).
+    Shader(const csg::Scene& scene, const CsgTracer& tracer, int max_depth, bool ground = true);
     // Linear RGB seen along the ray (outside every solid); `depth` counts
     // reflections and refractions so far.
     // `surface`, if given, gets 0 for a miss, else an id of the surface the
@@ -58,6 +60,16 @@ private:
     // The colour of the surface `hit` seen along `ray`, before fog.
     glm::dvec3 shade(const TraceRay& ray, const TraceHit& hit, int depth, ThreadState& ts) const;
     const csg::Material& material_of(std::uint32_t leaf) const;
+    // The ground at `p`: the miss colour darkened by the share of the
+    // shadow-casting lights' light the solid blocks (csg::Ground).
+    glm::dvec3 ground(const glm::dvec3& p, ThreadState& ts) const;
+    // Calls ray(light, l, ndl, k, through) for each ray from `origin` (on a
+    // surface of normal n) to a light that faces the surface (ndl > 0): one
+    // per point light, `samples` per spherical one; k the colour arriving
+    // (intensity, spot, fall-off, the sample's share), through what the
+    // solid lets pass (shadows; 1 for a shadowless light).
+    template <class Ray>
+    void light_rays(const glm::dvec3& origin, const glm::dvec3& n, ThreadState& ts, Ray&& ray) const;
     glm::dvec3 mirror(const glm::dvec3& origin, const glm::dvec3& r, const glm::dvec3& n, double roughness, int depth,
                       ThreadState& ts) const;
 
@@ -65,6 +77,9 @@ private:
     const CsgTracer& tracer_;
     int max_depth_;
     glm::dvec3 miss_;
+    bool ground_;          // the scene's ground is shown
+    double ground_lift_;   // how far above the ground its shadow rays start
+    csg::Aabb ground_shadow_;  // outside it nothing can shadow the ground (ground.hpp)
     bool any_transparent_ = false;  // else shadow rays only ask whether anything is in the way
     std::vector<csg::Light> lights_;       // the scene's, directions of unit length
     std::vector<SamplePattern> patterns_;  // per light: where its shadow rays go

@@ -31,10 +31,12 @@ constexpr int kTile = 32;
 // progress(fraction) after each tile, serialised; once `*cancel` is set the
 // tiles not started are skipped (the caller throws RenderCancelled). A thread with less than
 // `stack_need` bytes of stack left traces nothing (stack_depth.hpp); then
-// the result is false and the image incomplete.
+// the result is false and the image incomplete. A tile is traced unless
+// its rays miss both the solid and the box `also` (where the ground shows a
+// shadow, render/ground.hpp; empty: nothing).
 template <class Pixel>
 bool for_each_tile(tbb::task_arena& arena, const std::array<int, 4>& region, const CameraModel& camera,
-                   const CsgTracer& tracer, tbb::enumerable_thread_specific<ThreadState>& states,
+                   const CsgTracer& tracer, const csg::Aabb& also, tbb::enumerable_thread_specific<ThreadState>& states,
                    const std::function<void(double)>& progress, std::size_t stack_need,
                    const std::atomic<bool>* cancel, Pixel&& pixel) {
     const int width = region[2] - region[0], height = region[3] - region[1];
@@ -67,7 +69,7 @@ bool for_each_tile(tbb::task_arena& arena, const std::array<int, 4>& region, con
                     camera.ray(tx1, ty0, co[1], cd[1]);
                     camera.ray(tx1, ty1, co[2], cd[2]);
                     camera.ray(tx0, ty1, co[3], cd[3]);
-                    traced = !tracer.misses_all(co, cd);
+                    traced = !tracer.misses_all(co, cd) || !tile_misses_box(also, co, cd);
                 }
                 for (int y = ty0; y < ty1; ++y)
                     for (int x = tx0; x < tx1; ++x) pixel(x, y, ts, traced);

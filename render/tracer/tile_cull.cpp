@@ -1,4 +1,5 @@
-// CsgTracer::misses_all: does every ray of a tile miss the scene? The rays of
+// CsgTracer::misses_all: does every ray of a tile miss the scene? (and
+// tile_misses_box: a given box, the ground's shadow, render/ground.hpp.) The rays of
 // an image tile lie in the convex hull of its four corner rays (one apex and
 // four directions for a pinhole camera, four origins and one direction for
 // an orthographic one), so a box outside one of the four side planes of that
@@ -11,7 +12,10 @@
 namespace kerf::render {
 
 bool CsgTracer::misses_all(const glm::dvec3 (&o)[4], const glm::dvec3 (&d)[4]) const {
-    const csg::Aabb& box = impl_->reach;
+    return tile_misses_box(impl_->reach, o, d);
+}
+
+bool tile_misses_box(const csg::Aabb& box, const glm::dvec3 (&o)[4], const glm::dvec3 (&d)[4]) {
     if (box.empty()) return true;
     for (int i = 0; i < 3; ++i)
         if (!std::isfinite(box.lo[i]) || !std::isfinite(box.hi[i])) return false;  // unbounded units

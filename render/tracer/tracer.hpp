@@ -69,4 +69,8 @@ private:
     std::unique_ptr<Impl> impl_;
 };
 
+// True if every ray of the four corner rays' hull (as misses_all) misses
+// `box`: an empty box always, one with an infinite coordinate never.
+bool tile_misses_box(const csg::Aabb& box, const glm::dvec3 (&o)[4], const glm::dvec3 (&d)[4]);
+
 }  // namespace kerf::render

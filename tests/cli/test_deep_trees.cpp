@@ -54,16 +54,18 @@ TEST_CASE("a CSG tree deeper than kMaxDepth is a located error, not a crash") {
 
 TEST_CASE("a CSG tree just below kMaxDepth renders") {
     auto dir = test_dir("deep_renders");
+    // The stack is under test, not the look: --look plain keeps the
+    // 16 shadow rays of the studio's soft key out of the time bound.
     // 3,991 levels (1995 calls of two, and the leaf).
     auto r = run_kerf_bounded("render '" + write_file(dir / "alt.sdl", alternating(1995)) + "' -W 6 -H 4 -o '" +
-                                  (dir / "alt.png").string() + "' --threads 2" + kLimits,
+                                  (dir / "alt.png").string() + "' --threads 2 --look plain" + kLimits,
                               dir, 120);
     INFO(r.err);
     CHECK(r.status == 0);
     CHECK(std::filesystem::file_size(dir / "alt.png") > 0);
     // 3,991 levels, each through Embree (the largest stack per level).
     r = run_kerf_bounded("render '" + write_file(dir / "wide.sdl", wide_differences(3990)) + "' -W 16 -H 12 -o '" +
-                             (dir / "wide.png").string() + "' --threads 2" + kLimits,
+                             (dir / "wide.png").string() + "' --threads 2 --look plain" + kLimits,
                          dir, 120);
     INFO(r.err);
     CHECK(r.status == 0);

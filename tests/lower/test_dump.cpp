@@ -42,14 +42,15 @@ TEST_CASE("dump prints header, scene set-up and the indented tree") {
     CHECK(l[3].rfind("light point position=", 0) == 0);
     CHECK(l[4].rfind("light point position=", 0) == 0);
     CHECK(l[5] == "background color=[0 0 0.5]");
-    CHECK(l[6] == "material 0 color=[0.8 0.8 0.8] interior=[0.8 0.8 0.8] diffuse=0.8 specular=0.2 shininess=32 reflect=0");
-    CHECK(l[7] == "tree");
-    CHECK(l[8] == "union children=2 lo=[-1 -1.25 -1] hi=[6.25 1.25 1]");
-    CHECK(l[9] == "  difference children=2 lo=[-1 -1 -1] hi=[1 1 1]");
-    CHECK(l[10] == "    sphere r=1 leaf=0 material=0 lo=[-1 -1 -1] hi=[1 1 1] world=[1 0 0 0 | 0 1 0 0 | 0 0 1 0] at=test.sdl:3:1");
-    CHECK(l[11] == "    box min=[0 0 0] max=[1 1 1] leaf=1 material=0 lo=[0.5 0 0] hi=[1.5 1 1] world=[1 0 0 0.5 | 0 1 0 0 | 0 0 1 0] at=test.sdl:4:1");
-    CHECK(l[12].rfind("  torus R=1 r=0.25 leaf=2 material=0 lo=[3.75 -1.25 -0.25] hi=[6.25 1.25 0.25]", 0) == 0);
-    CHECK(l.size() == 13);
+    CHECK(l[6] == "ground z=-1 shadow=0.6");  // the studio look's shadow catcher: not in the tree
+    CHECK(l[7] == "material 0 color=[0.8 0.8 0.8] interior=[0.8 0.8 0.8] diffuse=0.8 specular=0.2 shininess=32 reflect=0");
+    CHECK(l[8] == "tree");
+    CHECK(l[9] == "union children=2 lo=[-1 -1.25 -1] hi=[6.25 1.25 1]");
+    CHECK(l[10] == "  difference children=2 lo=[-1 -1 -1] hi=[1 1 1]");
+    CHECK(l[11] == "    sphere r=1 leaf=0 material=0 lo=[-1 -1 -1] hi=[1 1 1] world=[1 0 0 0 | 0 1 0 0 | 0 0 1 0] at=test.sdl:3:1");
+    CHECK(l[12] == "    box min=[0 0 0] max=[1 1 1] leaf=1 material=0 lo=[0.5 0 0] hi=[1.5 1 1] world=[1 0 0 0.5 | 0 1 0 0 | 0 0 1 0] at=test.sdl:4:1");
+    CHECK(l[13].rfind("  torus R=1 r=0.25 leaf=2 material=0 lo=[3.75 -1.25 -0.25] hi=[6.25 1.25 0.25]", 0) == 0);
+    CHECK(l.size() == 14);
 }
 
 TEST_CASE("dump of an empty scene and of half-spaces") {

@@ -70,10 +70,11 @@ glm::dvec2 project(const csg::Camera& c, const glm::dvec3& p, double W, double H
 
 }  // namespace
 
-TEST_CASE("default camera: looks at the box centre from [1,-1,0.8] and frames the whole box") {
+// The plain look (--look plain); the studio look's defaults: test_studio.cpp.
+TEST_CASE("plain default camera: looks at the box centre from [1,-1,0.8] and frames the whole box") {
     GraphBuilder b;
     const auto top = b.uni({b.translate({2, 3, 4}, b.box({-1, -2, -0.5}, {3, 1, 0.5})), b.translate({-4, 0, 1}, b.sphere(0.5))});
-    const csg::Scene s = lower_to_csg(b.finish({top}));
+    const csg::Scene s = lower_to_csg(b.finish({top}), {Look::Plain});
     const csg::Aabb box = s.bounds();
     const glm::dvec3 centre = 0.5 * (box.lo + box.hi);
     CHECK(glm::length(s.camera.look_at - centre) == Approx(0).margin(1e-12));
@@ -97,9 +98,9 @@ TEST_CASE("default camera: looks at the box centre from [1,-1,0.8] and frames th
     }
 }
 
-TEST_CASE("default lights: a key light above-left of the camera and a weak headlight") {
+TEST_CASE("plain default lights: a key light above-left of the camera and a weak headlight") {
     GraphBuilder b;
-    const csg::Scene s = lower_to_csg(b.finish({b.sphere(1)}));
+    const csg::Scene s = lower_to_csg(b.finish({b.sphere(1)}), {Look::Plain});
     REQUIRE(s.lights.size() == 2);
     const csg::Camera& c = s.camera;
     const glm::dvec3 f = glm::normalize(c.look_at - c.position);

@@ -34,8 +34,11 @@ from webdriver import Browser, find_tools  # noqa: E402
 W, H, FOV, DIST = 320, 240, 40, 5
 
 
+# A light of its own: the studio look's ground would add the sphere's
+# shadow to the pixels that differ from the background.
 def scene(radius, color, error=False):
-    return ("material(color = \"%s\")\n%s\ncamera(position = [0, -%g, 0], look_at = [0, 0, 0], fov = %g);\n" %
+    return ("material(color = \"%s\")\n%s\ncamera(position = [0, -%g, 0], look_at = [0, 0, 0], fov = %g);\n"
+            "light(position = [3, -6, 5]);\n" %
             (color, "sphere(;" if error else "sphere(%g);" % radius, DIST, FOV))
 
 
