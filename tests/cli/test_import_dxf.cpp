@@ -105,7 +105,7 @@ TEST_CASE("DXF import takes origin and scale as OpenSCAD: (p - origin) * scale",
     if (const double ref = openscad_volume(dir, scad); std::isfinite(ref)) CHECK(ref == Approx(24).epsilon(1e-6));
 }
 
-TEST_CASE("open DXF paths are closed with a warning, as OpenSCAD; bad files are located errors", "[dxf]") {
+TEST_CASE("open DXF paths are closed with a warning, as OpenSCAD, bad files are located errors", "[dxf]") {
     auto dir = test_dir("dxf_bad");
     // The open chain (5,1) (6,1) (6,0) (5,0) is listed from its middle, so
     // joining must extend it both ways before closing it: a unit square.

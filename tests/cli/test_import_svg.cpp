@@ -232,7 +232,7 @@ TEST_CASE("a mixed SVG drawing measures as OpenSCAD 2021.01's import of it", "[s
     if (const double ref = reference(dir, "logo.svg"); std::isfinite(ref)) CHECK(ref == Approx(3238.61).epsilon(1e-5));
 }
 
-TEST_CASE("bad SVG files are located errors; what kerf does not draw, a warning", "[svg]") {
+TEST_CASE("bad SVG files are located errors, what kerf does not draw, a warning", "[svg]") {
     auto dir = test_dir("svg_bad");
     auto check_scad = [&](const std::string& file, const std::string& text, const std::string& args = "") {
         write_file(dir / file, text);

@@ -5,7 +5,7 @@
 
 #include "tests/cli/run_kerf.hpp"
 
-TEST_CASE("the look option: bad values and measure are usage errors; dump shows each look") {
+TEST_CASE("the look option: bad values and measure are usage errors, dump shows each look") {
     auto dir = test_dir("look_option");
     write_file(dir / "s.scad", "translate([0, 0, 2]) cube([10, 6, 1]);\n");
     const std::string s = "'" + (dir / "s.scad").string() + "'";

@@ -36,7 +36,7 @@ TEST_CASE("sampling knobs that would be ignored, and bad integrators, are usage 
     }
 }
 
-TEST_CASE("the default render anti-aliases edges; --aa off and --spp 1 do not") {
+TEST_CASE("the default render anti-aliases edges, --aa off and --spp 1 do not") {
     auto dir = test_dir("sampling_default");
     write_file(dir / "s.sdl", "camera(position = [0, -6, 2], look_at = [0, 0, 0]);\nsphere(1);\n");
     const std::string d = "'" + dir.string() + "/";

@@ -196,7 +196,7 @@ TEST_CASE("kerf watch stopped by a signal while writing leaves the old image and
     }
 }
 
-TEST_CASE("kerf render --watch is kerf watch; standard input and output and the farm flags are refused", "[watch]") {
+TEST_CASE("kerf render --watch is kerf watch, standard input and output and the farm flags are refused", "[watch]") {
     const auto dir = test_dir("watch_options");
     const auto scene = write_file(dir / "ball.sdl", "sphere(1);\n");
     Watch w(dir, {"render", scene, "--watch", "-W", "16", "-H", "12"});

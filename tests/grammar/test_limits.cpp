@@ -74,7 +74,7 @@ TEST_CASE("operator chains are limited at 16 times the nesting limit (the tree i
           "t.sdl:1:67: error: expression deeper than 16 (a chain of operators this long must be split)");
 }
 
-TEST_CASE("exactly at the limit parses; the limit is configurable", "[grammar][limits]") {
+TEST_CASE("exactly at the limit parses, the limit is configurable", "[grammar][limits]") {
     CHECK(error_of("x = " + repeat("(", 256) + "1" + repeat(")", 256) + ";") == "no error");
     CHECK(error_of(repeat("{", 256) + repeat("}", 256)) == "no error");
     CHECK(error_of(repeat("translate() ", 255) + "cube();") == "no error");

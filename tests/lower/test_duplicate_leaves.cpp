@@ -71,7 +71,7 @@ TEST_CASE("prisms of different sections are not duplicates") {
 // sphere moved back inside it): the same bits but for the pattern frame, so
 // two leaves whose checkers are half a cell apart. Merging them (the frame
 // was once left out of the comparison) painted both with the first's.
-TEST_CASE("leaves differing only in pattern frame are not duplicates; equal frames are shared") {
+TEST_CASE("leaves differing only in pattern frame are not duplicates, equal frames are shared") {
     GraphBuilder b;
     csg::Material m;
     m.color = {1, 1, 1};

@@ -49,7 +49,7 @@ TEST_CASE("projection(cut = true) commutes with the booleans and cuts boxes and 
                kPi / std::cos(kPi / 6), 1e-4);
 }
 
-TEST_CASE("projection() of unions is exact; of differences the union of sections") {
+TEST_CASE("projection() of unions is exact, of differences the union of sections") {
     // A unit cube under rotate([30, 40, 0]): the shadow's area is |n_x| + |n_y| + |n_z|, n the view axis in the cube's frame.
     const double a = kPi / 6, b = 2 * kPi / 9;
     check_area("projection() rotate([30, 40, 0]) cube(1);", std::sin(b) + std::cos(b) * (std::sin(a) + std::cos(a)), 1e-4);

@@ -120,7 +120,7 @@ TEST_CASE("half-spaces: a tilted plane clips an intersection's box exactly") {
     CHECK(s.nodes[0].bounds.lo.x == Approx(0).margin(1e-15));
 }
 
-TEST_CASE("half-spaces: subtracting a plane clips the difference's box; a plane above everything removes it") {
+TEST_CASE("half-spaces: subtracting a plane clips the difference's box, a plane above everything removes it") {
     GraphBuilder b;
     // transformed plane: the normal (0,0,1) rotated to -x: half-space x >= -0.25... then subtracted
     const auto cut = b.diff({b.sphere(1), b.translate({0.25, 0, 0}, b.rotate(-90, {0, 1, 0}, b.plane({0, 0, 1}, 0)))});
@@ -136,7 +136,7 @@ TEST_CASE("half-spaces: subtracting a plane clips the difference's box; a plane 
     CHECK(lower_to_csg(b2.finish({gone})).root == csg::kNone);
 }
 
-TEST_CASE("a plane at the top level makes the root unbounded; the camera frames the bounded leaves") {
+TEST_CASE("a plane at the top level makes the root unbounded, the camera frames the bounded leaves") {
     GraphBuilder b;
     // The plain look's camera looks at the framing box's centre (the studio
     // one frames the same box: test_studio.cpp).

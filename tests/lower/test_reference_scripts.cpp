@@ -86,7 +86,7 @@ TEST_CASE("examples/fishbowl.sdl, lens.sdl: shapes") {
     CHECK(lens.nodes[0].bounds.hi.z == Approx(0.4));
 }
 
-TEST_CASE("examples/holes.sdl: n = 40 gives 1600 holes; -D n=10 gives 100") {
+TEST_CASE("examples/holes.sdl: n = 40 gives 1600 holes, -D n=10 gives 100") {
     const csg::Scene s = lower_example("holes.sdl");
     test::check_structure(s);
     REQUIRE(s.nodes[0].op == csg::Op::Difference);

@@ -28,7 +28,7 @@ TEST_CASE("translate(t) rotate(r) s rotates first, then translates (docs/spec.md
     check_close(l.bounds.hi, {10, 1, 1});
 }
 
-TEST_CASE("object_from_world inverts world_from_object; normal_to_world is its transpose") {
+TEST_CASE("object_from_world inverts world_from_object, normal_to_world is its transpose") {
     GraphBuilder b;
     glm::dmat4 shear(1);
     shear[1][0] = 0.7;  // x += 0.7 y

@@ -48,7 +48,7 @@ TEST_CASE("the viewport variables place the camera as OpenSCAD's viewport does")
     CHECK_FALSE(c.orthographic);
 }
 
-TEST_CASE("viewport variables left unset take OpenSCAD's defaults; none set keeps kerf's framing") {
+TEST_CASE("viewport variables left unset take OpenSCAD's defaults, none set keeps kerf's framing") {
     // OpenSCAD 2021: [55, 0, 25], [0, 0, 0], 140, 22.5 for those not given.
     csg::Camera c = camera_of("$vpd = 80;\ncube(1);\n");
     same(c.position, 80.0 * back_of(55, 0, 25));

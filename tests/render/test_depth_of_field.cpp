@@ -97,7 +97,7 @@ TEST_CASE("depth of field: a sharp edge at depth d blurs over A·|d - f|/d, the 
     }
 }
 
-TEST_CASE("depth of field: the plane of focus is the pinhole image; any thread count gives the same bytes", "[render][dof]") {
+TEST_CASE("depth of field: the plane of focus is the pinhole image, any thread count gives the same bytes", "[render][dof]") {
     // A checkered wall exactly at the focal distance: every lens ray of a
     // sample meets the pinhole ray's point there, so colours agree.
     csg::Material checker;

@@ -60,7 +60,7 @@ TEST_CASE("fog: a plane at distance s keeps exp(-s/distance) of its colour, the 
     }
 }
 
-TEST_CASE("fog: none when the scene has none; same bytes on any thread count", "[render][fog]") {
+TEST_CASE("fog: none when the scene has none, same bytes on any thread count", "[render][fog]") {
     csg::Scene s = fogged_floor(3, {0.5, 0.5, 0.5});
     render::RenderOptions o;
     o.width = o.height = 8;

@@ -73,7 +73,7 @@ TEST_CASE("crops reassemble into the whole image exactly", "[render][crop]") {
     CHECK(same_bytes(whole, assembled));
 }
 
-TEST_CASE("progress reaches 1 in order; stats count the rays", "[render]") {
+TEST_CASE("progress reaches 1 in order, stats count the rays", "[render]") {
     const csg::Scene s = busy_scene();
     render::RenderOptions o;
     o.width = 100;

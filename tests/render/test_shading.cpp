@@ -53,7 +53,7 @@ TEST_CASE("a ground plane is lit by Lambert's law and shadowed below a sphere", 
     CHECK(tilted.at(5, 20, 0) == Approx(0.1 * 0.5 + 0.8 * 0.5 * std::sqrt(0.5)).epsilon(1e-5));
 }
 
-TEST_CASE("a mirror shows what it reflects; misses show the background", "[render][shading]") {
+TEST_CASE("a mirror shows what it reflects, misses show the background", "[render][shading]") {
     // Perfect mirror plane z <= 0, camera looking straight down at it through
     // nothing: the reflected ray goes straight up and hits a green ceiling box.
     const Tree t = op(Op::Union, {leaf(make_leaf(csg::PrimKind::Plane, {0, 0, 1, 0}, glm::dmat4(1.0), 0)),

@@ -139,7 +139,7 @@ TEST_CASE("OFF, AMF and 3MF cubes import as the closed unit cube", "[import]") {
     }
 }
 
-TEST_CASE("AMF objects are parts to unite; units scale in .sdl and are ignored in .scad, as OpenSCAD does",
+TEST_CASE("AMF objects are parts to unite, units scale in .sdl and are ignored in .scad, as OpenSCAD does",
           "[import]") {
     TempTree t;
     t.write("two.amf", amf(amf_object(0) + amf_object(1, {0.5, 0, 0})));
@@ -182,7 +182,7 @@ TEST_CASE("AMF objects are parts to unite; units scale in .sdl and are ignored i
                                ": <edge>: curved triangles are read flat, as OpenSCAD 2021.01 reads them");
 }
 
-TEST_CASE("3MF build items, transforms, components and units in .sdl; OpenSCAD's reading in .scad", "[import]") {
+TEST_CASE("3MF build items, transforms, components and units in .sdl, OpenSCAD's reading in .scad", "[import]") {
     TempTree t;
     write_3mf(t, "placed.3mf", mesh_3mf(1),
               "<item objectid=\"1\" transform=\"2 0 0 0 2 0 0 0 2 10 0 0\"/>"

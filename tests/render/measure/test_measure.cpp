@@ -102,7 +102,7 @@ TEST_CASE("measure: CSG counts shared volume once and cut faces as surface", "[m
     }
 }
 
-TEST_CASE("measure: the same numbers for any thread count; the error shrinks with resolution", "[measure]") {
+TEST_CASE("measure: the same numbers for any thread count, the error shrinks with resolution", "[measure]") {
     const csg::Scene s = make_scene(op(Op::Difference, {leaf(sphere(1.3)), leaf(box({-2, -2, -0.2}, {2, 2, 0.3}, rotate_deg(20, {1, 0, 0})))}));
     const auto a = run(s, 128, 1), b = run(s, 128, 2);
     CHECK(a.volume == b.volume);
