@@ -67,6 +67,7 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
     // --alpha image (transparent, as the background it stands for).
     const Shader shader(scene, tracer, options.preview ? 0 : options.max_reflect_depth, !alpha);
     const csg::Aabb shadow = alpha || aov != Aov::None ? csg::Aabb{} : ground_shadow_box(scene);
+    const bool ground_shown = !alpha && scene.ground.on;
     // The path tracer, when asked for (the preview stays Whitted's quick look).
     std::optional<PathTracer> path;
     if (options.integrator == Integrator::Path && !options.preview)
@@ -86,7 +87,17 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
     // The colour seen along (o, d); `surface` as Shader::radiance.
     auto trace = [&](const glm::dvec3& o, const glm::dvec3& d, ThreadState& ts, std::uint32_t* surface) {
         auto one = [&](std::uint32_t* id) {
-            if (path) return path->radiance(o, d, ts, id);
+            if (path) {
+                std::uint32_t seen = 0;
+                const glm::dvec3 c = path->radiance(o, d, ts, &seen);
+                if (id) *id = seen;
+                // The studio ground is a shadow catcher, not a surface that
+                // scatters: where a camera ray misses the solid, the shader
+                // that draws it answers (the same miss colour elsewhere).
+                if (seen == 0 && ground_shown)
+                    return shader.radiance(TraceRay{o, d, 0, std::numeric_limits<double>::infinity()}, 0, ts, nullptr);
+                return c;
+            }
             return shader.radiance(TraceRay{o, d, 0, std::numeric_limits<double>::infinity()}, 0, ts, id);
         };
         if (!alpha) return one(surface);

@@ -31,9 +31,18 @@ TEST_CASE("render of an empty model writes its background and warns") {
     REQUIRE(kerf::render::read_png(png.string(), p).empty());
     REQUIRE(p.width == 6);
     REQUIRE(p.height == 4);
-    // The default background, linear 0.2 grey (docs/spec.md §6), in sRGB.
-    const double srgb = 255 * (1.055 * std::pow(0.2, 1 / 2.4) - 0.055);
+    // The studio look's background (no lights in the script), linear 0.5
+    // grey (docs/language.md, "The default look"), in sRGB: no ground is
+    // drawn under nothing.
+    const double srgb = 255 * (1.055 * std::pow(0.5, 1 / 2.4) - 0.055);
     for (std::uint8_t v : p.pixels) CHECK(std::abs(v - srgb) <= 1);
+
+    // --look plain: the dark grey of docs/spec.md §6.
+    r = run_kerf("render --no-progress --look plain -W 6 -H 4 '" + scad + "' -o '" + png.string() + "'", dir);
+    CHECK(r.status == 0);
+    REQUIRE(kerf::render::read_png(png.string(), p).empty());
+    const double plain = 255 * (1.055 * std::pow(0.2, 1 / 2.4) - 0.055);
+    for (std::uint8_t v : p.pixels) CHECK(std::abs(v - plain) <= 1);
 
     for (const char* cmd : {"check", "dump"}) {
         r = run_kerf(std::string(cmd) + " '" + scad + "'", dir);

@@ -207,6 +207,35 @@ TEST_CASE("studio ground: a full shadow under a sphere, the background beyond") 
                 REQUIRE(part.pixels[(std::size_t(y - 7) * 128 + (x - 13)) * 3 + ch] == img.pixels[(std::size_t(y) * W + x) * 3 + ch]);
 }
 
+TEST_CASE("studio ground under the path tracer: the shadow catcher of the Whitted tracer") {
+    // The ground is drawn where a camera ray misses the solid, by either
+    // integrator: every pixel whose centre ray passes clear of the sphere
+    // has the Whitted value (checked against the cones above), umbra included.
+    const csg::Scene s = lower("translate([0, 0, 1]) sphere(1);");
+    REQUIRE(s.ground.on);
+    const int W = 160, H = 120;
+    render::RenderOptions o;
+    o.width = W, o.height = H, o.threads = 2, o.spp = 1, o.adaptive = false;
+    const render::Image whitted = render::render(s, o);
+    o.integrator = render::Integrator::Path;
+    const render::Image path = render::render(s, o);
+    const glm::dvec3 centre(0, 0, 1);
+    int clear = 0, shadowed = 0;
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+            const glm::dvec3 o3 = s.camera.position, d = through(s.camera, x, y, W, H);
+            const double along = glm::dot(centre - o3, d);
+            if (glm::length(o3 + along * d - centre) < 1 + 1e-3) continue;  // the sphere is (nearly) in front
+            ++clear;
+            const std::size_t i = (std::size_t(y) * W + x) * 3 + 1;
+            INFO("pixel " << x << "," << y);
+            REQUIRE(path.pixels[i] == whitted.pixels[i]);
+            shadowed += whitted.pixels[i] < 0.5 - 1e-6;
+        }
+    CHECK(clear > 5000);
+    CHECK(shadowed > 20);
+}
+
 TEST_CASE("studio ground: not in the AOVs, transparent with --alpha") {
     const csg::Scene s = lower("translate([0, 0, 1]) sphere(1);");
     render::RenderOptions o;
