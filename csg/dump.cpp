@@ -201,6 +201,7 @@ void dump(const Scene& s, std::string& out, Flush&& flush) {
         if (l.radius > 0) {
             field(out, "radius", l.radius);
             field(out, "samples", double(l.samples));
+            if (l.probe) out += " probe=5";
         }
         if (!l.shadows) out += " shadows=false";
         if (l.inverse_square) out += " attenuation=inverse_square";

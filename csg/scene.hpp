@@ -220,6 +220,10 @@ struct Light {
     // shadows, estimated with `samples` shadow rays per shading point.
     double radius = 0;
     std::uint32_t samples = 16;
+    // Probe first (the studio key light): 5 shadow rays to the sphere's rim
+    // and centre; only where they disagree the `samples` rays (docs/language.md, "The
+    // default look"; the bias in docs/quality.md).
+    bool probe = false;
     bool shadows = true;         // false: the light reaches every point facing it
     bool inverse_square = false; // intensity is at distance 1, falling as 1/d²
     // A spot: full intensity within `spot_angle` (degrees, from the axis

@@ -77,6 +77,7 @@ std::vector<csg::Light> studio_lights(const csg::Camera& camera, const csg::Aabb
     key.intensity = 1.0;
     key.radius = 0.7 * radius;
     key.samples = 16;
+    key.probe = true;  // 5 shadow rays where they agree (lit or umbra): most points
     csg::Light fill;
     fill.position = centre + 5 * radius * glm::normalize(1.0 * right + 0.5 * back + 0.4 * z);
     fill.intensity = 0.4;

@@ -176,8 +176,9 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
         const std::array<int, 4> area = centres.area();
         complete &= for_each_tile(arena, area, camera, tracer, shadow, states, part(0, 0.25), stack_need, options.cancel, [&](int x, int y, ThreadState& ts, bool traced) {
             std::uint32_t surface;
+            ts.on_ground = false;
             const glm::dvec3 c = sample(x + 0.5, y + 0.5, ts, traced, &surface);
-            centres.set(x, y, c, surface);
+            centres.set(x, y, ts.on_ground ? shader.miss() : c, surface);
             if (x >= region[0] && x < region[2] && y >= region[1] && y < region[3]) put(x, y, c, 1);
             hits = 0;
         });
@@ -193,8 +194,9 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
             bool same = true;
             for (int i = 0; i < 4; ++i) {
                 std::uint32_t surface;
+                ts.on_ground = false;
                 const glm::dvec3 c = sample(x + (i & 1), y + (i >> 1), ts, traced, &surface);
-                same = same && centres.looks_alike(x, y, c, surface, threshold);
+                same = same && centres.looks_alike(x, y, ts.on_ground ? shader.miss() : c, surface, threshold);
                 sum += c;
             }
             if (same) {
@@ -203,7 +205,9 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
             }
             ++ts.refined_pixels;
             hits = 0;
+            ts.refining = true;
             put(x, y, samples_mean(refine, x, y, ts, traced), refine.count());
+            ts.refining = false;
         });
     } else {
         complete &= for_each_tile(arena, region, camera, tracer, shadow, states, progress, stack_need, options.cancel, [&](int x, int y, ThreadState& ts, bool traced) {

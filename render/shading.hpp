@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include "csg/scene.hpp"
+#include "render/lights.hpp"
 #include "render/sampler.hpp"
 #include "render/tracer/tracer.hpp"
 
@@ -25,6 +26,14 @@ struct ThreadState {
     std::vector<Span> spans;  // the spans of a refracted or shadow ray (reused, not reallocated)
     RayCounts rays;
     std::uint64_t refined_pixels = 0;  // adaptive anti-aliasing
+    // Tracing one of a refined pixel's many samples: a probing light
+    // (csg::Light::probe) sends 4 stratified shadow rays, not 16; the
+    // pixel's mean still has 4 × its sample count.
+    bool refining = false;
+    // The last radiance() asked for a surface ended on the ground, whose
+    // shadow is soft (only the studio look has one): adaptive AA compares
+    // it as the shadowless ground, refining silhouettes, not shadow grain.
+    bool on_ground = false;
 };
 
 class Shader {
@@ -70,6 +79,12 @@ private:
     // solid lets pass (shadows; 1 for a shadowless light).
     template <class Ray>
     void light_rays(const glm::dvec3& origin, const glm::dvec3& n, ThreadState& ts, Ray&& ray) const;
+    // light_rays for a probing light (csg::Light::probe): 5 probe rays (its
+    // rim and centre), its `samples` rays only where those disagree.
+    template <class Ray>
+    void probed_rays(const csg::Light& light, const ConeBasis& cone, const SamplePattern& pattern, std::uint64_t& rng,
+                     const glm::dvec3& origin, const glm::dvec3& n, const glm::dvec3& share, ThreadState& ts,
+                     Ray&& ray) const;
     glm::dvec3 mirror(const glm::dvec3& origin, const glm::dvec3& r, const glm::dvec3& n, double roughness, int depth,
                       ThreadState& ts) const;
 
@@ -83,6 +98,7 @@ private:
     bool any_transparent_ = false;  // else shadow rays only ask whether anything is in the way
     std::vector<csg::Light> lights_;       // the scene's, directions of unit length
     std::vector<SamplePattern> patterns_;  // per light: where its shadow rays go
+    SamplePattern refining_{4};            // a probing light's, in a refined pixel's samples
 };
 
 }  // namespace kerf::render

@@ -52,6 +52,19 @@ glm::dvec3 corner(const csg::Aabb& b, int k) {
 
 }  // namespace
 
+// `img` (rendered with `o`, 160 wide, 2 threads) again with 1 thread and
+// with a crop: the same bytes.
+void same_for_threads_and_crop(const csg::Scene& s, render::RenderOptions o, const render::Image& img) {
+    o.threads = 1;
+    CHECK(render::render(s, o).pixels == img.pixels);
+    o.crop = std::array<int, 4>{13, 7, 141, 101};
+    const render::Image part = render::render(s, o);
+    for (int y = 7; y < 101; ++y)
+        for (int x = 13; x < 141; ++x)
+            for (int ch = 0; ch < 3; ++ch)
+                REQUIRE(part.pixels[(std::size_t(y - 7) * 128 + (x - 13)) * 3 + ch] == img.pixels[(std::size_t(y) * 160 + x) * 3 + ch]);
+}
+
 TEST_CASE("studio framing: the bounding box spans 80 % of the tighter image side, centred") {
     struct Case { std::string solid; double W, H; };
     for (const Case& c : {Case{"cube([100, 60, 3]);", 800, 600},            // a flat part: width-bound
@@ -197,14 +210,35 @@ TEST_CASE("studio ground: a full shadow under a sphere, the background beyond") 
 
     // Same bytes for any thread count and any crop (the ground's tiles are
     // not culled where a shadow can fall).
-    o.threads = 1;
-    CHECK(render::render(s, o).pixels == img.pixels);
-    o.crop = std::array<int, 4>{13, 7, 141, 101};
-    const render::Image part = render::render(s, o);
-    for (int y = 7; y < 101; ++y)
-        for (int x = 13; x < 141; ++x)
-            for (int ch = 0; ch < 3; ++ch)
-                REQUIRE(part.pixels[(std::size_t(y - 7) * 128 + (x - 13)) * 3 + ch] == img.pixels[(std::size_t(y) * W + x) * 3 + ch]);
+    same_for_threads_and_crop(s, o, img);
+}
+
+TEST_CASE("studio ground: adaptive AA refines the silhouette, not the soft shadow's grain, same bytes for any threads and crop") {
+    const csg::Scene s = lower("translate([0, 0, 1]) sphere(1);");
+    const int W = 160, H = 120;
+    render::RenderOptions o;
+    o.width = W, o.height = H, o.threads = 2, o.adaptive = true;
+    render::RenderStats stats;
+    const render::Image img = render::render(s, o, &stats);
+    // Pixels whose 3×3 neighbourhood of centres has both sphere and ground
+    // (the closed-form ray–sphere test): where refinement may go.
+    auto on_sphere = [&](int x, int y) {
+        const glm::dvec3 d = through(s.camera, x, y, W, H), oc = s.camera.position - glm::dvec3(0, 0, 1);
+        const double b = glm::dot(oc, d);
+        return b * b - (glm::dot(oc, oc) - 1) * glm::dot(d, d) > 0;
+    };
+    int edge = 0;
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+            int in = 0, n = 0;
+            for (int ny = std::max(0, y - 1); ny <= std::min(H - 1, y + 1); ++ny)
+                for (int nx = std::max(0, x - 1); nx <= std::min(W - 1, x + 1); ++nx, ++n) in += on_sphere(nx, ny);
+            edge += in > 0 && in < n;
+        }
+    INFO("refined " << stats.refined_pixels << ", silhouette pixels " << edge);
+    CHECK(edge > 100);
+    CHECK(stats.refined_pixels <= std::uint64_t(edge));
+    same_for_threads_and_crop(s, o, img);
 }
 
 TEST_CASE("studio ground under the path tracer: the shadow catcher of the Whitted tracer") {

@@ -67,17 +67,26 @@ double lit_fraction(glm::dvec3 p, glm::dvec3 light, double r, glm::dvec3 ball, s
     return sum / n;
 }
 
+// The soft-shadow estimates' set-up: the ball at soft_ball, a light sphere
+// of radius 1 and intensity 0.8 at soft_centre, `samples` shadow rays.
+const glm::dvec3 soft_ball(2, 0, 2), soft_centre(5, 0, 5);
+csg::Scene soft_shadow_scene(std::uint32_t samples) {
+    csg::Scene s = ground_scene(soft_ball);
+    csg::Light light;
+    light.position = soft_centre;
+    light.radius = 1;
+    light.samples = samples;
+    light.intensity = 0.8;
+    s.lights = {light};
+    return s;
+}
+
 }  // namespace
 
 TEST_CASE("a spherical light's soft shadow matches a Monte-Carlo estimate", "[render][lights]") {
-    const glm::dvec3 ball(2, 0, 2), centre(5, 0, 5);
-    csg::Scene s = ground_scene(ball);
-    csg::Light light;
-    light.position = centre;
-    light.radius = 1;
-    light.samples = 4096;
-    light.intensity = 0.8;
-    s.lights = {light};
+    const glm::dvec3 ball = soft_ball, centre = soft_centre;
+    csg::Scene s = soft_shadow_scene(4096);
+    const csg::Light light = s.lights[0];
     const render::Image im = render::render(s, centres());
     std::mt19937_64 rng(3);
     int partial = 0;
@@ -152,4 +161,35 @@ TEST_CASE("soft shadows are the same bytes for any thread count", "[render][ligh
     const render::Image two = render::render(s, o);
     REQUIRE(one.pixels.size() == two.pixels.size());
     CHECK(std::equal(one.pixels.begin(), one.pixels.end(), two.pixels.begin()));
+}
+
+TEST_CASE("a probing light (the studio key) is exact in light and umbra, near the estimate in the penumbra, and cheaper", "[render][lights]") {
+    const glm::dvec3 ball = soft_ball, centre = soft_centre;
+    csg::Scene s = soft_shadow_scene(16);
+    const csg::Light light = s.lights[0];
+    render::RenderStats all_stats, probe_stats;
+    const render::Image all = render::render(s, centres(), &all_stats);
+    s.lights[0].probe = true;
+    const render::Image probed = render::render(s, centres(), &probe_stats);
+    CHECK(probe_stats.shadow_rays < all_stats.shadow_rays);  // lit and umbra points: 5 rays, not 16
+    std::mt19937_64 rng(5);
+    double err_all = 0, err_probed = 0;
+    int n = 0, partial = 0;
+    for (int i = 0; i < 41; ++i) {
+        const glm::dvec3 p(ground_x(i), 0, 0);
+        if (glm::length(glm::dvec2(p.x - ball.x, p.y - ball.y)) < 1.05) continue;  // the ball itself is seen there
+        const double f = lit_fraction(p, centre, light.radius, ball, rng);
+        const double expected = 0.5 * (0.1 + 0.8 * f), peak = glm::normalize(centre - p).z;
+        INFO("x = " << p.x << ", lit fraction " << f);
+        if (f == 0 || f > 0.999 * lit_fraction(p, centre, light.radius, {0, 0, -100}, rng))
+            CHECK(probed.at(i, 20, 0) == all.at(i, 20, 0));  // umbra or full light: the 16 rays' value
+        CHECK(probed.at(i, 20, 0) == Approx(expected).margin(0.5 * 0.8 * peak * 6 / 16));  // within 6 of the 16 rays
+        partial += f > 0.1 * peak && f < 0.9 * peak;
+        err_all += std::pow(all.at(i, 20, 0) - expected, 2);
+        err_probed += std::pow(probed.at(i, 20, 0) - expected, 2);
+        ++n;
+    }
+    CHECK(partial >= 2);
+    INFO("RMS: 16 rays " << std::sqrt(err_all / n) << ", probed " << std::sqrt(err_probed / n));
+    CHECK(err_probed <= 4 * err_all + 1e-6);  // RMS at most twice the 16 rays' (measured: 1.5×)
 }
