@@ -6,7 +6,8 @@
 //   exact where that is a circle under an affine map (a sphere, a cylinder
 //   or extruded circle cut across its axis), a polygon (a box, a mesh, a
 //   straight extrusion cut at any angle: the preimage of its section
-//   clipped to the slab, or along its axis rectangles), and otherwise the
+//   clipped to the slab, or along its axis rectangles; a uniformly tapered
+//   extrusion of one convex path, whose triangles are exact), and otherwise the
 //   section of the leaf's tessellation within the curve tolerance.
 // - cut = false, the shadow: a projection commutes with unions only, so a
 //   subtree of unions is the union of its leaves' shadows (a sphere's an
@@ -56,6 +57,39 @@ Loops polygon_loops(const csg::Polygon2& poly) {
         last = q, open = true;
     }
     return out;
+}
+
+// A uniformly tapered extrusion of one convex path (a cone or frustum
+// under --facets openscad) is a polyhedron: each side a flat trapezoid
+// (the edge and its scaled copy), the ends fans. Its triangles are exact,
+// so their section is too. Anything else: false.
+bool tapered_triangles(const graph::SceneGraph& g, const graph::Node& n, const glm::dmat4& m, std::vector<Tri>& out) {
+    if (n.p[3] != 0 || n.p[4] != 0) return false;
+    const Loops loops = polygon_loops(g.polygons[n.index]);
+    if (loops.size() != 1 || loops[0].size() < 3) return false;
+    const std::vector<glm::dvec2>& l = loops[0];
+    const std::size_t k = l.size();
+    int sign = 0;
+    for (std::size_t i = 0; i < k; ++i) {
+        const glm::dvec2 a = l[(i + 1) % k] - l[i], b = l[(i + 2) % k] - l[(i + 1) % k];
+        const double c = a.x * b.y - a.y * b.x;
+        if (c == 0) continue;
+        if (sign != 0 && (c > 0) != (sign > 0)) return false;
+        sign = c > 0 ? 1 : -1;
+    }
+    const double top = 1 + n.p[2];
+    auto at = [&](glm::dvec2 q, double scale, double z) { return glm::dvec3(m * glm::dvec4(scale * q, z, 1)); };
+    for (std::size_t i = 0; i < k; ++i) {
+        const glm::dvec2 a = l[i], b = l[(i + 1) % k];
+        const glm::dvec3 a0 = at(a, 1, n.p[0]), b0 = at(b, 1, n.p[0]), a1 = at(a, top, n.p[1]), b1 = at(b, top, n.p[1]);
+        out.push_back({a0, b0, b1});
+        out.push_back({a0, b1, a1});
+        if (i + 1 < k && i > 0) {
+            out.push_back({at(l[0], 1, n.p[0]), at(a, 1, n.p[0]), at(b, 1, n.p[0])});
+            out.push_back({at(l[0], top, n.p[1]), at(a, top, n.p[1]), at(b, top, n.p[1])});
+        }
+    }
+    return true;
 }
 
 // The convex polygon `poly` clipped to lo < f < hi, f linear on it.
@@ -121,8 +155,13 @@ private:
         if (n.prim == P::Sphere) return sphere(n.p[0], m, row, cz);
         if ((n.prim == P::Cylinder || n.prim == P::Prism) && (straight(n) || across(row)))
             return extrusion(n, m, row, cz);
-        if (n.prim == P::Prism) throw SourceError(n.loc, "projection(cut = true) of a tapered or twisted extrusion "
-                                                         "across its axis is not supported yet");
+        if (n.prim == P::Prism) {
+            std::vector<Tri> tris;
+            if (!tapered_triangles(g_.graph, n, m, tris))
+                throw SourceError(n.loc, "projection(cut = true) of a twisted extrusion, or a tapered one of a "
+                                         "polygon other than one convex path, across its axis is not supported yet");
+            return prism_node(g_, section_loops(tris), loc_);
+        }
         return prism_node(g_, section_loops(leaf_triangles(g_.graph, n, m, tol_)), loc_);
     }
 
@@ -332,8 +371,12 @@ private:
                 return;
             }
         }
-        if (n.prim == P::Prism) throw SourceError(n.loc, "projection() of a tapered or twisted extrusion is not supported yet");
-        for (const Tri& t : leaf_triangles(g_.graph, n, m, tol_)) add_ccw({glm::dvec2(t.a), glm::dvec2(t.b), glm::dvec2(t.c)});
+        std::vector<Tri> tris;
+        if (n.prim == P::Prism && !tapered_triangles(g_.graph, n, m, tris))
+            throw SourceError(n.loc, "projection() of a twisted extrusion, or a tapered one of a polygon other than "
+                                     "one convex path, is not supported yet");
+        if (n.prim != P::Prism) tris = leaf_triangles(g_.graph, n, m, tol_);
+        for (const Tri& t : tris) add_ccw({glm::dvec2(t.a), glm::dvec2(t.b), glm::dvec2(t.c)});
     }
 };
 

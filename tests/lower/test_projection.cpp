@@ -63,6 +63,21 @@ TEST_CASE("projection() of unions is exact, of differences the union of sections
     check_area("projection() difference() { sphere(5); cylinder(h = 12, r = 1, center = true); }", kPi * 24, 1e-3);
 }
 
+TEST_CASE("projection() and projection(cut = true) of a tapered extrusion of one convex path are exact") {
+    // A square frustum (2 → 1 over 4) on its side: cut along its axis and its shadow, the trapezoid 6.
+    const std::string frustum = "rotate([90, 0, 0]) linear_extrude(4, center = true, scale = 0.5) square(2, center = true);";
+    check_area("projection(cut = true) " + frustum, 6, 1e-4);
+    check_area("projection() " + frustum, 6, 1e-4);
+    // Cut 0.25 off its axis: the chord across the scaled square (half-width s, 1 → 0.5) is still 2s,
+    // as 0.25 < s all the way: the same trapezoid 6.
+    check_area("projection(cut = true) translate([0, 0, 0.25]) " + frustum, 6, 1e-4);
+    // A cone (scale = 0) of a triangle, cut along its axis through a vertex and the opposite edge's midpoint:
+    // the triangle of base 1.5 (the triangle's height) and height 3.
+    check_area("projection(cut = true) rotate([90, 0, 0]) linear_extrude(3, scale = 0) "
+               "polygon([[1, 0], [-0.5, 0.8660254037844386], [-0.5, -0.8660254037844386]]);",
+               0.5 * 1.5 * 3, 1e-4);
+}
+
 TEST_CASE("projection() matches OpenSCAD on its own example mesh") {
     const std::string stl = "/usr/share/openscad/examples/Basics/projection.stl";  // the openscad test package
     if (!std::ifstream(stl)) return;  // OpenSCAD not installed: scripts/setup.sh installs it for the tests
@@ -75,4 +90,10 @@ TEST_CASE("projection: bad input is a located error") {
     REQUIRE_THROWS_WITH(test::lowered("projection() square(1);"), Catch::Contains("projects 3D solids, not 2D shapes"));
     REQUIRE_THROWS_WITH(test::lowered("projection() paraboloid(1, 1);"), Catch::Contains("not supported yet"));
     REQUIRE_THROWS_WITH(test::lowered("projection() hull() { sphere(1); cube(2); }"), Catch::Contains("not supported yet"));
+    // Twisted or tapered non-convex sides are not flat: still an error, naming what works.
+    REQUIRE_THROWS_WITH(test::lowered("projection() linear_extrude(2, twist = 90) square(1);"),
+                        Catch::Contains("a twisted extrusion, or a tapered one of a polygon other than one convex path"));
+    REQUIRE_THROWS_WITH(test::lowered("projection(cut = true) rotate([90, 0, 0]) linear_extrude(2, scale = 0.5) "
+                                      "polygon([[0, 0], [2, 0], [1, 0.5], [2, 1], [0, 1]]);"),
+                        Catch::Contains("not supported yet"));
 }
