@@ -6,7 +6,7 @@
 
 #include "tests/cli/run_kerf.hpp"
 
-TEST_CASE("--quality renders the bytes of its documented knobs; explicit knobs override it") {
+TEST_CASE("each --quality preset renders the bytes of its documented knobs, and explicit knobs override it") {
     auto dir = test_dir("quality_presets");
     // Two mirrors facing each other: the reflection depth shows in the pixels.
     write_file(dir / "s.sdl",
