@@ -2,6 +2,7 @@
 
 #include "cli/farm_options.hpp"
 #include "cli/parse_number.hpp"
+#include "cli/quality_preset.hpp"
 #include "cli/view/guard.hpp"
 
 #include <algorithm>
@@ -17,7 +18,8 @@ namespace {
 // Options that shape an image: `kerf measure` writes none and refuses them.
 bool is_image_option(const std::string& a) {
     for (const char* f : {"-o", "-W", "-H", "--spp", "--aa", "--aa-samples", "--aa-threshold", "--seed", "--preview",
-                          "--max-depth", "--watch", "--crop", "--aov", "--stats", "--alpha", "--integrator", "--look"})
+                          "--max-depth", "--watch", "--crop", "--aov", "--stats", "--alpha", "--integrator", "--look",
+                          "--quality"})
         if (a == f) return true;
     return false;
 }
@@ -77,6 +79,8 @@ const char* usage_text() {
            "                        [--preview] [--aov depth|normal|hits] [--alpha] [--stats] [--no-progress]\n"
            "                        [-D name=value ...] [-I dir ...] [--crop x0,y0,x1,y1]\n"
            "                        [--seed N] [--precision double|float] [--base DIR]\n"
+           "                        [--quality draft|good|final]  (a bundle of the sampling knobs; good is\n"
+           "                                          the defaults; an explicit knob beside it wins)\n"
            "                        [--integrator whitted|path]  (path: --spp 64 by default)\n"
            "                        [--look studio|plain]  (a script without camera, lights or background)\n"
            "                        [--max-depth 4]  (reflections and refractions per ray, 0..32;\n"
@@ -129,6 +133,8 @@ Options parse_options(const std::vector<std::string>& args) {
     o.render.adaptive = true;  // --aa auto is the default
     std::string aa_flag, aa_knob, spp_flag;  // as given, to refuse contradictions
     int max_depth = -1;                      // --max-depth as given: the chosen integrator's
+    bool aa_samples_given = false, aa_threshold_given = false;
+    const QualityPreset* quality = find_quality_preset("good");  // --quality; explicit knobs override it
     std::string image_flag;  // the first option that only an image uses (refused by measure)
     for (std::size_t i = 1; i < args.size(); ++i) {
         const std::string& a = args[i];
@@ -153,9 +159,15 @@ Options parse_options(const std::vector<std::string>& args) {
         } else if (a == "--aa-samples") {
             o.render.aa_samples = parse_int<int>(a, value(), 2, 4096);
             aa_knob = a;
+            aa_samples_given = true;
         } else if (a == "--aa-threshold") {
             o.render.aa_threshold = parse_fraction(a, value());
             aa_knob = a;
+            aa_threshold_given = true;
+        } else if (a == "--quality") {
+            const std::string& v = value();
+            quality = find_quality_preset(v);
+            if (!quality) throw UsageError("--quality expects draft, good or final, got '" + v + "'");
         }
         else if (a == "--resolution" && o.command == Command::Measure) {
             o.measure.resolution = parse_int<int>(a, value(), 8, 16384);
@@ -252,11 +264,16 @@ Options parse_options(const std::vector<std::string>& args) {
                              " traces one Whitted ray through each pixel centre; drop --integrator path");
         o.render.adaptive = false;
         o.eval.path_integrator = true;
-        if (spp_flag.empty()) o.render.spp = 64;
-        if (max_depth >= 0) o.render.max_path_depth = max_depth;
-    } else if (max_depth >= 0) {
-        o.render.max_reflect_depth = max_depth;
+        if (spp_flag.empty()) o.render.spp = quality->path_spp;
+        o.render.max_path_depth = max_depth >= 0 ? max_depth : quality->max_path_depth;
+    } else {
+        o.render.max_reflect_depth = max_depth >= 0 ? max_depth : quality->max_reflect_depth;
     }
+    // The preset's anti-aliasing knobs fill only what was not given; under
+    // --spp or --aa off they go unused, which is the preset's business, not
+    // a contradiction on the command line.
+    if (!aa_samples_given) o.render.aa_samples = quality->aa_samples;
+    if (!aa_threshold_given) o.render.aa_threshold = quality->aa_threshold;
     // Sampling: adaptive unless --spp, --aa off, --preview or an AOV; a knob
     // that would then be ignored is an error, never silence.
     if (aa_flag == "--aa auto" && !spp_flag.empty())
