@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer target over parse + evaluate + lower + render with clang and ASan/UBSan
 # into build-fuzz/, then runs it for the given number of seconds (default 60)
-# from the seed corpus (examples/, stdlib/, tests/fuzz/corpus/, tests/scripts/).
+# from the seed corpus (examples/, stdlib/, tests/fuzz/corpus/, tests/scripts/),
+# each input as a .sdl and as a .scad file.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-60}"
@@ -10,8 +11,12 @@ cmake --build build-fuzz -j"$(nproc)" --target kerf_fuzz_eval
 corpus=$(mktemp -d)
 trap 'rm -rf "$corpus"' EXIT
 cp examples/*.sdl stdlib/*.sdl tests/fuzz/corpus/* "$corpus"/ 2>/dev/null || true
-# The golden scripts (tests/scripts/, the fuzz regressions among them) seed it too.
-find tests/scripts -name '*.sdl' | while read -r f; do cp "$f" "$corpus/scripts_${f//\//_}"; done
+# The golden scripts (tests/scripts/, the fuzz regressions among them, the
+# .scad ones in OpenSCAD's dialect) seed it too; each input runs in both
+# dialects (tests/fuzz/fuzz_eval.cpp). OpenSCAD's own examples are not
+# seeds: some take seconds under the sanitizers (Advanced/GEB.scad, 2 s
+# without them), past the timeout that catches hangs.
+find tests/scripts -name '*.sdl' -o -name '*.scad' | while read -r f; do cp "$f" "$corpus/scripts_${f//\//_}"; done
 # fontconfig's process-lifetime state is not a leak (tests/fuzz/lsan.supp).
 export LSAN_OPTIONS="suppressions=$(pwd)/tests/fuzz/lsan.supp${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
 echo "fuzzing parse + evaluate + lower + render for ${seconds}s" >&2

@@ -1,6 +1,9 @@
 // libFuzzer entry point: arbitrary bytes are parsed, evaluated and lowered
 // to csg::Scene (what `kerf check` does) under small limits, so each input finishes in milliseconds and a
 // runaway loop or recursion surfaces as the located limit error it must be.
+// Every input runs twice: as a strict `.sdl` script and as a lenient `.scad`
+// file (OpenSCAD's dialect: undef and warnings where `.sdl` stops), since
+// the two take different paths through evaluation.
 // A scene that lowers is then rendered, 8×6 pixels on one thread with the
 // default adaptive sampling, so tracer crashes are found here, not by users:
 // a render must never throw for a scene lowering accepted.
@@ -28,14 +31,12 @@ kerf::EvalOptions small_limits() {
     return o;
 }
 
-}  // namespace
-
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+void run(const std::uint8_t* data, std::size_t size, const char* path) {
     static const kerf::EvalOptions options = small_limits();
     auto file = std::make_shared<kerf::SourceFile>();
-    // A path inside a folder with no .sdl files, so relative include/use
-    // resolve to nothing (a missing file error) rather than to the corpus.
-    file->path = "/nonexistent-kerf-fuzz/input.sdl";
+    // A path inside a folder with no scene files, so relative include/use
+    // resolve to nothing (a missing file) rather than to the corpus.
+    file->path = path;
     file->text.assign(reinterpret_cast<const char*>(data), size);
     try {
         // Lowering sees only graphs the evaluator accepted, so fuzzing it
@@ -50,5 +51,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     } catch (const kerf::SourceError&) {
     } catch (const kerf::IoError&) {
     }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    run(data, size, "/nonexistent-kerf-fuzz/input.sdl");
+    run(data, size, "/nonexistent-kerf-fuzz/input.scad");
     return 0;
 }
