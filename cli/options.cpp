@@ -9,7 +9,9 @@
 #include <cctype>
 #include <charconv>
 #include <cstdint>
+#include <initializer_list>
 #include <limits>
+#include <utility>
 
 namespace kerf::cli {
 
@@ -47,6 +49,21 @@ double parse_real(const std::string& flag, const std::string& text, double lo, d
 
 double parse_fraction(const std::string& flag, const std::string& text) {
     return parse_real(flag, text, 0, 1, "from 0 to 1");
+}
+
+// The value of a flag that names one of a few choices, or a usage error
+// listing them ("--look expects studio or plain, got 'x'").
+template <class T>
+T parse_choice(const std::string& flag, const std::string& text,
+               std::initializer_list<std::pair<const char*, T>> choices) {
+    std::string names;
+    for (std::size_t i = 0; i < choices.size(); ++i) {
+        const auto& [name, value] = choices.begin()[i];
+        if (text == name) return value;
+        if (i > 0) names += i + 1 == choices.size() ? " or " : ", ";
+        names += name;
+    }
+    throw UsageError(flag + " expects " + names + ", got '" + text + "'");
 }
 
 std::array<int, 4> parse_crop(const std::string& text) {
@@ -183,12 +200,9 @@ Options parse_options(const std::vector<std::string>& args) {
         }
         else if (a == "--threads") o.render.threads = parse_int<int>(a, value(), 0, 1024);
         else if (a == "--max-depth") max_depth = parse_int<int>(a, value(), 0, 32);
-        else if (a == "--integrator") {
-            const std::string& v = value();
-            if (v == "whitted") o.render.integrator = render::Integrator::Whitted;
-            else if (v == "path") o.render.integrator = render::Integrator::Path;
-            else throw UsageError("--integrator expects whitted or path, got '" + v + "'");
-        }
+        else if (a == "--integrator")
+            o.render.integrator = parse_choice(a, value(), {std::pair{"whitted", render::Integrator::Whitted},
+                                                            std::pair{"path", render::Integrator::Path}});
         else if (a == "--seed") o.render.seed = parse_int<std::uint64_t>(a, value(), 0, UINT64_MAX);
         else if (a == "--preview") o.render.preview = true;
         else if (a == "--watch" && (o.command == Command::Render || o.command == Command::Watch)) o.command = Command::Watch;
@@ -201,33 +215,20 @@ Options parse_options(const std::vector<std::string>& args) {
         else if (a == "--alpha") o.render.alpha = render::Alpha::Straight;  // the format settles which (below)
         else if (a == "--no-progress") o.progress = false;
         else if (a == "--crop") o.render.crop = parse_crop(value());
-        else if (a == "--aov") {
-            const std::string& v = value();
-            if (v == "depth") o.render.aov = render::Aov::Depth;
-            else if (v == "normal") o.render.aov = render::Aov::Normal;
-            else if (v == "hits") o.render.aov = render::Aov::Hits;
-            else throw UsageError("--aov expects depth, normal or hits, got '" + v + "'");
-        } else if (a == "--look") {
-            const std::string& v = value();
-            if (v == "studio") o.look = Look::Studio;
-            else if (v == "plain") o.look = Look::Plain;
-            else throw UsageError("--look expects studio or plain, got '" + v + "'");
-        } else if (a == "--precision") {
-            const std::string& v = value();
-            if (v == "double") o.render.double_precision = true;
-            else if (v == "float") o.render.double_precision = false;
-            else throw UsageError("--precision expects double or float, got '" + v + "'");
-        } else if (a == "-D") parse_define(value(), o);
+        else if (a == "--aov")
+            o.render.aov = parse_choice(a, value(), {std::pair{"depth", render::Aov::Depth},
+                                                     std::pair{"normal", render::Aov::Normal},
+                                                     std::pair{"hits", render::Aov::Hits}});
+        else if (a == "--look")
+            o.look = parse_choice(a, value(), {std::pair{"studio", Look::Studio}, std::pair{"plain", Look::Plain}});
+        else if (a == "--precision")
+            o.render.double_precision = parse_choice(a, value(), {std::pair{"double", true}, std::pair{"float", false}});
+        else if (a == "-D") parse_define(value(), o);
         else if (a.size() > 2 && a.rfind("-D", 0) == 0) parse_define(a.substr(2), o);
         else if (a == "--base") o.base = value();
-        else if (a == "--facets") {
-            // docs/spec.md §11: what $fn, $fa and $fs do to curves.
-            const std::string& v = value();
-            if (v == "auto") o.eval.facets = FacetMode::Auto;
-            else if (v == "exact") o.eval.facets = FacetMode::Exact;
-            else if (v == "openscad") o.eval.facets = FacetMode::OpenScad;
-            else throw UsageError("--facets expects auto, exact or openscad, got '" + v + "'");
-        }
+        else if (a == "--facets")  // docs/spec.md §11: what $fn, $fa and $fs do to curves
+            o.eval.facets = parse_choice(a, value(), {std::pair{"auto", FacetMode::Auto}, std::pair{"exact", FacetMode::Exact},
+                                                      std::pair{"openscad", FacetMode::OpenScad}});
         else if (a == "--curve-tolerance")
             o.eval.curve_tolerance = parse_real(a, value(), 1e-9, 0.1, "from 1e-9 to 0.1");
         else if (a == "-I") o.eval.include_dirs.push_back(value());

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <limits>
 
 #include "render/hemisphere.hpp"
@@ -31,15 +30,6 @@ SphereView sphere_view(const csg::Light& light, const glm::dvec3& l, double dist
     const double solid_angle = 2 * M_PI * (1 - std::sqrt(std::max(0.0, 1 - s * s)));
     return {solid_angle, M_PI * arriving(light, -l, dist) / solid_angle};
 }
-
-void mix_bits(std::uint64_t& h, const glm::dvec3& v) {
-    for (int i = 0; i < 3; ++i) {
-        std::uint64_t bits;
-        std::memcpy(&bits, &v[i], sizeof bits);
-        h ^= bits;
-        splitmix64(h);
-    }
-}
 }  // namespace
 
 PathTracer::PathTracer(const csg::Scene& scene, const CsgTracer& tracer, int max_depth, std::uint64_t seed,
@@ -51,12 +41,6 @@ PathTracer::PathTracer(const csg::Scene& scene, const CsgTracer& tracer, int max
         lights_.push_back(l);
         any_sphere_ |= !l.directional && l.radius > 0 && l.shadows;
     }
-}
-
-const csg::Material& PathTracer::material_of(std::uint32_t leaf) const {
-    static const csg::Material fallback;
-    const std::uint32_t i = scene_.leaves[leaf].material;
-    return i < scene_.materials.size() ? scene_.materials[i] : fallback;
 }
 
 int PathTracer::light_hit(const glm::dvec3& origin, const glm::dvec3& d, double& tmax) const {
@@ -201,12 +185,10 @@ glm::dvec3 PathTracer::radiance(const glm::dvec3& o, const glm::dvec3& d_in, Thr
         add_fog(hit.t);
         const glm::dvec3 p = ro + hit.t * rd;
         const glm::dvec3 n = facing(hit, p);
-        const csg::Material& m = material_of(hit.surface.mat_leaf);
+        const csg::Material& m = leaf_material(scene_, hit.surface.mat_leaf);
         L += beta * m.emission;
         if (depth >= max_depth_) break;
-        const glm::dvec3 albedo = hit.surface.cut
-                                      ? m.interior
-                                      : pattern_color(m, scene_.material_frames[scene_.leaves[hit.surface.mat_leaf].material_frame], p);
+        const glm::dvec3 albedo = surface_albedo(scene_, m, hit.surface.mat_leaf, hit.surface.cut, p);
         const double off = tracer_.surface_offset(hit, p);
         const glm::dvec3 origin = p + off * n;
         // One lobe, picked with its share of the surface (shading.cpp's

@@ -33,7 +33,6 @@ public:
     glm::dvec3 radiance(const glm::dvec3& o, const glm::dvec3& d, ThreadState& ts, std::uint32_t* surface) const;
 
 private:
-    const csg::Material& material_of(std::uint32_t leaf) const;
     // Light arriving at `origin` (offset off a diffuse surface of normal n,
     // reflectance rho) from every light by next-event estimation.
     glm::dvec3 next_event(const glm::dvec3& origin, const glm::dvec3& n, const glm::dvec3& rho, std::uint64_t& rng,

@@ -57,17 +57,22 @@ inline bool view_light(const csg::Light& light, const glm::dvec3& origin, LightV
     return v.k > 0;
 }
 
+// Stirs the bits of v into the generator state h.
+inline void mix_bits(std::uint64_t& h, const glm::dvec3& v) {
+    for (int i = 0; i < 3; ++i) {
+        std::uint64_t bits;
+        std::memcpy(&bits, &v[i], sizeof bits);
+        h ^= bits;
+        splitmix64(h);
+    }
+}
+
 // A generator for the shadow rays at one shading point: seeded by the
 // point's bits and the light, so a pixel's value depends only on its own
 // rays, never on the thread that traced it or the order of pixels.
 inline std::uint64_t shading_rng(const glm::dvec3& p, std::size_t light) {
     std::uint64_t h = 0x243F6A8885A308D3ull ^ light;
-    for (int i = 0; i < 3; ++i) {
-        std::uint64_t bits;
-        std::memcpy(&bits, &p[i], sizeof bits);
-        h ^= bits;
-        splitmix64(h);
-    }
+    mix_bits(h, p);
     return h;
 }
 

@@ -37,4 +37,20 @@ inline glm::dvec3 pattern_color(const csg::Material& m, const csg::Affine& mater
     return m.color + v * (m.color2 - m.color);
 }
 
+// The material of `leaf` (a scene without materials: the default light grey).
+inline const csg::Material& leaf_material(const csg::Scene& scene, std::uint32_t leaf) {
+    static const csg::Material fallback;
+    const std::uint32_t i = scene.leaves[leaf].material;
+    return i < scene.materials.size() ? scene.materials[i] : fallback;
+}
+
+// The colour a surface of material m (the material of leaf `mat_leaf`)
+// shows at p: a cut face the solid's interior colour, unpatterned; else
+// the pattern's or texture's colour there.
+inline glm::dvec3 surface_albedo(const csg::Scene& scene, const csg::Material& m, std::uint32_t mat_leaf, bool cut,
+                                 const glm::dvec3& p) {
+    if (cut) return m.interior;
+    return pattern_color(m, scene.material_frames[scene.leaves[mat_leaf].material_frame], p);
+}
+
 }  // namespace kerf::render

@@ -67,7 +67,6 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
     // --alpha image (transparent, as the background it stands for).
     const Shader shader(scene, tracer, options.preview ? 0 : options.max_reflect_depth, !alpha);
     const csg::Aabb shadow = alpha || aov != Aov::None ? csg::Aabb{} : ground_shadow_box(scene);
-    const bool ground_shown = !alpha && scene.ground.on;
     // The path tracer, when asked for (the preview stays Whitted's quick look).
     std::optional<PathTracer> path;
     if (options.integrator == Integrator::Path && !options.preview)
@@ -93,9 +92,8 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
                 if (id) *id = seen;
                 // The studio ground is a shadow catcher, not a surface that
                 // scatters: where a camera ray misses the solid, the shader
-                // that draws it answers (the same miss colour elsewhere).
-                if (seen == 0 && ground_shown)
-                    return shader.radiance(TraceRay{o, d, 0, std::numeric_limits<double>::infinity()}, 0, ts, nullptr);
+                // draws it (elsewhere the same miss colour as the path's).
+                if (seen == 0) return shader.missed(TraceRay{o, d, 0, std::numeric_limits<double>::infinity()}, ts);
                 return c;
             }
             return shader.radiance(TraceRay{o, d, 0, std::numeric_limits<double>::infinity()}, 0, ts, id);

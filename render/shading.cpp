@@ -46,11 +46,7 @@ Shader::Shader(const csg::Scene& scene, const CsgTracer& tracer, int max_depth, 
     for (const csg::Material& m : scene.materials) any_transparent_ |= m.transparency > 0;
 }
 
-const csg::Material& Shader::material_of(std::uint32_t leaf) const {
-    static const csg::Material fallback;  // a scene without materials: light grey
-    const std::uint32_t i = scene_.leaves[leaf].material;
-    return i < scene_.materials.size() ? scene_.materials[i] : fallback;
-}
+const csg::Material& Shader::material_of(std::uint32_t leaf) const { return leaf_material(scene_, leaf); }
 
 glm::dvec3 Shader::transmitted(const TraceRay& ray, ThreadState& ts) const {
     ++ts.rays.shadow;
@@ -122,6 +118,14 @@ glm::dvec3 Shader::inside(const glm::dvec3& p, const glm::dvec3& d, const csg::M
     if (f < 1) c += (1 - f) * radiance(TraceRay{q - off * n, refract_direction(d, n, m.ior, cos_i, cos_t), 0, inf}, depth, ts);
     if (f > 1e-9 && depth < max_depth_) c += f * inside(q, mirror_direction(d, n), m, off, depth + 1, ts);
     return absorbed * c;
+}
+
+glm::dvec3 Shader::missed(const TraceRay& ray, ThreadState& ts) const {
+    if (ground_) {
+        const double t = ground_distance(scene_.ground, ray);
+        if (t < ray.tfar) return ground(ray.o + t * ray.d, ts);
+    }
+    return miss_;
 }
 
 glm::dvec3 Shader::radiance(const TraceRay& ray, int depth, ThreadState& ts, std::uint32_t* surface) const {
@@ -242,9 +246,7 @@ glm::dvec3 Shader::shade(const TraceRay& ray, const TraceHit& hit, int depth, Th
     glm::dvec3 n = tracer_.normal(hit, p);
     if (glm::dot(n, ray.d) > 0) n = -n;  // grazing round-off: light the side we see
     const csg::Material& m = material_of(hit.surface.mat_leaf);
-    // A cut face shows the solid's interior colour, unpatterned.
-    const glm::dvec3 albedo =
-        hit.surface.cut ? m.interior : pattern_color(m, scene_.material_frames[scene_.leaves[hit.surface.mat_leaf].material_frame], p);
+    const glm::dvec3 albedo = surface_albedo(scene_, m, hit.surface.mat_leaf, hit.surface.cut, p);
     const double off = tracer_.surface_offset(hit, p);
     const glm::dvec3 origin = p + off * n;
     const glm::dvec3 view = -glm::normalize(ray.d);

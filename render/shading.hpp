@@ -45,6 +45,9 @@ public:
     // ground: show the scene's ground (csg::Ground) if it has one; --alpha
     // renders without it (its pixels would be neither solid nor background).
     Shader(const csg::Scene& scene, const CsgTracer& tracer, int max_depth, bool ground = true);
+    // What a ray known to meet no solid sees: the ground where it crosses
+    // it (in the solid's shadow or not), else the background (or fog).
+    glm::dvec3 missed(const TraceRay& ray, ThreadState& ts) const;
     // Linear RGB seen along the ray (outside every solid); `depth` counts
     // reflections and refractions so far.
     // `surface`, if given, gets 0 for a miss, else an id of the surface the

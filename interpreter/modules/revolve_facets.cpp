@@ -76,10 +76,10 @@ void cut_wedge(GraphBuilder& g, std::size_t mark, double from, double angle, con
     g.make_node(mark, graph::NodeKind::Intersection, loc);
 }
 
-bool faceted_revolve(ModuleCall& c, const std::vector<std::uint32_t>& shapes, double angle, bool mirrored) {
+bool faceted_revolve(ModuleCall& c, const std::vector<std::uint32_t>& shapes, double angle, bool mirrored,
+                     double radius) {
     const bool full = std::abs(angle) >= 360;
     const double sweep = full ? 360 : angle;
-    const double radius = profile_radius(c, shapes);
     const int frags = openscad_fragments(c, radius, c.facet_vars());
     const int n = static_cast<int>(std::max(frags * std::abs(sweep) / 360, 1.0));
     const double step = sweep / n;
@@ -126,7 +126,7 @@ void faceted_torus(ModuleCall& c, double R, double r) {
     g.make_node(mark, graph::NodeKind::Transform, c.st.loc, static_cast<std::uint32_t>(g.graph.matrices.size() - 1));
     const std::vector<std::uint32_t> profile{g.pending.back()};
     g.pending.resize(mark);
-    faceted_revolve(c, profile, 360, false);
+    faceted_revolve(c, profile, 360, false, profile_radius(c, profile));
 }
 
 }  // namespace kerf::eval

@@ -16,14 +16,16 @@ namespace kerf::eval {
 
 // Revolves the flat nodes `shapes` (taken off the pending stack, in the
 // plane x = radius, y = height; mirrored: lying at x <= 0) by `angle`
-// degrees in OpenSCAD's steps: the fragment count from the largest |x| of
-// the profile's region and the call's $fn, $fa, $fs, times |angle|/360, at
+// degrees in OpenSCAD's steps: the fragment count from `radius`, the
+// largest |x| of the profile's region as OpenSCAD measures it (on the
+// polygon after the 2D booleans), and the call's $fn, $fa, $fs, times |angle|/360, at
 // least 1; meridians from −x for a full turn (+x when mirrored), from +x
 // (−x) for a partial one, as OpenSCAD places them. Returns false, building
 // nothing, when a step would span 180° or more (a partial angle with very
 // few fragments), where OpenSCAD's quads fold over: the caller revolves
 // exactly.
-bool faceted_revolve(ModuleCall& c, const std::vector<std::uint32_t>& shapes, double angle, bool mirrored);
+bool faceted_revolve(ModuleCall& c, const std::vector<std::uint32_t>& shapes, double angle, bool mirrored,
+                     double radius);
 
 // kerf's torus(R, r) as OpenSCAD would cut rotate_extrude() translate([R, 0]) circle(r).
 void faceted_torus(ModuleCall& c, double R, double r);

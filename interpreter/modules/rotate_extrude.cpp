@@ -168,8 +168,9 @@ void rotate_extrude(ModuleCall& c) {
     }
     Revolver rev(c, c.curve_tolerance());
     rev.mirrored = xmax <= 0 && xmin < 0;
+    const double radius = std::max(std::abs(xmin), std::abs(xmax));  // OpenSCAD's fragment radius
     if (c.facet_mode() != FacetMode::OpenScad) c.exact_curve();  // revolved exactly, not in $fn steps
-    else if (faceted_revolve(c, shapes, angle, rev.mirrored)) return;
+    else if (faceted_revolve(c, shapes, angle, rev.mirrored, radius)) return;
     for (std::uint32_t id : shapes) rev.build(id);
     g.group(mark, c.st.loc);
     // OpenSCAD sweeps from the side the profile lies on: +x, or −x when mirrored.
