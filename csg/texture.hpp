@@ -1,7 +1,7 @@
 // Image textures in the contract (docs/language.md, "Image textures"): the
 // decoded pixels a material points at, and the hook through which the
-// interpreter reads image files. The interpreter cannot link OpenImageIO
-// (render/ loads it as a module, image/oiio_module/), so the program that
+// interpreter reads image files. The interpreter cannot link the image
+// libraries (render/ loads them as modules, image/image_modules.hpp), so the program that
 // renders installs the reader (render::read_texture) before evaluating.
 #pragma once
 #include <cstdint>

@@ -1,13 +1,16 @@
 #include <sys/stat.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
+#include <filesystem>
 #include <map>
 #include <mutex>
 #include <tuple>
 
 #include "csg/srgb.hpp"
 #include "render/image/image.hpp"
-#include "render/image/oiio_loader.hpp"
+#include "render/image/image_modules.hpp"
 #include "render/image/replace_file.hpp"
 #include "render/texture.hpp"
 
@@ -53,9 +56,13 @@ std::shared_ptr<const csg::Texture> read_texture(const std::string& path, std::s
     static std::map<Key, std::shared_ptr<const csg::Texture>> cache;
     std::lock_guard lock(mutex);
     if (auto it = cache.find(key); it != cache.end()) return it->second;
-    const OiioModule* oiio = nullptr;
+    // EXR, TIFF and JPEG through their own libraries, the rest (PNG
+    // included) through OpenImageIO (image_modules.hpp).
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    const ImageModule* module = nullptr;
     try {
-        oiio = &oiio_module();
+        module = &image_module(ext);
     } catch (const ImageWriteError& e) {
         why = e.what();
         return nullptr;
@@ -64,7 +71,7 @@ std::shared_ptr<const csg::Texture> read_texture(const std::string& path, std::s
     t->path = path;
     int encoded = 0;
     char error[512] = "";
-    if (!oiio->read(path.c_str(), take, t.get(), &encoded, error, sizeof error)) {
+    if (!module->read(path.c_str(), take, t.get(), &encoded, error, sizeof error)) {
         why = "cannot read texture \"" + path + "\": " + error;
         return nullptr;
     }

@@ -9,6 +9,7 @@ set -euo pipefail
 packages=(
   g++ cmake make pkg-config
   libembree-dev libtbb-dev tao-pegtl-dev libopenimageio-dev libpng-dev zlib1g-dev libglm-dev
+  libopenexr-dev libtiff-dev libjpeg-dev   # .exr, .tif, .jpg written and read without loading OpenImageIO
   libfreetype-dev libfontconfig-dev libharfbuzz-dev fonts-liberation2   # text(): outlines, lookup, shaping, default font
   libqhull-dev   # hull(), minkowski(): convex hulls (libqhull_r)
   libpolyclipping-dev   # offset(): Clipper's polygon booleans and offsets

@@ -1,6 +1,6 @@
 // Image output: every format is encoded into memory — PNG by libpng
-// (png_file.cpp), the others by OpenImageIO, loaded only then
-// (oiio_loader.cpp) — and the bytes are written atomically and checked by
+// (png_file.cpp), EXR, TIFF and JPEG by their own libraries and the others
+// by OpenImageIO, each in a module loaded only then (image_modules.cpp) — and the bytes are written atomically and checked by
 // replace_file(), so readers never see half a file and a failed write
 // (a full disk, a signal) keeps the previous image.
 #include "render/image/image.hpp"
@@ -23,7 +23,7 @@
 #include <tbb/parallel_for.h>
 
 #include "render/image/netpbm.hpp"
-#include "render/image/oiio_loader.hpp"
+#include "render/image/image_modules.hpp"
 #include "render/image/png_file.hpp"
 #include "render/image/replace_file.hpp"
 #include "render/image/srgb_bytes.hpp"
@@ -105,7 +105,7 @@ bool same_file(const std::string& a, const std::string& b) {
            sa.st_ino == sb.st_ino;
 }
 
-// The OpenImageIO module's encoder hands the file's bytes here; they are
+// An image module's encoder hands the file's bytes here; they are
 // written (and any failure kept) before it returns.
 struct FileSink {
     explicit FileSink(const std::string& path) : target(&path) {}
@@ -144,7 +144,7 @@ void check_output_path(const std::string& path, int width, int height, const std
     const fs::path target(path);
     const std::string ext = target.extension().string();
     const std::string lower = lower_extension(target);
-    if (lower != ".png" && lower != ".pfm" && !oiio_module().can_write(path.c_str()))
+    if (lower != ".png" && lower != ".pfm" && !image_module(lower).can_write(path.c_str()))
         throw ImageWriteError("cannot write " + path + ": " +
                               (ext.empty() ? std::string("no extension to choose the image format by")
                                            : "OpenImageIO cannot write '" + ext + "' files"));
@@ -200,11 +200,11 @@ void write_image(const Image& given, const std::string& path, const PngText& tex
         if (message.empty())
             message = to_stdout ? write_stdout(file.data(), file.size()) : replace_file(path, file.data(), file.size());
     } else {
-        const OiioModule& oiio = oiio_module();
+        const ImageModule& module = image_module(ext);
         char error[512] = "";
         const void* data = as_float ? static_cast<const void*>(image.pixels.data()) : bytes;
         FileSink sink(path);
-        if (!oiio.encode(path.c_str(), data, as_float, image.width, image.height, image.channels, srgb,
+        if (!module.encode(path.c_str(), data, as_float, image.width, image.height, image.channels, srgb,
                          FileSink::receive, &sink, error, sizeof error))
             message = error[0] ? error : "write failed";
         else

@@ -6,10 +6,13 @@
 // latitude) and cylindrically; nearest against bilinear; the cache; errors.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <numbers>
 #include <vector>
+
+#include <OpenImageIO/imageio.h>
 
 #include "csg/srgb.hpp"
 #include "render/image/png_file.hpp"
@@ -71,6 +74,59 @@ TEST_CASE("a texture reads back as linear RGB, rows top first, once per file", "
     CHECK(why.find("cannot read texture") != std::string::npos);
     std::filesystem::remove(path);
     std::filesystem::remove(junk);
+}
+
+TEST_CASE("EXR, TIFF and JPEG textures read back what was written", "[render][texture]") {
+    // kerf writes them (render::write_image, its codec module), reads them
+    // through the same module; OpenImageIO writes the second set (half-float
+    // EXR, 8-bit and 16-bit TIFF), so the readers meet files they did not make.
+    const std::string dir = std::filesystem::temp_directory_path() / ("kerf_texture_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    // 32×32 in 16×16 quadrants: JPEG's blocks see flat colour but at the
+    // seams, so its quadrant centres keep their codes within a few steps.
+    render::Image im;
+    im.width = 32, im.height = 32, im.channels = 3, im.content = render::ImageContent::Color;
+    auto quadrant = [](int x, int y) { return kQuadrants[(y / 16) * 2 + x / 16]; };
+    for (int y = 0; y < 32; ++y)
+        for (int x = 0; x < 32; ++x)
+            for (int k = 0; k < 3; ++k) im.pixels.push_back(float(linear(quadrant(x, y))[k]));
+    for (const char* name : {"/q.exr", "/q.tif", "/q.jpg"}) {
+        const std::string path = dir + name;
+        render::write_image(im, path);
+        const auto t = read(path);
+        INFO(path);
+        REQUIRE(t->width == 32);
+        REQUIRE(t->height == 32);
+        if (std::string(name) != "/q.jpg") {
+            CHECK(std::equal(t->rgb.begin(), t->rgb.end(), im.pixels.begin(), im.pixels.end()));  // floats, exactly
+            continue;
+        }
+        for (int y : {8, 24})
+            for (int x : {8, 24})
+                for (int k = 0; k < 3; ++k)
+                    CHECK(csg::linear_to_srgb(t->rgb[(y * 32 + x) * 3 + k]) * 255 ==
+                          Approx(quadrant(x, y)[k]).margin(3));
+    }
+    for (const auto& [name, type] : {std::pair{"/o.exr", OIIO::TypeDesc::HALF}, std::pair{"/o8.tif", OIIO::TypeDesc::UINT8},
+                                     std::pair{"/o16.tif", OIIO::TypeDesc::UINT16}}) {
+        const std::string path = dir + name;
+        auto out = OIIO::ImageOutput::create(path);
+        REQUIRE(out);
+        const OIIO::ImageSpec spec(2, 2, 3, type);
+        std::vector<float> px;  // sRGB-encoded values for integer files, linear for EXR
+        for (const glm::ivec3& c : kQuadrants)
+            for (int k = 0; k < 3; ++k) px.push_back(type == OIIO::TypeDesc::HALF ? float(linear(c)[k]) : c[k] / 255.0f);
+        REQUIRE(out->open(path, spec));
+        REQUIRE(out->write_image(OIIO::TypeDesc::FLOAT, px.data()));
+        REQUIRE(out->close());
+        const auto t = read(path);
+        INFO(path);
+        REQUIRE(t->width == 2);
+        for (int i = 0; i < 4; ++i)
+            for (int k = 0; k < 3; ++k)
+                CHECK(t->rgb[i * 3 + k] == Approx(linear(kQuadrants[i])[k]).margin(type == OIIO::TypeDesc::HALF ? 1e-3 : 1e-6));
+    }
+    std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("planar: u = x, v = y, the image over the unit square, repeated", "[render][texture]") {

@@ -1,6 +1,7 @@
 // The only code that links OpenImageIO: a module kerf loads with dlopen when
-// an image format other than PNG is asked for, so that PNG renders never
-// load OpenImageIO's ~260 shared libraries. A C interface keeps the two
+// an image format other than PNG, PFM, EXR, TIFF and JPEG is asked for
+// (those have lighter writers: png_file.cpp, netpbm.cpp, codec_module/), so
+// that their renders never load OpenImageIO's ~260 shared libraries. A C interface keeps the two
 // sides independent of each other's C++ types.
 //
 // It never writes a file. The writers' own file handling is where disk-full

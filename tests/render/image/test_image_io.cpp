@@ -162,6 +162,63 @@ TEST_CASE("EXR and TIFF keep linear floats, +inf included", "[image_io]") {
     fs::remove_all(dir);
 }
 
+TEST_CASE("EXR and TIFF keep RGB and premultiplied RGBA floats exactly", "[image_io]") {
+    // Written by kerf's own codecs (OpenEXR, libtiff), read back by
+    // OpenImageIO: the independent side.
+    const fs::path dir = fresh_dir("rgba");
+    for (int channels : {3, 4}) {
+        const render::Image im = gradient(channels, render::ImageContent::Color);
+        for (const char* ext : {".exr", ".tif", ".tiff", ".EXR"}) {
+            const fs::path file = dir / ("c" + std::to_string(channels) + ext);
+            render::write_image(im, file.string());
+            int w, h, c;
+            OIIO::TypeDesc t;
+            const auto px = read_back(file, w, h, c, t);
+            INFO(file);
+            CHECK(w == 4);
+            CHECK(h == 3);
+            CHECK(c == channels);
+            CHECK(t == OIIO::TypeDesc::FLOAT);
+            CHECK(std::equal(px.begin(), px.end(), im.pixels.begin(), im.pixels.end()));
+        }
+    }
+    fs::remove_all(dir);
+}
+
+TEST_CASE("JPEG is 8-bit sRGB-encoded, within the codec's loss", "[image_io]") {
+    // A 32×24 colour ramp: JPEG at quality 98 keeps every code within
+    // a few steps (chroma is subsampled); read back by OpenImageIO.
+    const fs::path dir = fresh_dir("jpeg");
+    render::Image im;
+    im.width = 32, im.height = 24, im.channels = 3, im.content = render::ImageContent::Color;
+    // Smooth in the stored codes: linear values of an sRGB ramp.
+    auto linear = [](double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); };
+    for (int y = 0; y < 24; ++y)
+        for (int x = 0; x < 32; ++x)
+            im.pixels.insert(im.pixels.end(), {float(linear(x / 31.0)), float(linear(y / 23.0)), 0.5f});
+    auto srgb = [](double v) { return v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1 / 2.4) - 0.055; };
+    for (const char* name : {"a.jpg", "a.jpeg"}) {
+        render::write_image(im, (dir / name).string());
+        CHECK(slurp(dir / name).substr(0, 3) == "\xFF\xD8\xFF");  // a JPEG stream
+        int w, h, c;
+        OIIO::TypeDesc t;
+        const auto px = read_back(dir / name, w, h, c, t);
+        CHECK(w == 32);
+        CHECK(h == 24);
+        REQUIRE(c == 3);
+        CHECK(t == OIIO::TypeDesc::UINT8);
+        double worst = 0, sum = 0;
+        for (std::size_t i = 0; i < px.size(); ++i) {
+            const double d = std::abs(px[i] * 255 - std::round(255 * srgb(im.pixels[i])));
+            worst = std::max(worst, d);
+            sum += d;
+        }
+        CHECK(worst <= 8);
+        CHECK(sum / double(px.size()) < 1.5);
+    }
+    fs::remove_all(dir);
+}
+
 TEST_CASE("PFM keeps linear floats, +inf included, and reads back through OpenImageIO", "[image_io]") {
     // kerf writes PFM itself; OpenImageIO's reader (the independent side)
     // undoes the bottom-up row order and the byte order.
