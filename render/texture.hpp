@@ -1,6 +1,6 @@
 // Image textures (docs/language.md, "Image textures"): reading image files
-// once per file (EXR, TIFF, JPEG by their own libraries, other formats
-// through OpenImageIO: image/image_modules.hpp), and the colour an image gives a point
+// once per file (8-bit PNG by image/png_read.hpp, EXR, TIFF, JPEG by their
+// own libraries, other formats through OpenImageIO: image/image_modules.hpp), and the colour an image gives a point
 // of pattern space under its mapping. Pure functions of the point, so a
 // picture is the same for any thread count.
 #pragma once
@@ -13,7 +13,7 @@
 
 namespace kerf::render {
 
-// A csg::TextureReader: decodes `path` (EXR, TIFF, JPEG, or any format OpenImageIO reads;
+// A csg::TextureReader: decodes `path` (PNG, EXR, TIFF, JPEG, or any format OpenImageIO reads;
 // integer formats are taken as sRGB and decoded to linear, float formats as
 // linear), keeping it for the life of the process so a file named by many
 // materials, or by the scripts of a --watch session, is read once. A file

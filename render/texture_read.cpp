@@ -7,10 +7,12 @@
 #include <map>
 #include <mutex>
 #include <tuple>
+#include <vector>
 
 #include "csg/srgb.hpp"
 #include "render/image/image.hpp"
 #include "render/image/image_modules.hpp"
+#include "render/image/png_read.hpp"
 #include "render/image/replace_file.hpp"
 #include "render/texture.hpp"
 
@@ -56,24 +58,33 @@ std::shared_ptr<const csg::Texture> read_texture(const std::string& path, std::s
     static std::map<Key, std::shared_ptr<const csg::Texture>> cache;
     std::lock_guard lock(mutex);
     if (auto it = cache.find(key); it != cache.end()) return it->second;
-    // EXR, TIFF and JPEG through their own libraries, the rest (PNG
-    // included) through OpenImageIO (image_modules.hpp).
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    const ImageModule* module = nullptr;
-    try {
-        module = &image_module(ext);
-    } catch (const ImageWriteError& e) {
-        why = e.what();
-        return nullptr;
-    }
     auto t = std::make_shared<csg::Texture>();
     t->path = path;
-    int encoded = 0;
-    char error[512] = "";
-    if (!module->read(path.c_str(), take, t.get(), &encoded, error, sizeof error)) {
-        why = "cannot read texture \"" + path + "\": " + error;
-        return nullptr;
+    // 8-bit PNG (grey, RGB, RGBA: what most textures are) by kerf's own
+    // checked reader; EXR, TIFF and JPEG through their own libraries; the
+    // rest, and PNGs that reader refuses (palettes, 16 bits, interlacing),
+    // through OpenImageIO (image_modules.hpp), whose loading costs ~0.6 s.
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    int encoded = 1;
+    if (PngPicture png; ext == ".png" && read_png(path, png).empty()) {
+        std::vector<float> rgb(std::size_t(png.width) * png.height * 3);
+        for (std::size_t i = 0; i < rgb.size() / 3; ++i)
+            for (int c = 0; c < 3; ++c) rgb[i * 3 + c] = png.pixels[i * png.channels + (png.channels >= 3 ? c : 0)] * (1.0f / 255.0f);  // as OpenImageIO converts: the same floats
+        take(t.get(), rgb.data(), png.width, png.height);
+    } else {
+        const ImageModule* module = nullptr;
+        try {
+            module = &image_module(ext);
+        } catch (const ImageWriteError& e) {
+            why = e.what();
+            return nullptr;
+        }
+        char error[512] = "";
+        if (!module->read(path.c_str(), take, t.get(), &encoded, error, sizeof error)) {
+            why = "cannot read texture \"" + path + "\": " + error;
+            return nullptr;
+        }
     }
     if (encoded)
         for (float& c : t->rgb) c = float(csg::srgb_to_linear(c));

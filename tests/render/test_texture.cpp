@@ -76,10 +76,10 @@ TEST_CASE("a texture reads back as linear RGB, rows top first, once per file", "
     std::filesystem::remove(junk);
 }
 
-TEST_CASE("EXR, TIFF and JPEG textures read back what was written", "[render][texture]") {
+TEST_CASE("EXR, TIFF, JPEG and PNG textures read back what was written", "[render][texture]") {
     // kerf writes them (render::write_image, its codec module), reads them
     // through the same module; OpenImageIO writes the second set (half-float
-    // EXR, 8-bit and 16-bit TIFF), so the readers meet files they did not make.
+    // EXR, 8-bit and 16-bit TIFF and PNG), so the readers meet files they did not make.
     const std::string dir = std::filesystem::temp_directory_path() / ("kerf_texture_" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
     // 32×32 in 16×16 quadrants: JPEG's blocks see flat colour but at the
@@ -107,8 +107,10 @@ TEST_CASE("EXR, TIFF and JPEG textures read back what was written", "[render][te
                     CHECK(csg::linear_to_srgb(t->rgb[(y * 32 + x) * 3 + k]) * 255 ==
                           Approx(quadrant(x, y)[k]).margin(3));
     }
+    // PNG: 8-bit through kerf's own reader, 16-bit through OpenImageIO.
     for (const auto& [name, type] : {std::pair{"/o.exr", OIIO::TypeDesc::HALF}, std::pair{"/o8.tif", OIIO::TypeDesc::UINT8},
-                                     std::pair{"/o16.tif", OIIO::TypeDesc::UINT16}}) {
+                                     std::pair{"/o16.tif", OIIO::TypeDesc::UINT16}, std::pair{"/o8.png", OIIO::TypeDesc::UINT8},
+                                     std::pair{"/o16.png", OIIO::TypeDesc::UINT16}}) {
         const std::string path = dir + name;
         auto out = OIIO::ImageOutput::create(path);
         REQUIRE(out);

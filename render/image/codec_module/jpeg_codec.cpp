@@ -114,7 +114,7 @@ std::string read_jpeg(const std::string& path, Pixels& out) {
         float* o = rgb + std::size_t(d.output_scanline) * w * 3;
         JSAMPROW r = line;  // (volatile only for the jump)
         jpeg_read_scanlines(&d, &r, 1);
-        for (int i = 0; i < w * 3; ++i) o[i] = line[i] / 255.0f;
+        for (int i = 0; i < w * 3; ++i) o[i] = line[i] * (1.0f / 255.0f);  // as OpenImageIO converts: the same floats
     }
     jpeg_finish_decompress(&d);
     jpeg_destroy_decompress(&d);

@@ -140,8 +140,8 @@ std::string read_tiff(const std::string& path, Pixels& out) {
             ok = TIFFReadScanline(tif, line.data(), y, 0) >= 0;
             float* row = all.data() + std::size_t(y) * w * n;
             for (std::size_t i = 0; ok && i < std::size_t(w) * n; ++i) {
-                if (bits == 8) row[i] = line[i] / 255.0f;
-                else if (bits == 16) row[i] = reinterpret_cast<const std::uint16_t*>(line.data())[i] / 65535.0f;
+                if (bits == 8) row[i] = line[i] * (1.0f / 255.0f);  // as OpenImageIO converts
+                else if (bits == 16) row[i] = reinterpret_cast<const std::uint16_t*>(line.data())[i] * (1.0f / 65535.0f);
                 else row[i] = reinterpret_cast<const float*>(line.data())[i];
             }
         }
