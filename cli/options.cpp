@@ -21,7 +21,7 @@ namespace {
 bool is_image_option(const std::string& a) {
     for (const char* f : {"-o", "-W", "-H", "--spp", "--aa", "--aa-samples", "--aa-threshold", "--seed", "--preview",
                           "--max-depth", "--watch", "--crop", "--aov", "--stats", "--alpha", "--integrator", "--look",
-                          "--quality"})
+                          "--quality", "--progressive", "--time-limit"})
         if (a == f) return true;
     return false;
 }
@@ -99,6 +99,8 @@ const char* usage_text() {
            "                        [--quality draft|good|final]  (a bundle of the sampling knobs; good is\n"
            "                                          the defaults; an explicit knob beside it wins)\n"
            "                        [--integrator whitted|path]  (path: --spp 64 by default)\n"
+           "                        [--progressive] [--time-limit SECONDS]  (path: write OUT after each pass\n"
+           "                                          of 1, 2, 4, ... paths per pixel; start no pass after)\n"
            "                        [--look studio|plain]  (a script without camera, lights or background)\n"
            "                        [--max-depth 4]  (reflections and refractions per ray, 0..32;\n"
            "                                          path: bounces per path, default 16)\n"
@@ -205,6 +207,8 @@ Options parse_options(const std::vector<std::string>& args) {
                                                             std::pair{"path", render::Integrator::Path}});
         else if (a == "--seed") o.render.seed = parse_int<std::uint64_t>(a, value(), 0, UINT64_MAX);
         else if (a == "--preview") o.render.preview = true;
+        else if (a == "--progressive") o.progressive = true;
+        else if (a == "--time-limit") o.render.time_limit = parse_real(a, value(), 1e-9, 1e7, "of seconds from 1e-9 to 1e7");
         else if (a == "--watch" && (o.command == Command::Render || o.command == Command::Watch)) o.command = Command::Watch;
         // The dialect (docs/openscad.md): by default `.scad` files follow
         // OpenSCAD's lenient rules and everything else kerf's strict ones.
@@ -269,7 +273,17 @@ Options parse_options(const std::vector<std::string>& args) {
         o.render.max_path_depth = max_depth >= 0 ? max_depth : quality->max_path_depth;
     } else {
         o.render.max_reflect_depth = max_depth >= 0 ? max_depth : quality->max_reflect_depth;
+        if (o.progressive || o.render.time_limit > 0)
+            throw UsageError(std::string(o.progressive ? "--progressive" : "--time-limit") +
+                             " applies to --integrator path, whose paths come in passes");
     }
+    if (o.progressive && o.output == "-")
+        throw UsageError("--progressive writes the image again after every pass; -o - (standard output) is not for it");
+    if ((o.progressive || o.render.time_limit > 0) && o.farm.any())
+        throw UsageError(std::string(o.progressive ? "--progressive" : "--time-limit") +
+                         " does not apply to the farm: its frames and bands must not depend on a machine's speed");
+    if (o.progressive && o.command == Command::View)
+        throw UsageError("view always shows the path integrator's passes as they finish; drop --progressive");
     // The preset's anti-aliasing knobs fill only what was not given; under
     // --spp or --aa off they go unused, which is the preset's business, not
     // a contradiction on the command line.

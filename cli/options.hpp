@@ -34,6 +34,7 @@ struct Options {
     std::string output;  // after parsing: SCENE.png beside the scene unless -o; "-": PNG to standard output
     bool stats = false;
     bool progress = true;  // --no-progress: no progress line even on a terminal
+    bool progressive = false;  // --progressive: the path integrator writes OUT after every pass
     FarmOptions farm;
     std::vector<std::string> tiles;  // assemble: the band files (output: OUT)
     EvalOptions eval;

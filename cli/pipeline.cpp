@@ -1,5 +1,6 @@
 #include "cli/pipeline.hpp"
 
+#include <cstdio>
 #include <filesystem>
 #include <memory>
 
@@ -55,11 +56,26 @@ csg::Scene evaluate_and_lower(const Options& o, const EvalOptions& eval, Progres
 
 render::Image render_and_write(const csg::Scene& scene, const render::RenderOptions& ro, const std::string& path,
                                ProgressBar& bar, render::RenderStats* stats,
-                               const std::vector<std::pair<std::string, std::string>>& text) {
+                               const std::vector<std::pair<std::string, std::string>>& text, bool progressive) {
     bar.phase("build");
-    render::Image image = render::render(scene, ro, stats, [&bar](double f) { bar.update(f); });
+    render::RenderOptions options = ro;
+    if (progressive && ro.integrator == render::Integrator::Path) {
+        options.on_pass = [&](const render::Image& image, int paths) {
+            if (paths >= ro.spp) return;  // the last pass: written below, once
+            render::write_image(image, path, text);
+            bar.print_above([&] { std::fprintf(stderr, "kerf: wrote %s (%d of %d paths per pixel)\n", path.c_str(), paths, ro.spp); });
+        };
+    }
+    render::RenderStats own;
+    if (!stats) stats = &own;
+    render::Image image = render::render(scene, options, stats, [&bar](double f) { bar.update(f); });
     bar.phase("write");
     render::write_image(image, path, text);
+    if (ro.integrator == render::Integrator::Path && stats->paths_per_pixel < ro.spp && !ro.preview)
+        bar.print_above([&] {
+            std::fprintf(stderr, "kerf: note: --time-limit %g s reached: %s has %d of %d paths per pixel\n", ro.time_limit,
+                         path.c_str(), stats->paths_per_pixel, ro.spp);
+        });
     return image;
 }
 

@@ -176,6 +176,18 @@ private:
         quick.preview = true;
         quick.adaptive = false;
         quick.spp = 1;
+        // The path integrator's passes (1, 2, 4, ... paths per pixel) are
+        // shown as they finish; the last one is the full image.
+        if (full.integrator == render::Integrator::Path) {
+            const auto started = Clock::now();
+            full.on_pass = [&, started](const render::Image& image, int paths) {
+                if (paths >= full.spp) return;
+                render::RenderStats so_far;
+                so_far.seconds = seconds(Clock::now() - started);
+                const std::string stage = "paths " + std::to_string(paths) + "/" + std::to_string(full.spp);
+                publish(scene.camera, image, so_far, stage.c_str(), full, seconds(Clock::now() - since));
+            };
+        }
         status("rendering");
         for (const auto& [stage, ro] : {std::pair{"preview", quick}, std::pair{"full", full}}) {
             render::RenderStats stats;

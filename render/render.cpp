@@ -36,6 +36,7 @@ void check_options(const RenderOptions& o) {
         throw std::invalid_argument("adaptive anti-aliasing needs at least 2 samples and a threshold from 0 to 1");
     if (o.threads < 0) throw std::invalid_argument("thread count must not be negative");
     if (o.max_path_depth < 0) throw std::invalid_argument("path depth must not be negative");
+    if (!(o.time_limit >= 0)) throw std::invalid_argument("time limit must not be negative");
     if (o.crop) {
         const auto& c = *o.crop;
         if (c[0] < 0 || c[1] < 0 || c[2] > o.width || c[3] > o.height || c[0] >= c[2] || c[1] >= c[3])
@@ -137,6 +138,7 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
     };
 
     bool complete = true;
+    int paths_done = 0;  // the path integrator: paths per pixel in the image
     if (aov != Aov::None) {
         complete &= for_each_tile(arena, region, camera, tracer, shadow, states, progress, stack_need, options.cancel, [&](int x, int y, ThreadState& ts, bool traced) {
             aov_pixel(aov, camera, tracer, x, y, ts, traced, store.values(x, y));
@@ -162,6 +164,11 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
             }
             put(x, y, sum / double(n), n);
         });
+        // Not in passes: every sample pairs a pixel stratum with a lens one.
+        if (path) {
+            paths_done = n;
+            if (complete && !cancelled() && options.on_pass) options.on_pass(image, n);
+        }
     } else if (options.adaptive && !options.preview && !path) {
         // Centres first (about a quarter of the time), then the refinement.
         CentreSamples centres(region, options.width, options.height);
@@ -207,6 +214,49 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
             put(x, y, samples_mean(refine, x, y, ts, traced), refine.count());
             ts.refining = false;
         });
+    } else if (path) {
+        // Paths in passes (RenderOptions::on_pass): each pixel's running sum
+        // and hit count are kept between passes and continued in the same
+        // order, so the last pass ends with the very sums one pass would.
+        // Samples are taken in the order i·step mod n, so the strata of any
+        // first few spread over the pixel instead of filling its top row.
+        const int n = samples.count(), w = region[2] - region[0];
+        const bool passes = bool(options.on_pass) || options.time_limit > 0;
+        std::vector<glm::dvec3> sums(passes ? std::size_t(w) * (region[3] - region[1]) : 0);
+        std::vector<int> hit_counts(passes && alpha ? sums.size() : 0);
+        int done = 0;
+        while (done < n && complete) {
+            const int to = passes ? std::min(n, std::max(1, 2 * done)) : n;
+            auto part = [&]() -> std::function<void(double)> {
+                if (!progress) return {};
+                return [&progress, done, to, n](double f) { progress((done + (to - done) * f) / n); };
+            };
+            complete &= for_each_tile(arena, region, camera, tracer, shadow, states, part(), stack_need, options.cancel, [&](int x, int y, ThreadState& ts, bool traced) {
+                const std::size_t at = passes ? std::size_t(y - region[1]) * w + (x - region[0]) : 0;
+                hits = hit_counts.empty() ? 0 : hit_counts[at];
+                if (n == 1) {
+                    put(x, y, sample(x + 0.5, y + 0.5, ts, traced, nullptr), 1);  // the centre, as samples_mean
+                    return;
+                }
+                std::uint64_t rng = SamplePattern::pixel_rng(options.seed, x, y);
+                SamplePattern::skip(rng, done);
+                glm::dvec3 sum = passes ? sums[at] : glm::dvec3(0.0);
+                for (int j = done; j < to; ++j) {
+                    const glm::dvec2 s = samples.offset(int(std::int64_t(j) * samples.step() % n), rng);
+                    sum += sample(x + s.x, y + s.y, ts, traced, nullptr);
+                }
+                if (passes) sums[at] = sum;
+                if (!hit_counts.empty()) hit_counts[at] = hits;
+                put(x, y, sum / double(to), to);
+            });
+            done = to;
+            if (!complete || cancelled()) break;
+            if (options.on_pass) options.on_pass(image, done);
+            if (options.time_limit > 0 &&
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() >= options.time_limit)
+                break;
+        }
+        paths_done = done;
     } else {
         complete &= for_each_tile(arena, region, camera, tracer, shadow, states, progress, stack_need, options.cancel, [&](int x, int y, ThreadState& ts, bool traced) {
             hits = 0;
@@ -218,7 +268,10 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
         throw std::runtime_error("a render thread has less stack than this scene's CSG tree needs (" +
                                  std::to_string(stack_need >> 20) + " MiB): TBB's threads were started with a smaller one");
 
-    if (stats) *stats = sum_stats(states, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    if (stats) {
+        *stats = sum_stats(states, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        stats->paths_per_pixel = paths_done;
+    }
     return image;
 }
 

@@ -52,6 +52,15 @@ struct RenderOptions {
     Integrator integrator = Integrator::Whitted;
     int max_path_depth = 16;
     PathLighting path_lighting = PathLighting::Mis;  // tests compare the estimators
+    // Progressive path tracing: the paths of a pixel are traced in passes of
+    // 1, 1, 2, 4, 8, ... (a total of 1, 2, 4, 8, ... up to spp), and after
+    // each pass `on_pass` receives the whole region's image so far and the
+    // paths per pixel in it. The last pass's image is byte for byte the one
+    // a render without passes gives. time_limit > 0 (seconds, from the start
+    // of render(), the BVH build included): no pass starts after it; the image then has fewer paths
+    // (RenderStats::paths_per_pixel says how many).
+    std::function<void(const Image&, int paths_per_pixel)> on_pass;
+    double time_limit = 0;
     // Colour only: store 8-bit sRGB codes (Image::srgb8) instead of linear
     // floats, for 8-bit files: a quarter of the memory, and fresh memory is
     // expensive (the kernel clears every page; 13 % of a 2048² render).
@@ -74,6 +83,7 @@ struct RenderStats {
     std::uint64_t union_ops = 0, difference_ops = 0, intersection_ops = 0;
     std::uint64_t interval_tests = 0;  // ray–primitive intersections computed
     std::uint64_t refined_pixels = 0;  // adaptive anti-aliasing: pixels given aa_samples
+    int paths_per_pixel = 0;           // the path integrator: paths in each pixel of the image
     std::uint64_t rays() const { return primary_rays + shadow_rays + reflect_rays + refract_rays; }
 };
 

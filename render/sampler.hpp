@@ -41,6 +41,10 @@ public:
         return rng;
     }
 
+    // The generator of `rng` as it is after `samples` calls of offset():
+    // splitmix64 is a counter, and offset() draws two numbers.
+    static void skip(std::uint64_t& rng, int samples) { rng += 2 * std::uint64_t(samples) * 0x9E3779B97F4A7C15ull; }
+
     // Sample i inside the unit pixel.
     glm::dvec2 offset(int i, std::uint64_t& rng) const {
         const double jx = uniform01(rng), jy = uniform01(rng);

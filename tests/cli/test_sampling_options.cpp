@@ -27,6 +27,12 @@ TEST_CASE("sampling knobs that would be ignored, and bad integrators, are usage 
         {"--integrator path --preview", "--preview traces one Whitted ray through each pixel centre; drop --integrator path"},
         {"--integrator path --aov depth", "--aov traces one Whitted ray through each pixel centre; drop --integrator path"},
         {"--integrator path --max-depth 33", "--max-depth expects a whole number from 0 to 32, got '33'"},
+        {"--progressive", "--progressive applies to --integrator path, whose paths come in passes"},
+        {"--time-limit 5", "--time-limit applies to --integrator path, whose paths come in passes"},
+        {"--integrator path --time-limit 0", "--time-limit expects a number of seconds from 1e-9 to 1e7, got '0'"},
+        {"--integrator path --progressive -o -", "--progressive writes the image again after every pass; -o - (standard output) is not for it"},
+        {"--integrator path --time-limit 5 --tile 0/4",
+         "--time-limit does not apply to the farm: its frames and bands must not depend on a machine's speed"},
     };
     for (const auto& c : cases) {
         const auto r = run_kerf(std::string("render x.sdl ") + c.args, dir);
@@ -85,4 +91,22 @@ TEST_CASE("the path integrator warns that it ignores ambient_occlusion") {
     CHECK(path.err.find("s.sdl:1:1: warning: ambient_occlusion: does not apply to --integrator path") != std::string::npos);
     CHECK(whitted.status == 0);
     CHECK(whitted.err.find("warning") == std::string::npos);
+}
+
+TEST_CASE("--progressive writes each pass of the path integrator and ends with the bytes of a plain render") {
+    auto dir = test_dir("integrator_progressive");
+    write_file(dir / "s.sdl", "camera(position = [0, -6, 2], look_at = [0, 0, 0]);\nlight([3, -4, 5], radius = 0.5);\nsphere(1);\n");
+    const std::string s = "render '" + (dir / "s.sdl").string() + "' -W 16 -H 12 --integrator path --spp 8 -o '";
+    const auto plain = run_kerf(s + (dir / "plain.png").string() + "'", dir);
+    const auto passes = run_kerf(s + (dir / "passes.png").string() + "' --progressive", dir);
+    REQUIRE(plain.status == 0);
+    REQUIRE(passes.status == 0);
+    CHECK(slurp(dir / "plain.png") == slurp(dir / "passes.png"));
+    for (const char* line : {"(1 of 8 paths per pixel)", "(2 of 8 paths per pixel)", "(4 of 8 paths per pixel)"})
+        CHECK(passes.err.find(line) != std::string::npos);
+    CHECK(passes.err.find("(8 of 8") == std::string::npos);  // the last pass is the file itself
+    // A limit already spent: the first pass only, and a note saying so.
+    const auto limited = run_kerf(s + (dir / "limited.png").string() + "' --time-limit 1e-9", dir);
+    CHECK(limited.status == 0);
+    CHECK(limited.err.find("limited.png has 1 of 8 paths per pixel") != std::string::npos);
 }

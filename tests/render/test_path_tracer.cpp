@@ -176,3 +176,54 @@ TEST_CASE("path tracer: same bytes on 1 and 2 threads, fixed by the seed", "[ren
     o.seed = 7;
     CHECK(!same_bytes(one, render::render(s, o)));
 }
+
+TEST_CASE("path tracer: passes of 1, 2, 4 ... paths end in the bytes of one pass, and converge", "[render][path]") {
+    // The furnace again (depth 16): its exact answer measures each pass.
+    const glm::dvec3 rho{0.5, 0.65, 0.8}, emission{0.3, 0.2, 0.1};
+    csg::Material m;
+    m.color = m.interior = rho;
+    m.diffuse = 1;
+    m.emission = emission;
+    csg::Scene s = make_scene(op(csg::Op::Difference, {leaf(sphere(2)), leaf(sphere(1))}), {m});
+    s.lights.clear();
+    s.camera.position = {0, 0, 0};
+    s.camera.look_at = {1, 0.2, 0.1};
+    s.camera.fov = 90;
+    const double expected = emission.y * (1 - std::pow(rho.y, 17)) / (1 - rho.y);
+    // The root-mean-square error of channel 1 over the pixels.
+    auto rmse = [&](const render::Image& im) {
+        double sum = 0;
+        for (int y = 0; y < im.height; ++y)
+            for (int x = 0; x < im.width; ++x) sum += std::pow(im.at(x, y, 1) - expected, 2);
+        return std::sqrt(sum / (im.width * im.height));
+    };
+    render::RenderOptions o = path_options(24, 24, 64);
+    const render::Image whole = render::render(s, o);
+    for (int threads : {1, 2}) {
+        std::vector<int> counts;
+        std::vector<double> errors;
+        o.threads = threads;
+        o.on_pass = [&](const render::Image& im, int paths) {
+            counts.push_back(paths);
+            errors.push_back(rmse(im));
+        };
+        render::RenderStats stats;
+        const render::Image passed = render::render(s, o, &stats);
+        CHECK(counts == std::vector<int>{1, 2, 4, 8, 16, 32, 64});
+        CHECK(stats.paths_per_pixel == 64);
+        CHECK(same_bytes(passed, whole));
+        // Noise falls as 1/sqrt(paths): 64 paths have an eighth of one
+        // path's error; allow for the spread of 576 pixels.
+        REQUIRE(errors.size() == 7);
+        CHECK(errors.back() < 0.2 * errors.front());
+        CHECK(errors[4] < errors[0]);
+    }
+    // A time limit already reached: one pass, and the stats say so.
+    o.on_pass = nullptr;
+    o.time_limit = 1e-9;
+    render::RenderStats stats;
+    const render::Image quick = render::render(s, o, &stats);
+    CHECK(stats.paths_per_pixel == 1);
+    CHECK(stats.primary_rays == 24u * 24u);
+    CHECK(rmse(quick) > 2 * rmse(whole));
+}
