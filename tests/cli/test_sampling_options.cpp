@@ -93,7 +93,7 @@ TEST_CASE("the path integrator warns that it ignores ambient_occlusion") {
     CHECK(whitted.err.find("warning") == std::string::npos);
 }
 
-TEST_CASE("--progressive writes each pass of the path integrator and ends with the bytes of a plain render") {
+TEST_CASE("the path integrator with --progressive writes each pass and ends with the bytes of a plain render") {
     auto dir = test_dir("integrator_progressive");
     write_file(dir / "s.sdl", "camera(position = [0, -6, 2], look_at = [0, 0, 0]);\nlight([3, -4, 5], radius = 0.5);\nsphere(1);\n");
     const std::string s = "render '" + (dir / "s.sdl").string() + "' -W 16 -H 12 --integrator path --spp 8 -o '";
