@@ -55,11 +55,11 @@ csg::Scene evaluate_and_lower(const Options& o, const EvalOptions& eval, Progres
 
 render::Image render_and_write(const csg::Scene& scene, const render::RenderOptions& ro, const std::string& path,
                                ProgressBar& bar, render::RenderStats* stats,
-                               const std::vector<std::pair<std::string, std::string>>& text) {
+                               const std::vector<std::pair<std::string, std::string>>& text, int band_row) {
     bar.phase("build");
     render::Image image = render::render(scene, ro, stats, [&bar](double f) { bar.update(f); });
     bar.phase("write");
-    render::write_image(image, path, text);
+    render::write_image(image, path, text, band_row);
     return image;
 }
 

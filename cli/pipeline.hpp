@@ -37,9 +37,9 @@ csg::Scene evaluate_and_lower(const Options& o, const EvalOptions& eval, Progres
                               std::vector<Diagnostic>* warnings = nullptr);
 
 // Renders `scene` and writes it to `path` atomically, with PNG text chunks
-// `text` (the farm's metadata).
+// `text` (the farm's metadata); `band_row` as write_image()'s (a band).
 render::Image render_and_write(const csg::Scene& scene, const render::RenderOptions& ro, const std::string& path,
                                ProgressBar& bar, render::RenderStats* stats = nullptr,
-                               const std::vector<std::pair<std::string, std::string>>& text = {});
+                               const std::vector<std::pair<std::string, std::string>>& text = {}, int band_row = -1);
 
 }  // namespace kerf::cli
