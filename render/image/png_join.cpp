@@ -1,7 +1,6 @@
 #include "render/image/png_join.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <fstream>
 #include <iterator>
 
