@@ -46,6 +46,13 @@ def median_pair(rows):
     return statistics.median(r[0] for r in rows), statistics.median(r[1] for r in rows)
 
 
+def pair_ratios(a, b):
+    """Medians of the per-run ratios b/a (wall, CPU): each pair ran back to
+    back, so a drifting load cancels out of each ratio."""
+    return (statistics.median(y[0] / x[0] for x, y in zip(a, b)),
+            statistics.median(y[1] / x[1] for x, y in zip(a, b)))
+
+
 def main():
     p = argparse.ArgumentParser()
     p.add_argument("--kerf", default=os.path.join(ROOT, "build", "kerf"))
@@ -76,24 +83,32 @@ def main():
     frames_split = [[a.kerf, "render", a.scene, "-o", anim, "--threads", "1", "--frames", str(a.frames),
                      "--frame", str(i)] + fsize for i in range(1, a.frames + 1)]
     rows = {"single": [], "tiles": [], "frames_one": [], "frames_split": []}
+    assembly = []
+    load_before = os.getloadavg()[0]
     for _ in range(a.runs):  # alternating, so drifting load hits both sides alike
         rows["single"].append(timed(one, 1))
         wall, c = timed(split, 2)
         w2, c2 = timed([[a.kerf, "assemble", joined] + bands], 1)
+        assembly.append(w2)
         rows["tiles"].append((wall + w2, c + c2))
         if open(joined, "rb").read() != open(single, "rb").read():
             raise RuntimeError("the assembled image differs from the single render")
         if not a.skip_frames:
             rows["frames_one"].append(timed(frames_one, 1))
             rows["frames_split"].append(timed(frames_split, 2))
+    load_after = os.getloadavg()[0]
     s, t = median_pair(rows["single"]), median_pair(rows["tiles"])
     scene = os.path.relpath(a.scene, ROOT)
-    print(f"{scene} {a.args}, {a.runs} alternating runs, medians, 2 cores\n")
+    print(f"{scene} {a.args}, {a.runs} alternating runs, medians, 2 cores, "
+          f"load average {load_before:.1f} -> {load_after:.1f}\n")
     print("| render | wall s | CPU s | wall overhead | CPU overhead |")
     print("|---|---|---|---|---|")
     print(f"| {a.size}, one process, --threads 2 | {s[0]:.2f} | {s[1]:.2f} | | |")
     print(f"| {a.size}, {a.tiles} bands, 2 at a time + assemble | {t[0]:.2f} | {t[1]:.2f} | "
           f"{100 * (t[0] / s[0] - 1):+.1f} % | {100 * (t[1] / s[1] - 1):+.1f} % |")
+    r = pair_ratios(rows["single"], rows["tiles"])
+    print(f"\nmedian of per-run ratios, bands / one process: wall {100 * (r[0] - 1):+.1f} %, "
+          f"CPU {100 * (r[1] - 1):+.1f} %; assemble alone: median {statistics.median(assembly):.3f} s wall")
     print(f"\nthroughput: {int(w) * int(h) / t[0] / 1e6:.2f} Mpixel/s as bands")
     if a.skip_frames:
         return
@@ -101,7 +116,10 @@ def main():
     print(f"| {a.frames} frames {a.frame_size}, one process, --threads 2 | {fo[0]:.2f} | {fo[1]:.2f} | | |")
     print(f"| {a.frames} frames {a.frame_size}, one process each, 2 at a time | {fs[0]:.2f} | {fs[1]:.2f} | "
           f"{100 * (fs[0] / fo[0] - 1):+.1f} % | {100 * (fs[1] / fo[1] - 1):+.1f} % |")
-    print(f"\nthroughput: {a.frames / fs[0]:.2f} frames/s as frame jobs, {a.frames / fo[0]:.2f} in one process")
+    r = pair_ratios(rows["frames_one"], rows["frames_split"])
+    print(f"\nmedian of per-run ratios, frame jobs / one process: wall {100 * (r[0] - 1):+.1f} %, "
+          f"CPU {100 * (r[1] - 1):+.1f} %")
+    print(f"throughput: {a.frames / fs[0]:.2f} frames/s as frame jobs, {a.frames / fo[0]:.2f} in one process")
 
 
 if __name__ == "__main__":

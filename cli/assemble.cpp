@@ -10,7 +10,7 @@
 
 #include "cli/farm_key.hpp"
 #include "render/image/image.hpp"
-#include "render/image/png_read.hpp"
+#include "render/image/png_join.hpp"
 
 namespace kerf::cli {
 
@@ -18,7 +18,7 @@ namespace {
 
 struct Band {
     std::string path;
-    render::PngPicture picture;
+    render::PngBand picture;
     std::map<std::string, std::string> key;
     int k = 0, n = 0;
 };
@@ -32,7 +32,7 @@ int whole(const std::string& s) {
 Band read_band(const std::string& path) {
     Band b;
     b.path = path;
-    if (const std::string why = render::read_png(path, b.picture); !why.empty())
+    if (const std::string why = render::read_png_band(path, b.picture); !why.empty())
         throw TileError(path + ": " + why);
     for (const auto& [keyword, value] : b.picture.text)
         if (keyword == kFarmKeyword) b.key = parse_key(value);
@@ -45,6 +45,8 @@ Band read_band(const std::string& path) {
     if (slash == std::string::npos || b.k < 0 || b.n < 1 || b.k >= b.n || width < 1 || width > kMaxSide ||
         height < b.n || height > kMaxSide)
         throw TileError(path + ": not a band of a kerf render (render bands with kerf render --tile K/N)");
+    if (b.picture.first_row < 0)
+        throw TileError(path + ": has no table of its image data pieces (render it again with this kerf)");
     return b;
 }
 
@@ -65,8 +67,8 @@ std::string mismatch(const Band& first, const Band& b) {
 }  // namespace
 
 int assemble(const Options& o) {
-    // Decoding is most of the join's time: the bands are read in parallel,
-    // and their errors reported in the order given.
+    // The bands are read in parallel, and their errors reported in the order
+    // given.
     std::vector<Band> bands(o.tiles.size());
     std::vector<std::string> errors(o.tiles.size());
     tbb::parallel_for(std::size_t(0), o.tiles.size(), [&](std::size_t i) {
@@ -93,7 +95,7 @@ int assemble(const Options& o) {
                             std::to_string(n));
         by_index[std::size_t(b.k)] = &b;
         const auto rows = band_rows(height, b.k, n);
-        if (b.picture.width != width || b.picture.height != rows[1] - rows[0] ||
+        if (b.picture.width != width || b.picture.height != rows[1] - rows[0] || b.picture.first_row != rows[0] ||
             b.picture.channels != first.picture.channels || b.picture.srgb != first.picture.srgb)
             throw TileError(b.path + ": its pixels are not band " + std::to_string(b.k) + " of " + std::to_string(n) +
                             " of a " + std::to_string(width) + "x" + std::to_string(height) + " render");
@@ -109,15 +111,30 @@ int assemble(const Options& o) {
         throw TileError("bands hold 8-bit sRGB; " + o.output + " would store floats (assemble into PNG, JPEG, ...)");
     try {
         render::check_output_path(o.output, width, height, o.tiles);
+        if (render::is_png_output(o.output)) {
+            // PNG: the bands' deflated pieces joined, the very bytes a single
+            // render's encoder writes (render/image/png_join.hpp).
+            std::vector<const render::PngBand*> pictures;
+            for (const Band* b : by_index) pictures.push_back(&b->picture);
+            std::vector<unsigned char> file;
+            const render::PngBand* culprit = nullptr;
+            if (const std::string why = render::join_png_bands(file, pictures, &culprit); !why.empty()) {
+                for (const Band* b : by_index)
+                    if (&b->picture == culprit) throw TileError(b->path + ": " + why);
+                throw render::ImageWriteError("cannot write " + o.output + ": " + why);
+            }
+            render::write_encoded(file, o.output);
+            return 0;
+        }
         render::Image image;
         image.width = width, image.height = height, image.channels = first.picture.channels;
         image.content = render::ImageContent::Color;
         image.srgb8.resize(std::size_t(width) * height * std::size_t(image.channels));
-        std::size_t at = 0;
-        for (const Band* b : by_index) {
-            std::copy(b->picture.pixels.begin(), b->picture.pixels.end(), image.srgb8.data() + at);
-            at += b->picture.pixels.size();
-        }
+        const std::size_t stride = std::size_t(width) * std::size_t(image.channels);
+        for (const Band* b : by_index)
+            if (const std::string why = render::decode_band(b->picture, image.srgb8.data() + stride * b->picture.first_row);
+                !why.empty())
+                throw TileError(b->path + ": " + why);
         render::write_image(image, o.output);  // the very call a single render ends with
     } catch (const render::ImageWriteError& e) {
         std::cerr << "kerf: error: " << e.what() << '\n';

@@ -10,6 +10,7 @@
 #include "cli/progress.hpp"
 #include "cli/report.hpp"
 #include "render/image/image.hpp"
+#include "render/image/png_pieces.hpp"
 #include "render/image/png_read.hpp"
 
 namespace kerf::cli {
@@ -29,18 +30,26 @@ std::string padded(int v, int digits) {
 }
 
 // --resume: whether `path` already holds this render's output, read back
-// whole (every CRC) with the same metadata and size. Says why not when a
-// file is there but is not it.
-bool finished(const std::string& path, const std::string& text, int width, int height) {
+// whole (every CRC) with the same metadata and size, and for a band
+// (`band_row` >= 0) the table of pieces `kerf assemble` joins by. Says why
+// not when a file is there but is not it.
+bool finished(const std::string& path, const std::string& text, int width, int height, int band_row) {
     std::error_code ec;
     if (!fs::exists(path, ec)) return false;
     render::PngPicture picture;
     std::string why = render::read_png(path, picture);
     if (why.empty()) {
-        bool same = false;
-        for (const auto& [key, value] : picture.text) same = same || (key == kFarmKeyword && value == text);
+        bool same = false, table = false;
+        for (const auto& [key, value] : picture.text) {
+            same = same || (key == kFarmKeyword && value == text);
+            int row = -1;
+            std::vector<render::PieceData> pieces;
+            table = table || (key == render::kPiecesKeyword && render::parse_pieces_table(value, row, pieces) &&
+                              row == band_row);
+        }
         if (!same) why = "written by another render (scene, size, seed or options differ)";
         else if (picture.width != width || picture.height != height) why = "not the size of this render";
+        else if (band_row >= 0 && !table) why = "has no table of its image data pieces";
     }
     if (!why.empty()) {
         std::cerr << "kerf: " << path << ": " << why << "; rendering it again\n";
@@ -50,17 +59,18 @@ bool finished(const std::string& path, const std::string& text, int width, int h
     return true;
 }
 
-// Renders one frame or band to `path` unless --resume finds it finished.
+// Renders one frame or band to `path` unless --resume finds it finished;
+// `band_row`: a band's first row (write_image()), -1 for a frame.
 void render_one(const Options& o, const csg::Scene& scene, render::RenderOptions ro, const std::string& path,
-                const std::string& text) {
+                const std::string& text, int band_row = -1) {
     const auto [w, h] = output_size(ro);
-    if (o.farm.resume && finished(path, text, w, h)) return;
+    if (o.farm.resume && finished(path, text, w, h, band_row)) return;
     ro.srgb8 = render::is_8bit_output(path);
     render::RenderStats stats;
     render::Image image;
     {
         ProgressBar bar(o.progress);
-        image = render_and_write(scene, ro, path, bar, &stats, {{kFarmKeyword, text}});
+        image = render_and_write(scene, ro, path, bar, &stats, {{kFarmKeyword, text}}, band_row);
     }
     if (o.stats) print_stats(stats, image);
 }
@@ -102,7 +112,7 @@ int render_band(const Options& o) {
     ro.crop = std::array<int, 4>{0, rows[0], ro.width, rows[1]};
     const std::string n = std::to_string(f.tile) + "/" + std::to_string(f.tiles);
     // The key names the whole image; the band says which part this is.
-    render_one(o, scene, ro, path, render_key(scene, o.render, o.eval.facets) + " band=" + n);
+    render_one(o, scene, ro, path, render_key(scene, o.render, o.eval.facets) + " band=" + n, rows[0]);
     return 0;
 }
 

@@ -53,7 +53,7 @@ int run(const Options& o) {
         }
         render::RenderOptions ro = o.render;
         ro.srgb8 = render::is_8bit_output(o.output);  // colour for an 8-bit file: store its bytes directly
-        image = render_and_write(scene, ro, o.output, bar, &stats, {}, o.progressive);
+        image = render_and_write(scene, ro, o.output, bar, &stats, {}, -1, o.progressive);
     }
     if (o.stats) print_stats(stats, image);
     return kOk;

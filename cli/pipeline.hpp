@@ -37,12 +37,13 @@ csg::Scene evaluate_and_lower(const Options& o, const EvalOptions& eval, Progres
                               std::vector<Diagnostic>* warnings = nullptr);
 
 // Renders `scene` and writes it to `path` atomically, with PNG text chunks
-// `text` (the farm's metadata). `progressive`: the path integrator's image
-// is also written after each pass but the last (--progressive). A render
-// that --time-limit stopped early says how many paths it has.
+// `text` (the farm's metadata); `band_row` as write_image()'s (a band).
+// `progressive`: the path integrator's image is also written after each
+// pass but the last (--progressive). A render that --time-limit stopped
+// early says how many paths it has.
 render::Image render_and_write(const csg::Scene& scene, const render::RenderOptions& ro, const std::string& path,
                                ProgressBar& bar, render::RenderStats* stats = nullptr,
-                               const std::vector<std::pair<std::string, std::string>>& text = {},
+                               const std::vector<std::pair<std::string, std::string>>& text = {}, int band_row = -1,
                                bool progressive = false);
 
 }  // namespace kerf::cli

@@ -71,7 +71,7 @@ bool cycle(const Options& o, FileWatcher& watcher) {
                 return true;
             }
         }
-        render_and_write(scene, full, o.output, bar, nullptr, {}, o.progressive);
+        render_and_write(scene, full, o.output, bar, nullptr, {}, -1, o.progressive);
         const double total = since(start);
         bar.print_above([&] {
             if (two_steps)

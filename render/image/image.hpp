@@ -50,11 +50,20 @@ void check_output_path(const std::string& path, int width = 0, int height = 0,
 // failed write ("no space left on device") throws and leaves an existing
 // file intact and no temporary behind (replace_file.hpp). `text`: PNG tEXt
 // chunks (keyword, value) for a PNG file; other formats do not store it.
+// `band_row`: for a band of a larger render written as PNG, the full
+// image's row of the band's first row (png_file.hpp); -1 for an image.
 void write_image(const Image& image, const std::string& path,
-                 const std::vector<std::pair<std::string, std::string>>& text = {});
+                 const std::vector<std::pair<std::string, std::string>>& text = {}, int band_row = -1);
+
+// Writes a file already encoded (a PNG joined from bands) as write_image()
+// writes what it encodes: atomically, or to standard output for "-".
+void write_encoded(const std::vector<unsigned char>& file, const std::string& path);
 
 // Whether write_image() stores `path` in 8 bits (then a colour render can
 // use RenderOptions::srgb8 and lose nothing).
 bool is_8bit_output(const std::string& path);
+
+// Whether write_image() writes `path` as PNG (its extension, or "-").
+bool is_png_output(const std::string& path);
 
 }  // namespace kerf::render

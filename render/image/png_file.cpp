@@ -1,6 +1,6 @@
-// PNG output: the image data deflated in parallel bands, the chunks around
-// it by libpng, all into memory (write.cpp then replaces the file). libpng
-// reports errors by longjmp: everything between setjmp and the calls that
+// PNG output: the image data deflated in parallel pieces (png_pieces.hpp),
+// the chunks around it by libpng, all into memory (write.cpp then replaces
+// the file). libpng reports errors by longjmp: everything between setjmp and the calls that
 // may jump is plain C data (the compressed stream is built before setjmp,
 // the output vector is the caller's), so no destructor is ever skipped.
 #include "render/image/png_file.hpp"
@@ -10,14 +10,15 @@
 #include <cstring>
 
 #include <algorithm>
+#include <atomic>
 #include <new>
 #include <vector>
 
 #include <png.h>
 #include <tbb/parallel_for.h>
-#include <zlib.h>
 
 #include "render/image/png_jump.hpp"
+#include "render/image/png_pieces.hpp"
 
 namespace kerf::render {
 
@@ -42,80 +43,27 @@ void on_write(png_structp png, png_bytep data, png_size_t size) {
 
 void on_flush(png_structp) {}
 
-// One band of rows as a raw deflate segment: each row behind its filter
-// byte ("up": minus the row above; the first image row has none above).
-// Bands are deflated independently, in parallel, and concatenated into one
-// zlib stream, as pigz does: every band but the last ends with a sync flush
-// (byte aligned, no final-block bit), the last with Z_FINISH.
-struct Band {
-    std::vector<unsigned char> deflated;
-    uLong adler = 1;
-    uLong length = 0;  // filtered bytes in, for adler32_combine
-    bool ok = false;
-};
-
-void deflate_band(const std::uint8_t* pixels, std::size_t stride, int row0, int row1, bool last, Band& band) {
-    std::vector<unsigned char> filtered((stride + 1) * std::size_t(row1 - row0));
-    unsigned char* out = filtered.data();
-    for (int y = row0; y < row1; ++y) {
-        const std::uint8_t* row = pixels + stride * std::size_t(y);
-        *out++ = y == 0 ? 0 : 2;  // PNG filter type: none / up
-        if (y == 0) {
-            std::memcpy(out, row, stride);
-        } else {
-            const std::uint8_t* above = row - stride;
-            for (std::size_t i = 0; i < stride; ++i) out[i] = std::uint8_t(row[i] - above[i]);
-        }
-        out += stride;
-    }
-    band.length = uLong(filtered.size());
-    band.adler = adler32(1, filtered.data(), uInt(filtered.size()));
-    z_stream zs{};
-    // Level 1 with run-length matching: as fast as level 1 and, on renders
-    // (flat backgrounds, smooth shading), files ~40 % smaller.
-    if (deflateInit2(&zs, 1, Z_DEFLATED, -15, 8, Z_RLE) != Z_OK) return;
-    band.deflated.resize(deflateBound(&zs, uLong(filtered.size())) + 16);
-    zs.next_in = filtered.data();
-    zs.avail_in = uInt(filtered.size());
-    zs.next_out = band.deflated.data();
-    zs.avail_out = uInt(band.deflated.size());
-    const int rc = deflate(&zs, last ? Z_FINISH : Z_SYNC_FLUSH);
-    band.ok = last ? rc == Z_STREAM_END : rc == Z_OK && zs.avail_in == 0;
-    band.deflated.resize(band.deflated.size() - zs.avail_out);
-    deflateEnd(&zs);
-}
-
-// The whole zlib stream (header, bands, adler32 of everything), or empty if
+// The pieces of the image (png_pieces.hpp), deflated in parallel; false if
 // zlib failed.
-std::vector<unsigned char> deflate_image(const std::uint8_t* pixels, std::size_t stride, int height) {
-    constexpr int kRowsPerBand = 128;
-    const int bands = (height + kRowsPerBand - 1) / kRowsPerBand;
-    std::vector<Band> parts(std::size_t(bands), Band{});
-    tbb::parallel_for(0, bands, [&](int k) {
-        deflate_band(pixels, stride, k * kRowsPerBand, std::min(height, (k + 1) * kRowsPerBand), k + 1 == bands,
-                     parts[std::size_t(k)]);
+bool deflate_pieces(const std::uint8_t* pixels, int width, int height, int channels, int first_row,
+                    std::vector<std::vector<unsigned char>>& bytes, std::vector<PieceData>& pieces) {
+    const auto rows = piece_rows(first_row, height);
+    const std::size_t stride = std::size_t(width) * std::size_t(channels);
+    bytes.assign(rows.size(), {});
+    pieces.assign(rows.size(), PieceData{});
+    std::atomic<bool> ok{true};
+    tbb::parallel_for(std::size_t(0), rows.size(), [&](std::size_t k) {
+        const auto [from, to] = rows[k];
+        if (!deflate_piece(pixels + stride * std::size_t(from), width, channels, to - from, bytes[k], pieces[k]))
+            ok = false;
     });
-    std::vector<unsigned char> stream{0x78, 0x01};  // deflate, 32 KiB window, "fastest"; (0x7801 % 31 == 0)
-    uLong adler = 1;
-    for (const Band& b : parts) {
-        if (!b.ok) return {};
-        stream.insert(stream.end(), b.deflated.begin(), b.deflated.end());
-        adler = adler32_combine(adler, b.adler, z_off_t(b.length));
-    }
-    for (int shift = 24; shift >= 0; shift -= 8) stream.push_back(static_cast<unsigned char>(adler >> shift));
-    return stream;
+    return ok;
 }
 
 // Returns false with sink.message set. libpng writes the signature and the
 // header chunks; the image data is deflated above and goes in as IDAT chunks.
-bool encode_file(const std::uint8_t* pixels, int width, int height, int channels, bool srgb,
+bool encode_file(const std::vector<unsigned char>& idat, int width, int height, int channels, bool srgb,
                  std::vector<png_text>& text, ErrorSink& sink) {
-    const std::size_t stride = std::size_t(width) * std::size_t(channels);
-    const std::vector<unsigned char> idat = deflate_image(pixels, stride, height);
-    if (idat.empty()) {
-        std::snprintf(sink.message, sizeof sink.message, "compression failed");
-        return false;
-    }
     sink.file->reserve(idat.size() + 4096);  // the chunks around it are a few hundred bytes
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, static_cast<PngJump*>(&sink),
                                               png_jump_error, png_no_warning);
@@ -152,8 +100,8 @@ bool encode_file(const std::uint8_t* pixels, int width, int height, int channels
 
 }  // namespace
 
-std::string encode_png(std::vector<unsigned char>& file, const std::uint8_t* pixels, int width, int height,
-                       int channels, bool srgb, const PngText& text) {
+std::string png_from_stream(std::vector<unsigned char>& file, const std::vector<unsigned char>& idat, int width,
+                            int height, int channels, bool srgb, const PngText& text) {
     if (channels != 1 && channels != 3 && channels != 4) return "PNG holds 1, 3 or 4 channels";
     // libpng's view of `text`, built before setjmp (plain C data).
     std::vector<png_text> chunks;
@@ -169,8 +117,19 @@ std::string encode_png(std::vector<unsigned char>& file, const std::uint8_t* pix
     ErrorSink sink;
     sink.file = &file;
     file.clear();
-    return encode_file(pixels, width, height, channels, srgb, chunks, sink) ? std::string()
-                                                                            : std::string(sink.message);
+    return encode_file(idat, width, height, channels, srgb, chunks, sink) ? std::string() : std::string(sink.message);
+}
+
+std::string encode_png(std::vector<unsigned char>& file, const std::uint8_t* pixels, int width, int height,
+                       int channels, bool srgb, const PngText& text, int band_row) {
+    if (channels != 1 && channels != 3 && channels != 4) return "PNG holds 1, 3 or 4 channels";
+    std::vector<std::vector<unsigned char>> bytes;
+    std::vector<PieceData> pieces;
+    if (!deflate_pieces(pixels, width, height, channels, std::max(band_row, 0), bytes, pieces))
+        return "compression failed";
+    PngText all = text;
+    if (band_row >= 0) all.emplace_back(kPiecesKeyword, pieces_table(band_row, pieces));
+    return png_from_stream(file, zlib_stream(pieces), width, height, channels, srgb, all);
 }
 
 }  // namespace kerf::render

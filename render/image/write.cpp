@@ -137,6 +137,13 @@ std::string write_stdout(const void* data, std::size_t size) {
     return {};
 }
 
+// A writer's failure (empty: none) as the one-line ImageWriteError.
+void throw_if_failed(const std::string& path, std::string message) {
+    if (message.empty()) return;
+    std::replace(message.begin(), message.end(), '\n', ' ');
+    throw ImageWriteError("cannot write " + path + ": " + message);
+}
+
 }  // namespace
 
 void check_output_path(const std::string& path, int width, int height, const std::vector<std::string>& inputs) {
@@ -165,7 +172,14 @@ void check_output_path(const std::string& path, int width, int height, const std
 
 bool is_8bit_output(const std::string& path) { return path == "-" || !is_float_format(lower_extension(fs::path(path))); }
 
-void write_image(const Image& given, const std::string& path, const PngText& text) {
+bool is_png_output(const std::string& path) { return path == "-" || lower_extension(fs::path(path)) == ".png"; }
+
+void write_encoded(const std::vector<unsigned char>& file, const std::string& path) {
+    throw_if_failed(path, path == "-" ? write_stdout(file.data(), file.size())
+                                      : replace_file(path, file.data(), file.size()));
+}
+
+void write_image(const Image& given, const std::string& path, const PngText& text, int band_row) {
     const bool to_stdout = path == "-";
     const std::string ext = to_stdout ? ".png" : lower_extension(fs::path(path));
     // A PGM is grey by its name: a colour image becomes its luminance.
@@ -196,9 +210,8 @@ void write_image(const Image& given, const std::string& path, const PngText& tex
         message = replace_file(path, file.data(), file.size());
     } else if (ext == ".png") {
         std::vector<unsigned char> file;
-        message = encode_png(file, bytes, image.width, image.height, image.channels, srgb, text);
-        if (message.empty())
-            message = to_stdout ? write_stdout(file.data(), file.size()) : replace_file(path, file.data(), file.size());
+        message = encode_png(file, bytes, image.width, image.height, image.channels, srgb, text, band_row);
+        if (message.empty()) return write_encoded(file, path);
     } else {
         const ImageModule& module = image_module(ext);
         char error[512] = "";
@@ -210,10 +223,7 @@ void write_image(const Image& given, const std::string& path, const PngText& tex
         else
             message = sink.called ? sink.message : "the encoder produced no file";
     }
-    if (!message.empty()) {
-        std::replace(message.begin(), message.end(), '\n', ' ');
-        throw ImageWriteError("cannot write " + path + ": " + message);
-    }
+    throw_if_failed(path, message);
 }
 
 }  // namespace kerf::render

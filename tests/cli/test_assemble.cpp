@@ -46,6 +46,8 @@ TEST_CASE("assembled bands are byte-identical to a single render") {
         {"-W 40 -H 12 --spp 4 --seed 7", 12},          // jittered samples, one row per band
         {"-W 50 -H 40 --preview -D '$t=0.3'", 3},      // preview, a frame of the animation
         {"-W 48 -H 32 --aa-threshold 0.02 --precision float", 2},
+        {"-W 24 -H 64 --preview", 4},                  // edges on the 16-row pieces: every piece reused
+        {"-W 24 -H 100 --preview", 3},                 // pieces of two bands re-encoded
     };
     for (const auto& c : cases) {
         INFO(c.args << ", " << c.bands << " bands");
@@ -75,6 +77,8 @@ TEST_CASE("bands that do not join are exit 2 with one line, and the output stays
     render_bands(dir, "split", 2, base);
     render_bands(dir, "facets", 3, base + " --facets exact");  // the same scene: it has no $fn
     render_farm_scene(dir, base + " -o " + quoted(dir, "plain.png"));
+    render_bands(dir, "old", 3, base);
+    hide_pieces_table(dir / "old_tile1of3.png");
     write_file(dir / "text.png", "not a picture");
     const std::string a0 = quoted(dir, "a_tile0of3.png"), a1 = quoted(dir, "a_tile1of3.png"),
                       a2 = quoted(dir, "a_tile2of3.png");
@@ -106,6 +110,8 @@ TEST_CASE("bands that do not join are exit 2 with one line, and the output stays
         {" " + a0 + " " + quoted(dir, "absent.png"), p("absent.png") + ": cannot open it"},
         {" " + a0 + " " + a1 + " " + a2 + " " + quoted(dir, "a_tile0of3.png"),
          p("a_tile0of3.png") + " and " + p("a_tile0of3.png") + " are both band 0 of 3"},
+        {" " + a0 + " " + quoted(dir, "old_tile1of3.png") + " " + a2,
+         p("old_tile1of3.png") + ": has no table of its image data pieces (render it again with this kerf)"},
     };
     write_file(dir / "out.png", "old");
     for (const auto& c : cases) {

@@ -57,6 +57,13 @@ TEST_CASE("resuming a band keeps it only when it is a band of the same render") 
     CHECK(r.status == 0);
     CHECK(r.err.find("written by another render") != std::string::npos);
     CHECK(inode(dir / "t_tile1of3.png") != kept);
+    // Whole and of this render, but without the table assemble joins by.
+    const ino_t again = inode(dir / "t_tile1of3.png");
+    hide_pieces_table(dir / "t_tile1of3.png");
+    r = run_kerf("render " + quoted(dir, "scene.sdl") + " " + args + " --resume -D '$t=0.5'", dir);
+    CHECK(r.status == 0);
+    CHECK(r.err.find("has no table of its image data pieces; rendering it again") != std::string::npos);
+    CHECK(inode(dir / "t_tile1of3.png") != again);
 }
 
 // Two scenes with the same leaves, materials and tree, whose checkers differ

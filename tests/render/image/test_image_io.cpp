@@ -77,8 +77,9 @@ TEST_CASE("PNG is 8-bit sRGB-encoded", "[image_io]") {
 }
 
 TEST_CASE("PNG image data compressed in parallel bands reads back exactly", "[image_io]") {
-    // 261 rows: two full bands of 128 rows and a partial one; noisy content
-    // (nothing for run-length matching to hide) beside flat runs.
+    // 261 rows: 16 full pieces of 16 rows (png_pieces.hpp) and a partial
+    // one; noisy content (nothing for run-length matching to hide) beside
+    // flat runs.
     const fs::path dir = fresh_dir("png_bands");
     for (const int channels : {1, 3}) {
         render::Image im;
