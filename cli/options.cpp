@@ -21,7 +21,7 @@ namespace {
 bool is_image_option(const std::string& a) {
     for (const char* f : {"-o", "-W", "-H", "--spp", "--aa", "--aa-samples", "--aa-threshold", "--seed", "--preview",
                           "--max-depth", "--watch", "--crop", "--aov", "--stats", "--alpha", "--integrator", "--look",
-                          "--quality"})
+                          "--quality", "--no-ghosts"})
         if (a == f) return true;
     return false;
 }
@@ -100,6 +100,7 @@ const char* usage_text() {
            "                                          the defaults; an explicit knob beside it wins)\n"
            "                        [--integrator whitted|path]  (path: --spp 64 by default)\n"
            "                        [--look studio|plain]  (a script without camera, lights or background)\n"
+           "                        [--no-ghosts]  (no `%`/`#` ghosts over the image, as OpenSCAD's render)\n"
            "                        [--max-depth 4]  (reflections and refractions per ray, 0..32;\n"
            "                                          path: bounces per path, default 16)\n"
            "                        [--curve-tolerance 1e-4]  (text(), hull(), minkowski(), offset(): flattening, a fraction of size)\n"
@@ -205,6 +206,7 @@ Options parse_options(const std::vector<std::string>& args) {
                                                             std::pair{"path", render::Integrator::Path}});
         else if (a == "--seed") o.render.seed = parse_int<std::uint64_t>(a, value(), 0, UINT64_MAX);
         else if (a == "--preview") o.render.preview = true;
+        else if (a == "--no-ghosts") o.ghosts = false;
         else if (a == "--watch" && (o.command == Command::Render || o.command == Command::Watch)) o.command = Command::Watch;
         // The dialect (docs/openscad.md): by default `.scad` files follow
         // OpenSCAD's lenient rules and everything else kerf's strict ones.
