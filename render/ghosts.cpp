@@ -17,7 +17,8 @@ struct GhostSurface {
 
 }  // namespace
 
-GhostLayers::GhostLayers(const csg::Scene& scene, const CsgTracer& solid, bool use_float) : solid_(solid) {
+GhostLayers::GhostLayers(const csg::Scene& scene, const CsgTracer& solid, bool use_float)
+    : solid_(solid), fog_(scene.fog) {
     for (const csg::Scene& ghost : scene.ghosts) {
         if (ghost.root == csg::kNone) continue;
         layers_.push_back({&ghost, std::make_unique<CsgTracer>(ghost, use_float)});
@@ -45,7 +46,12 @@ glm::dvec3 GhostLayers::over(const TraceRay& ray, const glm::dvec3& behind, Thre
             // A light at the eye: faces turned away from the view darken.
             const double shade = 0.35 + 0.65 * std::abs(glm::dot(n, view));
             const std::uint32_t id = (std::uint32_t(k) + 1) * 0x9E3779B9u ^ (end.leaf * 0x85EBCA6Bu + end.part);
-            found.push_back({t, m.color * shade, std::clamp(1 - m.transparency, 0.0, 1.0), id});
+            glm::dvec3 c = m.color * shade;
+            if (fog_.on()) {
+                const double keep = std::exp(-t * dlen / fog_.distance);
+                c = keep * c + (1 - keep) * fog_.color;
+            }
+            found.push_back({t, c, std::clamp(1 - m.transparency, 0.0, 1.0), id});
         };
         for (const Span& s : ts.spans) {
             if (s.t0 > ray.tnear) add(s.t0, s.e0);  // not where the ray starts inside the ghost

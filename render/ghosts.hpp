@@ -40,6 +40,7 @@ private:
         std::unique_ptr<CsgTracer> tracer;
     };
     const CsgTracer& solid_;
+    csg::Fog fog_;  // ghost surfaces are fogged by their distance, as the solid's
     std::vector<Layer> layers_;
     csg::Aabb bounds_;
 };

@@ -158,4 +158,11 @@ TEST_CASE("ghosts with --alpha, a crop and the path tracer", "[ghosts]") {
     const glm::dvec3 bg = kerf::csg::srgb_to_linear(glm::dvec3(0.25, 0.5, 0.75));
     const glm::dvec3 want = through_ghost(GhostKind::Background, bg), got = pixel(draw(s, path), x, y);
     for (int k = 0; k < 3; ++k) CHECK(got[k] == Approx(want[k]).epsilon(1e-5));
+    // Fog: each ghost face fogged by its own distance (19 and 21 from the
+    // camera plane), over the fog's colour that a miss sees.
+    const kerf::csg::Scene fogged = scene_of(text + "fog(20, [1, 1, 1]);\n");
+    const kerf::csg::Material g = kerf::csg::ghost_material(GhostKind::Background);
+    auto fog = [&](double d) { return std::exp(-d / 20) * g.color + (1 - std::exp(-d / 20)) * glm::dvec3(1); };
+    const glm::dvec3 seen = a * fog(19) + (1 - a) * (a * fog(21) + (1 - a) * glm::dvec3(1)), fog_got = pixel(draw(fogged), x, y);
+    for (int k = 0; k < 3; ++k) CHECK(fog_got[k] == Approx(seen[k]).epsilon(1e-5));
 }
