@@ -79,6 +79,9 @@ std::uint64_t scene_hash(const csg::Scene& s) {
     h.u(s.ground.on), h.d(s.ground.z), h.d(s.ground.shadow);
     for (const csg::Light& l : s.lights)
         h.d(l.radius), h.u(l.samples), h.u(l.shadows), h.u(l.inverse_square), h.u(l.spot), h.d(l.spot_angle), h.d(l.spot_falloff);
+    // The `%` and `#` ghosts (or none, --no-ghosts) change the pixels too.
+    h.u(s.ghosts.size());
+    for (const csg::Scene& ghost : s.ghosts) h.u(scene_hash(ghost));
     return h.h;
 }
 

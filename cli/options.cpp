@@ -21,7 +21,7 @@ namespace {
 bool is_image_option(const std::string& a) {
     for (const char* f : {"-o", "-W", "-H", "--spp", "--aa", "--aa-samples", "--aa-threshold", "--seed", "--preview",
                           "--max-depth", "--watch", "--crop", "--aov", "--stats", "--alpha", "--integrator", "--look",
-                          "--quality", "--progressive", "--time-limit"})
+                          "--quality", "--progressive", "--time-limit", "--no-ghosts"})
         if (a == f) return true;
     return false;
 }
@@ -102,6 +102,7 @@ const char* usage_text() {
            "                        [--progressive] [--time-limit SECONDS]  (path: write OUT after each pass\n"
            "                                          of 1, 2, 4, ... paths per pixel; start no pass after)\n"
            "                        [--look studio|plain]  (a script without camera, lights or background)\n"
+           "                        [--no-ghosts]  (no `%`/`#` ghosts over the image, as OpenSCAD's render)\n"
            "                        [--max-depth 4]  (reflections and refractions per ray, 0..32;\n"
            "                                          path: bounces per path, default 16)\n"
            "                        [--curve-tolerance 1e-4]  (text(), hull(), minkowski(), offset(): flattening, a fraction of size)\n"
@@ -209,6 +210,7 @@ Options parse_options(const std::vector<std::string>& args) {
         else if (a == "--preview") o.render.preview = true;
         else if (a == "--progressive") o.progressive = true;
         else if (a == "--time-limit") o.render.time_limit = parse_real(a, value(), 1e-9, 1e7, "of seconds from 1e-9 to 1e7");
+        else if (a == "--no-ghosts") o.ghosts = false;
         else if (a == "--watch" && (o.command == Command::Render || o.command == Command::Watch)) o.command = Command::Watch;
         // The dialect (docs/openscad.md): by default `.scad` files follow
         // OpenSCAD's lenient rules and everything else kerf's strict ones.

@@ -39,6 +39,7 @@ struct Options {
     std::vector<std::string> tiles;  // assemble: the band files (output: OUT)
     EvalOptions eval;
     Look look = Look::Studio;  // --look: what a script without camera, lights or background gets
+    bool ghosts = true;        // --no-ghosts: `%` and `#` parts drawn as OpenSCAD's render does (csg/ghosts.hpp)
     render::RenderOptions render;
     render::MeasureOptions measure;  // kerf measure: resolution; threads and precision as for render
     std::string host = "127.0.0.1";  // kerf view: --host, a loopback address only

@@ -260,6 +260,13 @@ struct Scene {
     std::vector<SourceRef> sources;
     std::vector<std::string> files;
 
+    // The translucent layers OpenSCAD's preview draws over the solid
+    // (csg/ghosts.hpp): the `%` parts, then the `#` parts, each a scene of
+    // its own (leaves, nodes, materials; no camera or lights) whose
+    // materials give each surface's colour and, as 1 − transparency, its
+    // opacity. Empty: none, or `--no-ghosts`.
+    std::vector<Scene> ghosts;
+
     Aabb bounds() const { return root == kNone ? Aabb{} : nodes[root].bounds; }
 };
 

@@ -504,23 +504,31 @@ void Evaluator::eval_stmt(const ast::Stmt& st, Scope& s, bool top_level) {
     // grammar allows no other statement after one).
     switch (st.modifier) {
         case ast::Modifier::Disable: return;  // `*`: not even evaluated, as in OpenSCAD
-        case ast::Modifier::Background: {     // `%`: evaluated (errors count), not rendered
+        case ast::Modifier::Background:  // `%`: evaluated (errors count), a ghost, not in the solid
+        case ast::Modifier::Highlight: {  // `#`: in the solid, and a ghost too
             std::size_t mark = out_.mark();
             eval_plain(st, s, top_level);
-            out_.pending.resize(mark);
+            out_.group(mark, st.loc);
+            const bool background = st.modifier == ast::Modifier::Background;
+            if (out_.mark() > mark)
+                record_ghost(st, background ? csg::GhostKind::Background : csg::GhostKind::Highlight, out_.pending.back());
+            if (background) out_.pending.resize(mark);
             return;
         }
         case ast::Modifier::Root: {  // `!`: the first one becomes the whole solid
             std::size_t mark = out_.mark();
+            const std::size_t ghosts = modules_.ghosts.size();
             eval_plain(st, s, top_level);
             out_.group(mark, st.loc);
             if (root_override_ < 0) {
                 if (out_.mark() == mark) out_.make_node(mark, graph::NodeKind::Union, st.loc);
                 root_override_ = out_.pending.back();
+                root_ghosts_[0] = ghosts;
+                root_ghosts_[1] = modules_.ghosts.size();
             }
             return;
         }
-        default: eval_plain(st, s, top_level); return;  // `#` renders normally
+        default: eval_plain(st, s, top_level); return;
     }
 }
 

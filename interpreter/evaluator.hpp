@@ -164,6 +164,10 @@ private:
     void call_module(const ast::Stmt& def, Scope& def_scope, const ast::Stmt& call, Scope& s);
     void stmt_for(const ast::Stmt& st, std::size_t k, Scope& loop, Scope& s);
     void stmt_children(const ast::Stmt& st, Scope& s);
+    // ghosts.cpp: a `%` or `#` statement's subtree `node` as a ghost, under
+    // the transforms around it; at the end of the run, the ghost trees.
+    void record_ghost(const ast::Stmt& st, csg::GhostKind kind, std::uint32_t node);
+    void build_ghost_roots(const SourceLoc& top);
     Scope* load_use(const ast::Stmt& st);
 
     // Binding helpers (eval_stmt.cpp): `$` names go to the dynamic stack.
@@ -246,6 +250,7 @@ private:
     ModuleState modules_;              // what built-in modules remember
     std::vector<Diagnostic> warnings_;
     std::int64_t root_override_ = -1;  // the first `!` subtree
+    std::size_t root_ghosts_[2] = {0, 0};  // the ghosts recorded inside it: [from, to)
     std::uint64_t exact_curves_ = 0;   // exact_curve(): how many, and the first
     SourceLoc first_exact_curve_{};
 

@@ -110,6 +110,7 @@ graph::SceneGraph Evaluator::run(ast::Program program) {
         out_.graph.root = out_.make_node(0, graph::NodeKind::Union, top);
     }
     out_.pending.clear();
+    build_ghost_roots(top);
     return std::move(out_.graph);
 }
 

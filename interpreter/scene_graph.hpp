@@ -64,6 +64,11 @@ struct SceneGraph {
     std::vector<PolygonMesh> meshes;
     std::vector<csg::Polygon2> polygons;     // Prism: polygon sections
     std::uint32_t root = 0;                  // a Union node (implicit top-level union)
+    // The roots of the `%` and `#` ghosts (csg/ghosts.hpp), indexed by
+    // csg::GhostKind: Unions over the ghost subtrees, each under its
+    // statement's world transform and colour, in the same arena (a `#`
+    // subtree is shared with the solid); csg::kNone: no such ghost.
+    std::uint32_t ghost_roots[2] = {csg::kNone, csg::kNone};
 
     std::optional<csg::Camera> camera;            // none: lowering applies docs/spec.md §6 defaults
     std::vector<csg::Light> lights;              // empty: default lights

@@ -50,7 +50,8 @@ public:
     // Leaves are written straight into the scene's vector (in creation order;
     // the emitter compacts away the pruned ones in place) so the largest
     // array of the scene is touched once.
-    TreeBuilder(const graph::SceneGraph& g, std::vector<csg::Leaf>& out) : leaves(out), g_(g) {
+    TreeBuilder(const graph::SceneGraph& g, std::vector<csg::Leaf>& out, std::uint32_t root)
+        : leaves(out), g_(g), root_(root) {
         std::size_t prims = 0;
         for (const graph::Node& n : g.nodes) prims += n.kind == NodeKind::Primitive;
         csg::reserve_huge(out, prims);
@@ -63,10 +64,10 @@ public:
 
     // Returns the root TNode, or kNone for the empty solid.
     std::uint32_t build() {
-        if (g_.root >= g_.nodes.size()) return kNone;
-        if (g_.nodes[g_.root].kind == NodeKind::Primitive) return make_leaf(g_.root, Frame{});
+        if (root_ >= g_.nodes.size()) return kNone;
+        if (g_.nodes[root_].kind == NodeKind::Primitive) return make_leaf(root_, Frame{});
         std::vector<Frame> stack;
-        stack.push_back(open(g_.root, Frame{}));
+        stack.push_back(open(root_, Frame{}));
         for (;;) {
             Frame& f = stack.back();
             const graph::Node& gn = g_.nodes[f.gnode];
@@ -89,6 +90,7 @@ public:
 
 private:
     const graph::SceneGraph& g_;
+    const std::uint32_t root_;
 
     std::uint32_t child(const graph::Node& gn, std::uint32_t parent, std::uint32_t i) const {
         const std::size_t ref = std::size_t(gn.first_child) + i;
@@ -380,8 +382,8 @@ private:
 
 }  // namespace
 
-FlatTree build_flat_tree(const graph::SceneGraph& graph, std::vector<csg::Leaf>& leaves) {
-    TreeBuilder builder(graph, leaves);
+FlatTree build_flat_tree(const graph::SceneGraph& graph, std::vector<csg::Leaf>& leaves, std::uint32_t root) {
+    TreeBuilder builder(graph, leaves, root == csg::kNone ? graph.root : root);
     FlatTree tree;
     tree.root = builder.build();
     tree.nodes = std::move(builder.nodes);

@@ -35,8 +35,10 @@ struct FlatTree {
 // order with their world matrices and boxes set, while material, mesh,
 // material_frame (into FlatTree::material_frames) and source still hold the
 // builder's indices (material kNone = default, source = the
-// graph node). Throws SourceError for singular transforms.
-FlatTree build_flat_tree(const graph::SceneGraph& graph, std::vector<csg::Leaf>& leaves);
+// graph node). Throws SourceError for singular transforms. `root`: the
+// tree to flatten (kNone: graph.root; a ghost tree, csg/ghosts.hpp).
+FlatTree build_flat_tree(const graph::SceneGraph& graph, std::vector<csg::Leaf>& leaves,
+                         std::uint32_t root = csg::kNone);
 
 // Writes nodes/children in pre-order into `scene` (whose `leaves` are the
 // ones build_flat_tree filled), keeps only the leaves the tree uses, and

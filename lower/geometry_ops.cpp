@@ -58,6 +58,8 @@ public:
             }
         }
         out_.root = g_.root < map_.size() ? map_[g_.root] : std::uint32_t(out_.nodes.size());
+        for (int k = 0; k < 2; ++k)
+            out_.ghost_roots[k] = g_.ghost_roots[k] < map_.size() ? map_[g_.ghost_roots[k]] : csg::kNone;
     }
 
 private:
@@ -74,6 +76,8 @@ private:
         constexpr std::uint8_t kUnused = 0, kDrawn = 1, kUnderResize = 2;
         std::vector<std::uint8_t> use(g_.nodes.size(), kUnused);
         if (g_.root < use.size()) use[g_.root] = kDrawn;
+        for (std::uint32_t ghosts : g_.ghost_roots)
+            if (ghosts < use.size()) use[ghosts] = kDrawn;
         out_.meshes.resize(g_.meshes.size());
         for (std::size_t i = g_.nodes.size(); i-- > 0;) {  // parents after their children: walk down
             const graph::Node& n = g_.nodes[i];

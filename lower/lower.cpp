@@ -2,6 +2,10 @@
 // then the scene statements or their docs/spec.md §6 defaults (defaults.cpp).
 #include "lower/lower.hpp"
 
+#include <algorithm>
+
+#include "csg/ghosts.hpp"
+
 #include "lower/flat_tree.hpp"
 #include "lower/defaults.hpp"
 #include "lower/geometry_ops.hpp"
@@ -17,7 +21,12 @@ namespace {
 // "The default look").
 void apply_scene_statements(const graph::SceneGraph& g, const LowerOptions& o, csg::Scene& s) {
     const bool studio = o.look == Look::Studio;
-    const csg::Aabb frame = framing_box(s);
+    // The default camera frames the ghosts too, as OpenSCAD's preview does.
+    csg::Aabb frame = framing_box(s);
+    if (!s.ghosts.empty()) {
+        frame = s.root == csg::kNone ? csg::Aabb{} : frame;
+        for (const csg::Scene& ghost : s.ghosts) frame.extend(framing_box(ghost));
+    }
     if (g.camera) {
         s.camera = *g.camera;
     } else {
@@ -34,6 +43,9 @@ void apply_scene_statements(const graph::SceneGraph& g, const LowerOptions& o, c
         // half-space, is its own floor; an empty scene has nothing to ground).
         s.ground.on = s.root != csg::kNone && finite_box(s.bounds());
         s.ground.z = s.ground.on ? s.bounds().lo.z : 0;
+        // A ghost below the solid (a `%` build plate) stands on the ground too.
+        for (const csg::Scene& ghost : s.ghosts)
+            if (s.ground.on && finite_box(ghost.bounds())) s.ground.z = std::min(s.ground.z, ghost.bounds().lo.z);
     }
     // The light background comes with the studio lights: a script that
     // lights itself keeps the dark one its lights were chosen against.
@@ -51,6 +63,18 @@ csg::Scene lower_to_csg(const graph::SceneGraph& input, const LowerOptions& opti
     csg::Scene scene;
     const lowering::FlatTree tree = lowering::build_flat_tree(graph, scene.leaves);
     lowering::emit_flat_tree(graph, tree, scene);
+    if (options.ghosts)
+        for (csg::GhostKind kind : {csg::GhostKind::Background, csg::GhostKind::Highlight}) {
+            const std::uint32_t root = graph.ghost_roots[std::size_t(kind)];
+            if (root == csg::kNone) continue;
+            csg::Scene ghost;
+            lowering::emit_flat_tree(graph, lowering::build_flat_tree(graph, ghost.leaves, root), ghost);
+            if (ghost.root == csg::kNone) continue;
+            // A `#` part is the highlight colour whatever colours it has inside.
+            if (kind == csg::GhostKind::Highlight)
+                for (csg::Material& m : ghost.materials) m = csg::ghost_material(kind);
+            scene.ghosts.push_back(std::move(ghost));
+        }
     apply_scene_statements(graph, options, scene);
     return scene;
 }

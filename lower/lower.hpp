@@ -17,6 +17,9 @@ struct LowerOptions {
     // The image's width / height: the studio camera fills 80 % of the frame
     // of that shape (the plain camera fits any image at least as wide as tall).
     double aspect = 4.0 / 3.0;
+    // The `%` and `#` ghosts (csg/ghosts.hpp) as csg::Scene::ghosts; false
+    // (`--no-ghosts`, and `kerf measure`): none, as in OpenSCAD's render.
+    bool ghosts = true;
 };
 
 // Throws SourceError for scene-level problems it can locate (e.g. a

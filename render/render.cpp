@@ -16,6 +16,7 @@
 #include "render/adaptive.hpp"
 #include "render/aov.hpp"
 #include "render/camera.hpp"
+#include "render/ghosts.hpp"
 #include "render/integrator_path.hpp"
 #include "render/ground.hpp"
 #include "render/pixel_store.hpp"
@@ -67,18 +68,27 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
     // The ground is neither in the AOVs (they see the solid) nor in an
     // --alpha image (transparent, as the background it stands for).
     const Shader shader(scene, tracer, options.preview ? 0 : options.max_reflect_depth, !alpha);
-    const csg::Aabb shadow = alpha || aov != Aov::None ? csg::Aabb{} : ground_shadow_box(scene);
+    csg::Aabb shadow = alpha || aov != Aov::None ? csg::Aabb{} : ground_shadow_box(scene);
+    // The `%` and `#` ghosts over the colour (AOVs see the solid only);
+    // tiles where they show are traced like those the ground's shadow needs.
+    std::optional<GhostLayers> ghosts;
+    if (!scene.ghosts.empty() && aov == Aov::None) {
+        arena.execute([&] { ghosts.emplace(scene, tracer, !options.double_precision); });
+        shadow.extend(ghosts->bounds());
+    }
     // The path tracer, when asked for (the preview stays Whitted's quick look).
     std::optional<PathTracer> path;
     if (options.integrator == Integrator::Path && !options.preview)
         path.emplace(scene, tracer, options.max_path_depth, options.seed, options.path_lighting);
     PixelStore store(image, region, alpha ? 4 : aov_channels(aov), aov_content(aov), options.srgb8 && aov == Aov::None);
-    // Coverage: the samples of the pixel being shaded that hit a solid. A
-    // pixel is shaded start to end on one thread, so a thread-local count,
-    // reset per pixel, needs no change to the sample paths below.
-    static thread_local int hits = 0;
+    // Coverage: the samples of the pixel being shaded that hit a solid (a
+    // sample seeing a ghost over the background counts the ghost's
+    // opacity). A pixel is shaded start to end on one thread, so a
+    // thread-local count, reset per pixel, needs no change to the sample
+    // paths below.
+    static thread_local double hits = 0;
     auto put = [&](int x, int y, const glm::dvec3& c, int samples) {
-        if (alpha) store.color_alpha(x, y, c, double(hits) / samples, shader.miss(), options.alpha == Alpha::Premultiplied);
+        if (alpha) store.color_alpha(x, y, c, hits / samples, shader.miss(), options.alpha == Alpha::Premultiplied);
         else store.color(x, y, c);
         hits = 0;
     };
@@ -99,11 +109,17 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
             }
             return shader.radiance(TraceRay{o, d, 0, std::numeric_limits<double>::infinity()}, 0, ts, id);
         };
-        if (!alpha) return one(surface);
+        const TraceRay ray{o, d, 0, std::numeric_limits<double>::infinity()};
+        if (!alpha) {
+            const glm::dvec3 c = one(surface);
+            return ghosts ? ghosts->over(ray, c, ts, nullptr, surface) : c;
+        }
         std::uint32_t id = 0;
-        const glm::dvec3 c = one(&id);
+        glm::dvec3 c = one(&id);
         if (surface) *surface = id;
-        hits += id != 0;
+        double ghost = 0;
+        if (ghosts) c = ghosts->over(ray, c, ts, &ghost, surface);
+        hits += id != 0 ? 1.0 : ghost;
         return c;
     };
     // One sample through (px, py); `surface` as Shader::radiance.
@@ -223,7 +239,7 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
         const int n = samples.count(), w = region[2] - region[0];
         const bool passes = bool(options.on_pass) || options.time_limit > 0;
         std::vector<glm::dvec3> sums(passes ? std::size_t(w) * (region[3] - region[1]) : 0);
-        std::vector<int> hit_counts(passes && alpha ? sums.size() : 0);
+        std::vector<double> hit_counts(passes && alpha ? sums.size() : 0);
         int done = 0;
         while (done < n && complete) {
             const int to = passes ? std::min(n, std::max(1, 2 * done)) : n;
@@ -284,7 +300,11 @@ Image render(const csg::Scene& scene, const RenderOptions& options, RenderStats*
     // refuse what no stack is sized for, and give every thread that traces
     // the stack this tree needs rather than let a deep one overflow it.
     Image image;
-    with_tracer_stack(scene, "renders", [&](std::size_t need) { image = render_tiles(scene, options, stats, progress, need); });
+    // The deepest of the solid's and the ghosts' trees sets the stack.
+    const csg::Scene* deepest = &scene;
+    for (const csg::Scene& ghost : scene.ghosts)
+        if (tree_depth(ghost) > tree_depth(*deepest)) deepest = &ghost;
+    with_tracer_stack(*deepest, "renders", [&](std::size_t need) { image = render_tiles(scene, options, stats, progress, need); });
     return image;
 }
 

@@ -139,7 +139,10 @@ void offset(ModuleCall& c) {
     const double dist = round ? arg_number(a, 0, "r", 1) : arg_number(a, 1, "delta", 1);
     GraphBuilder& g = c.graph();
     const std::size_t mark = g.mark();
-    c.children();
+    {
+        GhostFrameScope hide(c.state(), "offset");
+        c.children();
+    }
     const std::vector<std::uint32_t> shapes = c.flat_children(mark, "offsets");
     if (shapes.empty()) return;
     if (dist == 0) {  // the shape itself, as in OpenSCAD

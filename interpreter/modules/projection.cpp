@@ -460,7 +460,10 @@ void projection_call(ModuleCall& c) {
     const bool cut = arg_bool(c.args, 0, "cut", false);
     GraphBuilder& g = c.graph();
     const std::size_t mark = g.mark();
-    c.children();
+    {
+        GhostFrameScope hide(c.state(), "projection");
+        c.children();
+    }
     std::vector<std::uint32_t> solids;
     for (std::size_t i = mark; i < g.pending.size(); ++i) {
         const graph::Node& n = g.graph.nodes[g.pending[i]];

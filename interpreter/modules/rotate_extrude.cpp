@@ -141,7 +141,10 @@ void rotate_extrude(ModuleCall& c) {
     const double angle = arg_number(a, 5, "angle", 360);
     GraphBuilder& g = c.graph();
     const std::size_t mark = g.mark();
-    c.children();
+    {
+        GhostFrameScope hide(c.state(), "rotate_extrude");
+        c.children();
+    }
     const std::vector<std::uint32_t> shapes = c.flat_children(mark, "revolves");
     if (shapes.empty() || angle == 0) return;  // angle 0: the empty solid, as in OpenSCAD
     // OpenSCAD checks the sign of x on the 2D result, after the booleans

@@ -192,7 +192,10 @@ void linear_extrude(ModuleCall& c) {
     const glm::dvec2 top = scale_arg(a, 5);  // the top section's scales
     GraphBuilder& g = c.graph();
     const std::size_t mark = g.mark();
-    c.children();
+    {
+        GhostFrameScope hide(c.state(), "linear_extrude");
+        c.children();
+    }
     if (g.mark() == mark) return;
     for (std::size_t i = mark; i < g.pending.size(); ++i)
         if (!g.graph.nodes[g.pending[i]].flat)

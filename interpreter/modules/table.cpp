@@ -110,7 +110,7 @@ bool Evaluator::builtin_module(const ast::Stmt& st, Scope& s, bool top_level) {
     // axis, a zero or negative size, undef) makes an operation the identity
     // on its children and a solid nothing, with the strict message as the
     // warning. Limits still stop.
-    const std::size_t mark = out_.mark();
+    const std::size_t mark = out_.mark(), ghosts = modules_.ghosts.size();
     try {
         e->handler(call);
     } catch (const SoftError& err) {
@@ -118,6 +118,7 @@ bool Evaluator::builtin_module(const ast::Stmt& st, Scope& s, bool top_level) {
                                                                    ? " (the children are used unchanged)"
                                                                    : " (nothing is made)"));
         out_.pending.resize(mark);
+        modules_.ghosts.resize(ghosts);  // the children's ghosts, if they ran, are recorded again below
         if (e->kind == ModuleKind::Operation) {
             eval_block(st.body, s, false);
             out_.group(mark, st.loc);

@@ -50,8 +50,11 @@ using NK = graph::NodeKind;
 template <NK kind>
 void boolean(ModuleCall& c) {
     std::size_t mark = c.graph().mark();
+    const std::size_t ghosts = c.state().ghosts.size();
     c.children();
+    const std::uint32_t first = c.graph().mark() > mark ? c.graph().pending[mark] : csg::kNone;
     c.graph().make_node(mark, kind, c.st.loc);
+    if (kind == NK::Difference) c.state().ghost_minuend(ghosts, first, c.graph().pending.back());
 }
 
 // render() and group() are OpenSCAD's: a plain union here.
@@ -103,7 +106,10 @@ bool flattened_away(ModuleCall& c, const glm::dmat4& m, bool flat) {
 void transformed(ModuleCall& c, glm::dmat4 m) {
     GraphBuilder& g = c.graph();
     std::size_t mark = g.mark();
-    c.children();
+    {
+        GhostFrameScope frame(c.state(), m);  // `%` and `#` parts inside are placed by it
+        c.children();
+    }
     if (g.mark() == mark) return;
     if (flattened_away(c, m, g.flat_since(mark))) return g.pending.resize(mark);
     if (g.flat_since(mark)) m = planar(c.args, m);
@@ -173,6 +179,7 @@ void openscad_multmatrix(ModuleCall& c) {
     if (finite) return transformed(c, m);
     GraphBuilder& g = c.graph();
     const std::size_t mark = g.mark();
+    GhostFrameScope hide(c.state(), "multmatrix");
     c.children();
     c.warn("Transformation matrix contains Not-a-Number and/or Infinity - removing object.");
     g.pending.resize(mark);
