@@ -30,17 +30,19 @@ csg::Scene evaluate_and_lower(const Options& o, const EvalOptions& eval, Progres
     if (!evaluated.warnings.empty()) bar.print_above([&] { print_warnings(evaluated.warnings); });
     if (warnings) *warnings = evaluated.warnings;
     bar.phase("lower");
+    SourceLoc main;  // where a warning that the scene is empty points: the main file
+    if (!evaluated.graph.nodes.empty()) main.file = evaluated.graph.nodes[evaluated.graph.root].loc.file;
     // The studio camera frames the full image's shape (a crop or a band
-    // shows part of the same picture).
-    csg::Scene scene = lower_to_csg(evaluated.graph, LowerOptions{o.look, double(o.render.width) / o.render.height});
+    // shows part of the same picture). The graph is given up: lowering
+    // frees its nodes as soon as it can.
+    csg::Scene scene =
+        lower_to_csg(std::move(evaluated.graph), LowerOptions{o.look, double(o.render.width) / o.render.height});
     const bool renders = o.command == Command::Render || o.command == Command::Watch || o.command == Command::View;
     if (scene.root == csg::kNone && renders) {
         // Nothing to draw: the image is the background. OpenSCAD 2021.01
         // writes that PNG silently and refuses an STL ("Current top level
         // object is empty."); kerf renders it and says so (docs/openscad.md,
         // "An empty model"). Located at the main file, as no statement made it.
-        SourceLoc main;
-        if (!evaluated.graph.nodes.empty()) main.file = evaluated.graph.nodes[evaluated.graph.root].loc.file;
         Diagnostic empty{Severity::Warning, main, "the scene has no solid: the image is only its background", 1, {}};
         if (eval.werror) {
             empty.severity = Severity::Error;

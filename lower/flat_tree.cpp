@@ -3,6 +3,7 @@
 // nested unions/intersections/subtrahend unions by list splicing, dropping
 // what its box rules out), and turns them into one flat node when done.
 #include <stdexcept>
+#include <unordered_map>
 
 #include "lower/flat_tree.hpp"
 #include "csg/huge_pages.hpp"
@@ -45,6 +46,37 @@ bool same_pattern_space(const csg::Material& a, const csg::Material& b) {
            a.pattern_from_material.offset == b.pattern_from_material.offset;
 }
 
+// FlatTree::locs while building: each distinct (file, line, col) once.
+class LocTable {
+public:
+    std::vector<SourceLoc> locs;
+
+    std::uint32_t index(const SourceLoc& loc) {
+        const Key key{loc.file.get(), loc.line, loc.col};
+        if (key == last_) return last_index_;  // siblings from one statement
+        auto [it, added] = index_.try_emplace(key, static_cast<std::uint32_t>(locs.size()));
+        if (added) locs.push_back(loc);
+        last_ = key;
+        last_index_ = it->second;
+        return last_index_;
+    }
+
+private:
+    struct Key {
+        const SourceFile* file = nullptr;
+        std::uint32_t line = 0, col = 0;
+        bool operator==(const Key&) const = default;
+    };
+    struct KeyHash {
+        std::size_t operator()(const Key& k) const {
+            return std::hash<const void*>{}(k.file) ^ std::hash<std::uint64_t>{}((std::uint64_t(k.line) << 32) | k.col);
+        }
+    };
+    std::unordered_map<Key, std::uint32_t, KeyHash> index_;
+    Key last_{nullptr, ~0u, ~0u};
+    std::uint32_t last_index_ = kNone;
+};
+
 class TreeBuilder {
 public:
     // Leaves are written straight into the scene's vector (in creation order;
@@ -58,8 +90,9 @@ public:
     }
 
     std::vector<TNode> nodes;
-    std::vector<csg::Leaf>& leaves;  // material/mesh/source hold graph indices until emit
+    std::vector<csg::Leaf>& leaves;  // material/mesh/source hold builder indices until emit
     MaterialFrames frames;           // the leaves' material_frame indices point here
+    LocTable locs;                   // the leaves' source and the nodes' loc point here
 
     // Returns the root TNode, or kNone for the empty solid.
     std::uint32_t build() {
@@ -131,7 +164,7 @@ private:
         leaf.kind = gn.prim;
         for (int i = 0; i < 6; ++i) leaf.p[i] = gn.p[i];
         leaf.material = material;
-        leaf.source = gnode;
+        leaf.source = locs.index(gn.loc);
         const std::vector<glm::dvec3>* points = nullptr;
         if (gn.prim == csg::PrimKind::Mesh) {
             if (gn.index >= g_.meshes.size())
@@ -163,7 +196,7 @@ private:
         TNode t;
         t.op = csg::Op::Leaf;
         t.leaf = static_cast<std::uint32_t>(leaves.size() - 1);
-        t.gnode = gnode;
+        t.loc = leaf.source;
         t.hash = leaf_hash(leaf);
         t.bounds = leaf.bounds;
         nodes.push_back(t);
@@ -242,7 +275,7 @@ private:
                           std::uint32_t count, const Aabb& bounds) {
         TNode t;
         t.op = op;
-        t.gnode = f.gnode;
+        t.loc = locs.index(g_.nodes[f.gnode].loc);
         t.head = head;
         t.tail = tail;
         t.count = count;
@@ -386,6 +419,7 @@ FlatTree build_flat_tree(const graph::SceneGraph& graph, std::vector<csg::Leaf>&
     tree.root = builder.build();
     tree.nodes = std::move(builder.nodes);
     tree.material_frames = std::move(builder.frames.frames);
+    tree.locs = std::move(builder.locs.locs);
     return tree;
 }
 

@@ -20,7 +20,7 @@ struct TNode {
     std::uint32_t leaf = csg::kNone;  // Leaf: index into the leaves vector
     std::uint32_t head = csg::kNone, tail = csg::kNone, count = 0;
     std::uint32_t next = csg::kNone;
-    std::uint32_t gnode = csg::kNone;  // the graph node it came from (its source location)
+    std::uint32_t loc = csg::kNone;    // into FlatTree::locs: where the graph node it came from was written
     std::uint32_t hash = 0;            // Leaf: leaf_hash (duplicate_leaves.hpp)
     csg::Aabb bounds;
 };
@@ -29,20 +29,24 @@ struct FlatTree {
     std::vector<TNode> nodes;
     std::uint32_t root = csg::kNone;  // kNone: the empty solid
     std::vector<csg::Affine> material_frames;  // the leaves' material_frame table (0: identity)
+    // The distinct source locations of the tree's nodes and leaves, so the
+    // emitter needs no graph node: lowering can free the graph's node arrays
+    // before it emits (docs/performance.md, "Memory").
+    std::vector<SourceLoc> locs;
 };
 
 // Flattens and prunes the graph. Leaves are appended to `leaves` in creation
 // order with their world matrices and boxes set, while material, mesh,
 // material_frame (into FlatTree::material_frames) and source still hold the
-// builder's indices (material kNone = default, source = the
-// graph node). Throws SourceError for singular transforms.
+// builder's indices (material kNone = default, source: into FlatTree::locs).
+// Throws SourceError for singular transforms.
 FlatTree build_flat_tree(const graph::SceneGraph& graph, std::vector<csg::Leaf>& leaves);
 
 // Writes nodes/children in pre-order into `scene` (whose `leaves` are the
 // ones build_flat_tree filled), keeps only the leaves the tree uses, and
 // resolves materials, material frames, meshes and sources into the scene's
-// tables. Throws
-// SourceError at the first node deeper than csg::kMaxDepth.
+// tables. Reads only the graph's materials, meshes and polygons (its nodes
+// may be gone). Throws SourceError at the first node deeper than csg::kMaxDepth.
 void emit_flat_tree(const graph::SceneGraph& graph, const FlatTree& tree, csg::Scene& scene);
 
 }  // namespace kerf::lowering
