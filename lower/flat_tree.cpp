@@ -90,6 +90,7 @@ public:
     }
 
     std::vector<TNode> nodes;
+    std::vector<Aabb> boxes;         // TNode::leaf of an operation points here
     std::vector<csg::Leaf>& leaves;  // material/mesh/source hold builder indices until emit
     MaterialFrames frames;           // the leaves' material_frame indices point here
     LocTable locs;                   // the leaves' source and the nodes' loc point here
@@ -198,7 +199,6 @@ private:
         t.leaf = static_cast<std::uint32_t>(leaves.size() - 1);
         t.loc = leaf.source;
         t.hash = leaf_hash(leaf);
-        t.bounds = leaf.bounds;
         nodes.push_back(t);
         return static_cast<std::uint32_t>(nodes.size() - 1);
     }
@@ -216,6 +216,8 @@ private:
         f.count += t.count;
     }
 
+    const Aabb& bounds(std::uint32_t n) const { return box(nodes[n], leaves, boxes); }
+
     bool is_plane(std::uint32_t n) const {
         return nodes[n].op == csg::Op::Leaf && leaves[nodes[n].leaf].kind == csg::PrimKind::Plane;
     }
@@ -223,7 +225,7 @@ private:
     void add_subtrahend(Frame& f, std::uint32_t n) {
         // A subtrahend whose box misses the minuend's cannot remove anything;
         // nor can a (tilted, so unbounded-box) half-space missing that box.
-        if (Aabb::overlap(nodes[n].bounds, f.bounds).empty()) return;
+        if (Aabb::overlap(bounds(n), f.bounds).empty()) return;
         if (is_plane(n) && clip_by_halfspace(f.bounds, world_halfspace(leaves[nodes[n].leaf])).empty()) return;
         append(f, n);
     }
@@ -238,7 +240,7 @@ private:
             case NodeKind::Difference:
                 if (f.next_child == 1) {
                     if (r == kNone) { f.empty = true; return; }
-                    f.bounds = nodes[r].bounds;
+                    f.bounds = bounds(r);
                     if (nodes[r].op == csg::Op::Difference) {
                         // (a − b) − c = a − (b ∪ c): adopt the inner minuend and subtrahends.
                         const TNode& d = nodes[r];
@@ -266,7 +268,7 @@ private:
             default:  // Union, Transform, Appearance: all unions of their children
                 if (r == kNone) return;
                 if (nodes[r].op == csg::Op::Union) splice(f, nodes[r]); else append(f, r);
-                f.bounds.extend(nodes[r].bounds);
+                f.bounds.extend(bounds(r));
                 return;
         }
     }
@@ -279,7 +281,8 @@ private:
         t.head = head;
         t.tail = tail;
         t.count = count;
-        t.bounds = bounds;
+        t.leaf = static_cast<std::uint32_t>(boxes.size());
+        boxes.push_back(bounds);
         nodes.push_back(t);
         return static_cast<std::uint32_t>(nodes.size() - 1);
     }
@@ -305,7 +308,7 @@ private:
         if (f.empty || f.count == 0) return kNone;
         f.count = drop_duplicate_leaves(nodes, leaves, f.head, f.tail, f.count);
         Aabb box = Aabb::everything();
-        for (std::uint32_t c = f.head; c != kNone; c = nodes[c].next) box = Aabb::overlap(box, nodes[c].bounds);
+        for (std::uint32_t c = f.head; c != kNone; c = nodes[c].next) box = Aabb::overlap(box, bounds(c));
         for (std::uint32_t c = f.head; c != kNone && !box.empty(); c = nodes[c].next)
             if (is_plane(c)) box = clip_by_halfspace(box, world_halfspace(leaves[nodes[c].leaf]));
         if (box.empty()) return kNone;
@@ -355,12 +358,12 @@ private:
             Aabb ubox;
             for (std::uint32_t m = u.head; m != kNone;) {
                 const std::uint32_t after = nodes[m].next;
-                if (!Aabb::overlap(nodes[m].bounds, box).empty()) {
+                if (!Aabb::overlap(bounds(m), box).empty()) {
                     nodes[m].next = kNone;
                     if (head == kNone) head = m; else nodes[tail].next = m;
                     tail = m;
                     ++count;
-                    ubox.extend(nodes[m].bounds);
+                    ubox.extend(bounds(m));
                 }
                 m = after;
             }
@@ -374,7 +377,7 @@ private:
                 u.head = head;
                 u.tail = tail;
                 u.count = count;
-                u.bounds = ubox;
+                boxes[u.leaf] = ubox;
                 append(f, c);
             }
             c = next;
@@ -418,6 +421,7 @@ FlatTree build_flat_tree(const graph::SceneGraph& graph, std::vector<csg::Leaf>&
     FlatTree tree;
     tree.root = builder.build();
     tree.nodes = std::move(builder.nodes);
+    tree.boxes = std::move(builder.boxes);
     tree.material_frames = std::move(builder.frames.frames);
     tree.locs = std::move(builder.locs.locs);
     return tree;

@@ -72,7 +72,7 @@ private:
             csg::Node node;
             node.op = tn.op;
             node.parent = it.parent;
-            node.bounds = tn.bounds;
+            node.bounds = box(tn, s_.leaves, t_.boxes);
             if (it.slot != kNone) s_.children[it.slot] = index;
             if (tn.op == csg::Op::Leaf) {
                 node.first = static_cast<std::uint32_t>(order_.size());
