@@ -2,6 +2,7 @@
 // Everything here is argument handling, reporting and exit codes
 // (docs/spec.md §7–§8, docs/farm.md); the work is library calls.
 #include <csignal>
+#include <cstdio>
 #include <exception>
 #include <iostream>
 #include <string>
@@ -12,6 +13,7 @@
 #include "cli/measure.hpp"
 #include "cli/memory_cap.hpp"
 #include "cli/options.hpp"
+#include "cli/phase_memory.hpp"
 #include "cli/pipeline.hpp"
 #include "cli/progress.hpp"
 #include "cli/report.hpp"
@@ -43,8 +45,9 @@ int run(const Options& o) {
     }
     render::RenderStats stats;
     render::Image image;
+    PhaseMemory memory;
     {
-        ProgressBar bar(o.progress);  // erased before anything below prints
+        ProgressBar bar(o.progress, o.stats ? &memory : nullptr);  // erased before anything below prints
         csg::Scene scene = evaluate_and_lower(o, o.eval, bar);
         if (o.command == Command::Check) return kOk;
         if (o.command == Command::Dump) {
@@ -55,7 +58,11 @@ int run(const Options& o) {
         ro.srgb8 = render::is_8bit_output(o.output);  // colour for an 8-bit file: store its bytes directly
         image = render_and_write(scene, ro, o.output, bar, &stats, {}, -1, o.progressive);
     }
-    if (o.stats) print_stats(stats, image);
+    memory.finish();
+    if (o.stats) {
+        print_stats(stats, image);
+        std::fputs(phase_memory_line(memory).c_str(), stderr);
+    }
     return kOk;
 }
 

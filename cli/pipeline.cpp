@@ -31,19 +31,21 @@ csg::Scene evaluate_and_lower(const Options& o, const EvalOptions& eval, Progres
     if (!evaluated.warnings.empty()) bar.print_above([&] { print_warnings(evaluated.warnings); });
     if (warnings) *warnings = evaluated.warnings;
     bar.phase("lower");
+    SourceLoc main;  // where a warning that the scene is empty points: the main file
+    if (!evaluated.graph.nodes.empty()) main.file = evaluated.graph.nodes[evaluated.graph.root].loc.file;
     // The studio camera frames the full image's shape (a crop or a band
-    // shows part of the same picture).
+    // shows part of the same picture). The graph is given up: lowering
+    // frees its nodes as soon as it can. `kerf measure` measures the solid:
+    // the ghosts are not lowered at all.
+    csg::Scene scene = lower_to_csg(std::move(evaluated.graph),
+                                    LowerOptions{o.look, double(o.render.width) / o.render.height,
+                                                 o.ghosts && o.command != Command::Measure});
     const bool renders = o.command == Command::Render || o.command == Command::Watch || o.command == Command::View;
-    // `kerf measure` measures the solid: the ghosts are not lowered at all.
-    csg::Scene scene = lower_to_csg(evaluated.graph, LowerOptions{o.look, double(o.render.width) / o.render.height,
-                                                                  o.ghosts && o.command != Command::Measure});
     if (scene.root == csg::kNone && renders) {
         // Nothing to draw: the image is the background. OpenSCAD 2021.01
         // writes that PNG silently and refuses an STL ("Current top level
         // object is empty."); kerf renders it and says so (docs/openscad.md,
         // "An empty model"). Located at the main file, as no statement made it.
-        SourceLoc main;
-        if (!evaluated.graph.nodes.empty()) main.file = evaluated.graph.nodes[evaluated.graph.root].loc.file;
         Diagnostic empty{Severity::Warning, main,
                          scene.ghosts.empty() ? "the scene has no solid: the image is only its background"
                                               : "the scene has no solid: the image is only its background and its ghosts",

@@ -31,7 +31,8 @@ std::string progress_line(const char* phase, double fraction, double elapsed, do
     return buf;
 }
 
-ProgressBar::ProgressBar(bool wanted) : enabled_(wanted && isatty(STDERR_FILENO) != 0), start_(Clock::now()), phase_start_(start_) {
+ProgressBar::ProgressBar(bool wanted, PhaseMemory* memory)
+    : enabled_(wanted && isatty(STDERR_FILENO) != 0), memory_(memory), start_(Clock::now()), phase_start_(start_) {
     if (enabled_) ticker_ = std::thread([this] { tick(); });
 }
 
@@ -47,6 +48,7 @@ ProgressBar::~ProgressBar() {
 }
 
 void ProgressBar::phase(const char* name) {
+    if (memory_) memory_->enter(name);
     if (!enabled_) return;
     std::lock_guard lock(mutex_);
     phase_ = name;
@@ -55,6 +57,7 @@ void ProgressBar::phase(const char* name) {
 }
 
 void ProgressBar::update(double fraction) {
+    if (memory_) memory_->enter("trace");  // once per phase: a repeated name is ignored
     if (!enabled_) return;
     std::lock_guard lock(mutex_);
     if (std::strcmp(phase_, "trace") != 0) {  // the BVHs are built: tracing starts

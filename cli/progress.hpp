@@ -10,12 +10,15 @@
 #include <string>
 #include <thread>
 
+#include "cli/phase_memory.hpp"
+
 namespace kerf::cli {
 
 class ProgressBar {
 public:
     // Drawn when `wanted` (not --no-progress) and stderr is a terminal.
-    explicit ProgressBar(bool wanted = true);
+    // `memory` (--stats), drawn or not: told of every phase change.
+    explicit ProgressBar(bool wanted = true, PhaseMemory* memory = nullptr);
     ~ProgressBar();  // erases the line
     // Starts a phase. "build" is followed by "trace" at the first update().
     void phase(const char* name);
@@ -32,6 +35,7 @@ private:
     void tick();
 
     bool enabled_;
+    PhaseMemory* memory_;
     const char* phase_ = "";
     double fraction_ = -1;  // < 0: the phase has no fraction
     bool drawn_ = false, done_ = false;

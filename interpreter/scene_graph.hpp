@@ -8,7 +8,9 @@
 // vocabulary from the evaluator to the renderer.
 #pragma once
 #include <cstdint>
+#include <cstring>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -37,17 +39,18 @@ enum class NodeKind : std::uint8_t {
 struct Node {
     NodeKind kind = NodeKind::Union;
     csg::PrimKind prim = csg::PrimKind::Sphere;  // Primitive only
+    // A 2D shape (docs/spec.md §10), carried as its extrusion over the unit
+    // slab 0 < z < 1: square a Box, circle a Cylinder, polygon a Prism; 2D
+    // transforms keep z, so every extrusion without twist or scale is a z
+    // map of it (docs/lowering.md, "2D shapes"). Beside the kinds, not at
+    // the end: 88 bytes a node instead of 96 (docs/performance.md, "Memory").
+    bool flat = false;
     std::uint32_t first_child = 0;     // into SceneGraph::child_refs
     std::uint32_t child_count = 0;
     std::uint32_t index = 0;           // Primitive: mesh index (Mesh only);
                                        // Transform: into matrices; Appearance: into materials
     double p[6] = {0, 0, 0, 0, 0, 0};  // Primitive parameters (csg::PrimKind says which)
     SourceLoc loc;                     // the statement that produced the node
-    // A 2D shape (docs/spec.md §10), carried as its extrusion over the unit
-    // slab 0 < z < 1: square a Box, circle a Cylinder, polygon a Prism; 2D
-    // transforms keep z, so every extrusion without twist or scale is a z
-    // map of it (docs/lowering.md, "2D shapes").
-    bool flat = false;
 };
 
 struct PolygonMesh {  // as written: polygon faces; lowering triangulates into csg::Mesh
@@ -56,10 +59,81 @@ struct PolygonMesh {  // as written: polygon faces; lowering triangulates into c
     bool solid = true;
 };
 
+// The Transform nodes' matrices (world_from_child). Most are translations
+// (a loop's translate() per leaf): those keep only their offset, 24 bytes
+// instead of a 128-byte matrix, so a million translated spheres hold 28 MB
+// here instead of 128 MB (docs/performance.md, "Memory"). A read returns
+// the matrix that was stored, bit for bit.
+class Transforms {
+public:
+    std::size_t size() const { return slots_.size(); }
+    bool empty() const { return slots_.empty(); }
+    std::size_t capacity() const { return slots_.capacity(); }
+    // Address space only: pages are touched as transforms arrive.
+    void reserve(std::size_t n) {
+        slots_.reserve(n);
+        offsets_.reserve(n);
+        general_.reserve(n);
+    }
+    glm::dmat4 operator[](std::size_t i) const {
+        const std::uint32_t s = slots_[i];
+        if (s & kGeneral) return general_[s & ~kGeneral];
+        glm::dmat4 m(1.0);
+        m[3] = glm::dvec4(offsets_[s], 1.0);
+        return m;
+    }
+    glm::dmat4 at(std::size_t i) const {
+        if (i >= size()) throw std::out_of_range("Transforms::at");
+        return (*this)[i];
+    }
+    void push_back(const glm::dmat4& m) { slots_.push_back(append(m)); }
+    // Replaces transform i (a translation may become a general matrix).
+    void set(std::size_t i, const glm::dmat4& m) {
+        const std::uint32_t s = slots_[i];
+        if (translation(m) != !(s & kGeneral)) slots_[i] = append(m);  // the old entry is left unused
+        else if (s & kGeneral) general_[s & ~kGeneral] = m;
+        else offsets_[s] = glm::dvec3(m[3]);
+    }
+    // Drops the transforms from n on (rolling back a trial build).
+    void resize(std::size_t n) {
+        while (slots_.size() > n) {
+            const std::uint32_t s = slots_.back();
+            slots_.pop_back();
+            if (s & kGeneral) {
+                if ((s & ~kGeneral) + 1 == general_.size()) general_.pop_back();
+            } else if (s + 1 == offsets_.size()) {
+                offsets_.pop_back();
+            }
+        }
+    }
+
+private:
+    static constexpr std::uint32_t kGeneral = 0x80000000u;
+    // A translation: the linear part and the last row exactly those of the
+    // identity, bit for bit (so -0.0 is kept as a general matrix).
+    static bool translation(const glm::dmat4& m) {
+        static const glm::dmat4 id(1.0);
+        return std::memcmp(&m[0], &id[0], sizeof(glm::dvec4) * 3) == 0 && std::memcmp(&m[3][3], &id[3][3], sizeof(double)) == 0;
+    }
+    std::uint32_t append(const glm::dmat4& m) {
+        if (offsets_.size() + general_.size() >= kGeneral) throw std::length_error("too many transforms");
+        if (translation(m)) {
+            offsets_.emplace_back(m[3]);
+            return static_cast<std::uint32_t>(offsets_.size() - 1);
+        }
+        general_.push_back(m);
+        return static_cast<std::uint32_t>(general_.size() - 1) | kGeneral;
+    }
+
+    std::vector<std::uint32_t> slots_;  // offsets_ index, or general_ index | kGeneral
+    std::vector<glm::dvec3> offsets_;
+    std::vector<glm::dmat4> general_;
+};
+
 struct SceneGraph {
     std::vector<Node> nodes;                 // children always before parents
     std::vector<std::uint32_t> child_refs;   // node indices, per node a contiguous run
-    std::vector<glm::dmat4> matrices;        // Transform: world_from_child (affine)
+    Transforms matrices;                     // Transform: world_from_child (affine)
     std::vector<csg::Material> materials;
     std::vector<PolygonMesh> meshes;
     std::vector<csg::Polygon2> polygons;     // Prism: polygon sections

@@ -3,6 +3,7 @@
 // nested unions/intersections/subtrahend unions by list splicing, dropping
 // what its box rules out), and turns them into one flat node when done.
 #include <stdexcept>
+#include <unordered_map>
 
 #include "lower/flat_tree.hpp"
 #include "csg/huge_pages.hpp"
@@ -45,6 +46,37 @@ bool same_pattern_space(const csg::Material& a, const csg::Material& b) {
            a.pattern_from_material.offset == b.pattern_from_material.offset;
 }
 
+// FlatTree::locs while building: each distinct (file, line, col) once.
+class LocTable {
+public:
+    std::vector<SourceLoc> locs;
+
+    std::uint32_t index(const SourceLoc& loc) {
+        const Key key{loc.file.get(), loc.line, loc.col};
+        if (key == last_) return last_index_;  // siblings from one statement
+        auto [it, added] = index_.try_emplace(key, static_cast<std::uint32_t>(locs.size()));
+        if (added) locs.push_back(loc);
+        last_ = key;
+        last_index_ = it->second;
+        return last_index_;
+    }
+
+private:
+    struct Key {
+        const SourceFile* file = nullptr;
+        std::uint32_t line = 0, col = 0;
+        bool operator==(const Key&) const = default;
+    };
+    struct KeyHash {
+        std::size_t operator()(const Key& k) const {
+            return std::hash<const void*>{}(k.file) ^ std::hash<std::uint64_t>{}((std::uint64_t(k.line) << 32) | k.col);
+        }
+    };
+    std::unordered_map<Key, std::uint32_t, KeyHash> index_;
+    Key last_{nullptr, ~0u, ~0u};
+    std::uint32_t last_index_ = kNone;
+};
+
 class TreeBuilder {
 public:
     // Leaves are written straight into the scene's vector (in creation order;
@@ -59,8 +91,10 @@ public:
     }
 
     std::vector<TNode> nodes;
-    std::vector<csg::Leaf>& leaves;  // material/mesh/source hold graph indices until emit
+    std::vector<Aabb> boxes;         // TNode::leaf of an operation points here
+    std::vector<csg::Leaf>& leaves;  // material/mesh/source hold builder indices until emit
     MaterialFrames frames;           // the leaves' material_frame indices point here
+    LocTable locs;                   // the leaves' source and the nodes' loc point here
 
     // Returns the root TNode, or kNone for the empty solid.
     std::uint32_t build() {
@@ -133,7 +167,7 @@ private:
         leaf.kind = gn.prim;
         for (int i = 0; i < 6; ++i) leaf.p[i] = gn.p[i];
         leaf.material = material;
-        leaf.source = gnode;
+        leaf.source = locs.index(gn.loc);
         const std::vector<glm::dvec3>* points = nullptr;
         if (gn.prim == csg::PrimKind::Mesh) {
             if (gn.index >= g_.meshes.size())
@@ -165,9 +199,8 @@ private:
         TNode t;
         t.op = csg::Op::Leaf;
         t.leaf = static_cast<std::uint32_t>(leaves.size() - 1);
-        t.gnode = gnode;
+        t.loc = leaf.source;
         t.hash = leaf_hash(leaf);
-        t.bounds = leaf.bounds;
         nodes.push_back(t);
         return static_cast<std::uint32_t>(nodes.size() - 1);
     }
@@ -185,6 +218,8 @@ private:
         f.count += t.count;
     }
 
+    const Aabb& bounds(std::uint32_t n) const { return box(nodes[n], leaves, boxes); }
+
     bool is_plane(std::uint32_t n) const {
         return nodes[n].op == csg::Op::Leaf && leaves[nodes[n].leaf].kind == csg::PrimKind::Plane;
     }
@@ -192,7 +227,7 @@ private:
     void add_subtrahend(Frame& f, std::uint32_t n) {
         // A subtrahend whose box misses the minuend's cannot remove anything;
         // nor can a (tilted, so unbounded-box) half-space missing that box.
-        if (Aabb::overlap(nodes[n].bounds, f.bounds).empty()) return;
+        if (Aabb::overlap(bounds(n), f.bounds).empty()) return;
         if (is_plane(n) && clip_by_halfspace(f.bounds, world_halfspace(leaves[nodes[n].leaf])).empty()) return;
         append(f, n);
     }
@@ -207,7 +242,7 @@ private:
             case NodeKind::Difference:
                 if (f.next_child == 1) {
                     if (r == kNone) { f.empty = true; return; }
-                    f.bounds = nodes[r].bounds;
+                    f.bounds = bounds(r);
                     if (nodes[r].op == csg::Op::Difference) {
                         // (a − b) − c = a − (b ∪ c): adopt the inner minuend and subtrahends.
                         const TNode& d = nodes[r];
@@ -235,7 +270,7 @@ private:
             default:  // Union, Transform, Appearance: all unions of their children
                 if (r == kNone) return;
                 if (nodes[r].op == csg::Op::Union) splice(f, nodes[r]); else append(f, r);
-                f.bounds.extend(nodes[r].bounds);
+                f.bounds.extend(bounds(r));
                 return;
         }
     }
@@ -244,11 +279,12 @@ private:
                           std::uint32_t count, const Aabb& bounds) {
         TNode t;
         t.op = op;
-        t.gnode = f.gnode;
+        t.loc = locs.index(g_.nodes[f.gnode].loc);
         t.head = head;
         t.tail = tail;
         t.count = count;
-        t.bounds = bounds;
+        t.leaf = static_cast<std::uint32_t>(boxes.size());
+        boxes.push_back(bounds);
         nodes.push_back(t);
         return static_cast<std::uint32_t>(nodes.size() - 1);
     }
@@ -274,7 +310,7 @@ private:
         if (f.empty || f.count == 0) return kNone;
         f.count = drop_duplicate_leaves(nodes, leaves, f.head, f.tail, f.count);
         Aabb box = Aabb::everything();
-        for (std::uint32_t c = f.head; c != kNone; c = nodes[c].next) box = Aabb::overlap(box, nodes[c].bounds);
+        for (std::uint32_t c = f.head; c != kNone; c = nodes[c].next) box = Aabb::overlap(box, bounds(c));
         for (std::uint32_t c = f.head; c != kNone && !box.empty(); c = nodes[c].next)
             if (is_plane(c)) box = clip_by_halfspace(box, world_halfspace(leaves[nodes[c].leaf]));
         if (box.empty()) return kNone;
@@ -324,12 +360,12 @@ private:
             Aabb ubox;
             for (std::uint32_t m = u.head; m != kNone;) {
                 const std::uint32_t after = nodes[m].next;
-                if (!Aabb::overlap(nodes[m].bounds, box).empty()) {
+                if (!Aabb::overlap(bounds(m), box).empty()) {
                     nodes[m].next = kNone;
                     if (head == kNone) head = m; else nodes[tail].next = m;
                     tail = m;
                     ++count;
-                    ubox.extend(nodes[m].bounds);
+                    ubox.extend(bounds(m));
                 }
                 m = after;
             }
@@ -343,7 +379,7 @@ private:
                 u.head = head;
                 u.tail = tail;
                 u.count = count;
-                u.bounds = ubox;
+                boxes[u.leaf] = ubox;
                 append(f, c);
             }
             c = next;
@@ -387,7 +423,9 @@ FlatTree build_flat_tree(const graph::SceneGraph& graph, std::vector<csg::Leaf>&
     FlatTree tree;
     tree.root = builder.build();
     tree.nodes = std::move(builder.nodes);
+    tree.boxes = std::move(builder.boxes);
     tree.material_frames = std::move(builder.frames.frames);
+    tree.locs = std::move(builder.locs.locs);
     return tree;
 }
 

@@ -72,7 +72,7 @@ private:
             csg::Node node;
             node.op = tn.op;
             node.parent = it.parent;
-            node.bounds = tn.bounds;
+            node.bounds = box(tn, s_.leaves, t_.boxes);
             if (it.slot != kNone) s_.children[it.slot] = index;
             if (tn.op == csg::Op::Leaf) {
                 node.first = static_cast<std::uint32_t>(order_.size());
@@ -97,7 +97,7 @@ private:
     // stack is sized for (docs/lowering.md, "Depth").
     [[noreturn]] void too_deep(const TNode& tn) const {
         const std::string limit = std::to_string(csg::kMaxDepth);
-        throw SourceError(g_.nodes[tn.gnode].loc, "the CSG tree is deeper than " + limit +
+        throw SourceError(t_.locs[tn.loc], "the CSG tree is deeper than " + limit +
                                                       " levels here (after unions and intersections are merged); "
                                                       "kerf renders trees up to " + limit + " levels deep");
     }
@@ -126,7 +126,7 @@ private:
         leaf.material_frame = frame(leaf.material_frame);
         if (leaf.mesh != kNone) leaf.mesh = mesh(leaf.mesh);
         if (leaf.polygon != kNone) leaf.polygon = polygon(leaf.polygon);
-        leaf.source = source(g_.nodes[leaf.source].loc);
+        leaf.source = source(t_.locs[leaf.source]);
     }
 
     std::uint32_t material(std::uint32_t gm) {

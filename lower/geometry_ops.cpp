@@ -251,7 +251,7 @@ private:
         const lowering::FlatTree t = lowering::build_flat_tree(out_, scratch);
         out_.root = keep;
         if (t.root == csg::kNone) return child;
-        const csg::Aabb box = t.nodes[t.root].bounds;
+        const csg::Aabb box = lowering::box(t.nodes[t.root], scratch, t.boxes);
         const glm::dvec3 size = box.hi - box.lo;
         if (!std::isfinite(size.x) || !std::isfinite(size.y) || !std::isfinite(size.z))
             throw SourceError(n.loc, "resize: the child is unbounded (a half-space), it has no size");

@@ -19,7 +19,8 @@ namespace {
 // (with the studio look, the ground that catches their shadows and the
 // light background come with them), the background (docs/language.md,
 // "The default look").
-void apply_scene_statements(const graph::SceneGraph& g, const LowerOptions& o, csg::Scene& s) {
+// `top`: where the default camera is said to come from.
+void apply_scene_statements(const graph::SceneGraph& g, const SourceLoc& top, const LowerOptions& o, csg::Scene& s) {
     const bool studio = o.look == Look::Studio;
     // The default camera frames the ghosts too, as OpenSCAD's preview does.
     csg::Aabb frame = framing_box(s);
@@ -30,10 +31,7 @@ void apply_scene_statements(const graph::SceneGraph& g, const LowerOptions& o, c
     if (g.camera) {
         s.camera = *g.camera;
     } else {
-        // Located at the top of the main file: the default camera belongs
-        // to no statement of its own.
-        const SourceLoc& where = g.nodes.empty() ? SourceLoc{} : g.nodes[g.root].loc;
-        s.camera = studio ? studio_camera(frame, o.aspect, where) : default_camera(frame, where);
+        s.camera = studio ? studio_camera(frame, o.aspect, top) : default_camera(frame, top);
     }
     if (!g.lights.empty()) s.lights = g.lights;
     else if (!studio) s.lights = default_lights(s.camera);
@@ -55,28 +53,63 @@ void apply_scene_statements(const graph::SceneGraph& g, const LowerOptions& o, c
     s.fog = g.fog.value_or(csg::Fog{});
 }
 
-}  // namespace
+// The node arrays: what only build_flat_tree reads.
+void release_nodes(graph::SceneGraph& g) {
+    std::vector<graph::Node>().swap(g.nodes);
+    std::vector<std::uint32_t>().swap(g.child_refs);
+    g.matrices = graph::Transforms{};
+}
 
-csg::Scene lower_to_csg(const graph::SceneGraph& input, const LowerOptions& options) {
+// `owned`: the input when the caller gave it up; its nodes are freed as
+// soon as the flat tree holds what they said, so the graph and the scene's
+// nodes never coexist (docs/performance.md, "Memory").
+csg::Scene lower(const graph::SceneGraph& input, graph::SceneGraph* owned, const LowerOptions& options) {
+    // Located at the top of the main file: the default camera belongs to
+    // no statement of its own.
+    const SourceLoc top = input.nodes.empty() ? SourceLoc{} : input.nodes[input.root].loc;
     graph::SceneGraph resolved;  // hull(), minkowski(), resize() replaced, when there are any
-    const graph::SceneGraph& graph = resolve_geometry_ops(input, resolved) ? resolved : input;
+    const bool ops = resolve_geometry_ops(input, resolved);
+    if (ops && owned) release_nodes(*owned);
+    const graph::SceneGraph& graph = ops ? resolved : input;
     csg::Scene scene;
     const lowering::FlatTree tree = lowering::build_flat_tree(graph, scene.leaves);
-    lowering::emit_flat_tree(graph, tree, scene);
+    // The ghosts' trees are flattened too before the nodes go.
+    struct Ghost {
+        csg::GhostKind kind;
+        csg::Scene scene;
+        lowering::FlatTree tree;
+    };
+    std::vector<Ghost> ghosts;
     if (options.ghosts)
         for (csg::GhostKind kind : {csg::GhostKind::Background, csg::GhostKind::Highlight}) {
             const std::uint32_t root = graph.ghost_roots[std::size_t(kind)];
             if (root == csg::kNone) continue;
-            csg::Scene ghost;
-            lowering::emit_flat_tree(graph, lowering::build_flat_tree(graph, ghost.leaves, root), ghost);
-            if (ghost.root == csg::kNone) continue;
-            // A `#` part is the highlight colour whatever colours it has inside.
-            if (kind == csg::GhostKind::Highlight)
-                for (csg::Material& m : ghost.materials) m = csg::ghost_material(kind);
-            scene.ghosts.push_back(std::move(ghost));
+            Ghost& g = ghosts.emplace_back(Ghost{kind, csg::Scene{}, {}});
+            g.tree = lowering::build_flat_tree(graph, g.scene.leaves, root);
         }
-    apply_scene_statements(graph, options, scene);
+    if (ops) release_nodes(resolved);
+    else if (owned) release_nodes(*owned);
+    lowering::emit_flat_tree(graph, tree, scene);
+    for (auto& [kind, ghost, ghost_tree] : ghosts) {
+        lowering::emit_flat_tree(graph, ghost_tree, ghost);
+        if (ghost.root == csg::kNone) continue;
+        // A `#` part is the highlight colour whatever colours it has inside.
+        if (kind == csg::GhostKind::Highlight)
+            for (csg::Material& m : ghost.materials) m = csg::ghost_material(kind);
+        scene.ghosts.push_back(std::move(ghost));
+    }
+    apply_scene_statements(graph, top, options, scene);
     return scene;
+}
+
+}  // namespace
+
+csg::Scene lower_to_csg(const graph::SceneGraph& graph, const LowerOptions& options) {
+    return lower(graph, nullptr, options);
+}
+
+csg::Scene lower_to_csg(graph::SceneGraph&& graph, const LowerOptions& options) {
+    return lower(graph, &graph, options);
 }
 
 }  // namespace kerf

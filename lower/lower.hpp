@@ -25,5 +25,11 @@ struct LowerOptions {
 // Throws SourceError for scene-level problems it can locate (e.g. a
 // singular transform reaching a leaf).
 csg::Scene lower_to_csg(const graph::SceneGraph& graph, const LowerOptions& options = {});
+// The same for a graph the caller is done with: its nodes, child lists and
+// transforms are freed as soon as the flattened tree is built, before the
+// scene's nodes are written (the peak of a 10^6-leaf lowering,
+// docs/performance.md "Memory"); materials, meshes, polygons and the scene
+// statements are left.
+csg::Scene lower_to_csg(graph::SceneGraph&& graph, const LowerOptions& options = {});
 
 }  // namespace kerf

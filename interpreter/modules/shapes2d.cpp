@@ -138,9 +138,10 @@ void taper(graph::SceneGraph& g, std::uint32_t root, double s) {
         // top sections), not with a Minkowski sum or a resize's box: those
         // are swept instead (linear_extrude below).
         if (n.kind == graph::NodeKind::Transform) {
-            glm::dmat4& m = g.matrices[n.index];
+            glm::dmat4 m = g.matrices[n.index];
             m[2][0] = (s - 1) * m[3][0];
             m[2][1] = (s - 1) * m[3][1];
+            g.matrices.set(n.index, m);
         }
         for (std::uint32_t k = 0; k < n.child_count; ++k) todo.push_back(g.child_refs[n.first_child + k]);
     }

@@ -21,6 +21,11 @@ using csg::Node;
 using csg::Op;
 
 constexpr std::uint32_t kDirectChildren = 8;  // more children than this: own BVH
+// From this many items on, a BVH is built for memory (docs/performance.md,
+// "Memory"): Embree's compact layout and its low-quality (Morton) builder.
+// Smaller ones, every reference model's among them, keep the high-quality
+// build their trace times were measured with.
+constexpr std::size_t kHugeAccel = std::size_t(1) << 16;
 
 void embree_error(void*, RTCError code, const char* message) {
     std::fprintf(stderr, "kerf: embree error %d: %s\n", int(code), message ? message : "");
@@ -87,8 +92,9 @@ void CsgTracer::Impl::build_accel(Accel& accel, const std::vector<std::uint32_t>
     if (accel.items.size() <= kDirectChildren) return;
     accel.bvh = rtcNewScene(device);
     if (!accel.bvh) embree_failed(device, "the scene");
-    rtcSetSceneFlags(accel.bvh, RTC_SCENE_FLAG_ROBUST);
-    rtcSetSceneBuildQuality(accel.bvh, RTC_BUILD_QUALITY_HIGH);
+    const bool huge = accel.items.size() >= kHugeAccel;
+    rtcSetSceneFlags(accel.bvh, huge ? RTCSceneFlags(RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_COMPACT) : RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneBuildQuality(accel.bvh, huge ? RTC_BUILD_QUALITY_LOW : RTC_BUILD_QUALITY_HIGH);
     RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
     if (!geom) embree_failed(device, "the scene");
     rtcSetGeometryUserPrimitiveCount(geom, unsigned(accel.items.size()));
@@ -101,6 +107,7 @@ void CsgTracer::Impl::build_accel(Accel& accel, const std::vector<std::uint32_t>
     rtcReleaseGeometry(geom);
     rtcCommitScene(accel.bvh);
     check_embree(device, "the scene");
+    std::vector<RTCBounds>().swap(accel.boxes);
 }
 
 void check_embree(RTCDevice device, const char* what) {

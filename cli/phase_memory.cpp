@@ -1,0 +1,38 @@
+#include "cli/phase_memory.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+
+namespace kerf::cli {
+
+void PhaseMemory::enter(const char* name) {
+    std::lock_guard lock(mutex_);
+    if (name && current_ == name) return;
+    if (!current_.empty()) {
+        Mark m{current_, -1, -1};
+        std::ifstream status("/proc/self/status");
+        for (std::string line; std::getline(status, line);) {
+            if (line.rfind("VmHWM:", 0) == 0) m.peak_kb = std::strtol(line.c_str() + 6, nullptr, 10);
+            if (line.rfind("VmRSS:", 0) == 0) m.resident_kb = std::strtol(line.c_str() + 6, nullptr, 10);
+        }
+        if (m.peak_kb >= 0 && m.resident_kb >= 0) marks_.push_back(std::move(m));
+    }
+    current_ = name ? name : "";
+    if (std::getenv("KERF_RESET_HWM")) { std::FILE* f = std::fopen("/proc/self/clear_refs", "w"); std::fputs("5", f); std::fclose(f); }
+}
+
+std::string phase_memory_line(const PhaseMemory& m) {
+    if (m.marks().empty()) return {};
+    std::string line = "stats: memory (peak so far / resident, MB) at the end of:";
+    char buf[96];
+    for (std::size_t i = 0; i < m.marks().size(); ++i) {
+        const PhaseMemory::Mark& k = m.marks()[i];
+        std::snprintf(buf, sizeof buf, "%s %s %.0f/%.0f", i ? "," : "", k.phase.c_str(), k.peak_kb / 1024.0,
+                      k.resident_kb / 1024.0);
+        line += buf;
+    }
+    return line + "\n";
+}
+
+}  // namespace kerf::cli
