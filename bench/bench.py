@@ -50,7 +50,7 @@ def run(cmd, timeout=None):
     return wall, int(rss.group(1)) / 1024.0, p.stderr
 
 
-STATS = re.compile(r"stats: (\d+)x(\d+), (\d+) rays \((\d+) primary, (\d+) shadow, (\d+) reflect\)\s*"
+STATS = re.compile(r"stats: (\d+)x(\d+), (\d+) rays \((\d+) primary, (\d+) shadow, (\d+) reflect(?:, \d+ refract)?\)\s*"
                    r"stats: render ([\d.]+) s, ([\d.]+) MRay/s\s*"
                    r"stats: per ray: ([\d.]+) union, ([\d.]+) difference, ([\d.]+) intersection ops, "
                    r"([\d.]+) primitive interval tests")

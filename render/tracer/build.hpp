@@ -25,6 +25,8 @@ struct Accel {
     std::vector<RTCBounds> boxes;
     std::vector<std::uint32_t> always;  // unbounded nodes (half-spaces): tested for every ray
     std::vector<Ball> balls;            // top only: per item, or empty (unit_balls.hpp)
+    std::vector<SphereMinus> sphere_minus;  // top only: per item, or empty (ball_chords.hpp)
+    std::vector<SubBound> subs;             // their subtrahends
 };
 
 // Embree reports failures (out of memory above all) as null handles and

@@ -2,10 +2,12 @@
 // The root's units get closest-hit semantics in the top BVH: each unit's
 // exact first entry shrinks the float ray's tfar, so Embree culls every unit
 // behind it. Ties go to the lower unit index, so traversal order never
-// changes the result.
+// changes the result. Sphere-minus-few units are first bounded by the
+// chords of their balls and evaluated after the traversal, nearest bound
+// first (README.md, "Ball chords").
 #include <algorithm>
 
-#include "render/tracer/ray_state.hpp"
+#include "render/tracer/ball_chords.hpp"
 
 namespace kerf::render {
 
@@ -34,12 +36,56 @@ bool try_unit_entry(TopContext& ctx, std::uint32_t unit_index, std::uint32_t nod
     return better;
 }
 
+// A sphere-minus-few unit (ball_chords.hpp): dropped when its chords prove
+// it has no entry before the best so far (or the smallest upper bound),
+// else queued with its lower bound; its upper bound shrinks the float ray.
+// False when the caller must evaluate it now (no upper bound, or the queue
+// is full).
+bool queue_by_chords(TopContext& ctx, std::uint32_t item, std::uint32_t node, float& tfar) {
+    if (ctx.ncandidates == TopContext::kMaxCandidates) return false;
+    UnitChords u;
+    const double cut = std::min(ctx.best, ctx.ub);
+    if (!unit_chords(*ctx.state, item, node, ctx.tnear, cut, u)) return true;
+    const double lower = chords_lower(u, ctx.tnear, cut);
+    if (lower == kInf || lower > cut) return true;
+    const double upper = chords_upper(u, ctx.tnear, cut);
+    // No upper bound (a subtrahend's box covers the minuend): evaluate it now,
+    // so its entry shrinks the ray as before.
+    if (upper == kInf) return false;
+    if (upper < ctx.ub) {
+        ctx.ub = upper;
+        tfar = std::min(tfar, embree_t(*ctx.state, upper));
+    }
+    ctx.candidates[ctx.ncandidates++] = {lower, item};
+    return true;
+}
+
+// The queued units, nearest lower bound first, until the bound passes the
+// best entry found: usually the first one is the answer and the rest are
+// never evaluated. (Ties go by unit index in try_unit_entry, so the order
+// only changes the work.)
+void evaluate_queued(TopContext& ctx) {
+    TopContext::Candidate* c = ctx.candidates;
+    std::sort(c, c + ctx.ncandidates, [](const TopContext::Candidate& x, const TopContext::Candidate& y) {
+        return x.lower < y.lower || (x.lower == y.lower && x.item < y.item);
+    });
+    for (int i = 0; i < ctx.ncandidates; ++i) {
+        if (c[i].lower > std::min(ctx.best, ctx.ub)) break;
+        try_unit_entry(ctx, c[i].item, ctx.accel->items[c[i].item]);
+    }
+}
+
 }  // namespace
 
 void top_intersect_callback(const RTCIntersectFunctionNArguments* args) {
     if (!args->valid[0]) return;
     auto* ctx = reinterpret_cast<TopContext*>(args->context);
     if (ctx->gather) return gather_unit(*ctx, ctx->accel->items[args->primID]);
+    const std::vector<SphereMinus>& sm = ctx->accel->sphere_minus;
+    if (args->primID < sm.size() && sm[args->primID].r_in >= 0 &&
+        queue_by_chords(*ctx, args->primID, ctx->accel->items[args->primID],
+                        reinterpret_cast<RTCRayHit*>(args->rayhit)->ray.tfar))
+        return;
     if (try_unit_entry(*ctx, args->primID, ctx->accel->items[args->primID])) {
         RTCRayHit* rh = reinterpret_cast<RTCRayHit*>(args->rayhit);
         rh->ray.tfar = std::min(rh->ray.tfar, embree_t(*ctx->state, ctx->best));
@@ -63,6 +109,7 @@ bool CsgTracer::intersect(const TraceRay& ray, TraceHit& hit, TraceScratch& scra
     } else {
         RTCRayHit rh = make_rayhit(st, ray.tnear, ctx.best);
         rtcIntersect1(impl_->top.bvh, &ctx.rtc, &rh);
+        if (ctx.ncandidates > 0) evaluate_queued(ctx);
     }
     if (!ctx.found) return false;
     hit.t = ctx.best;

@@ -183,6 +183,17 @@ struct TopContext {
     bool found;
     bool gather = false;      // inside_spans: keep every unit's spans on the stack
     double gather_eps = 0;    // inside_spans: the largest degenerate rule met
+    // intersect: the units the ball chords left open (ball_chords.hpp),
+    // evaluated after the traversal in the order of their lower bounds, and
+    // `ub`, the smallest upper bound the chords gave (never below the answer).
+    struct Candidate {
+        double lower;
+        std::uint32_t item;
+    };
+    static constexpr int kMaxCandidates = 32;
+    Candidate candidates[kMaxCandidates];
+    int ncandidates = 0;
+    double ub = kInf;
 
     TopContext(RayState& st, const TraceRay& ray)
         : state(&st), accel(&st.impl->top), tnear(ray.tnear), best(ray.tfar), best_unit(0), found(false) {

@@ -2,10 +2,12 @@
 // span of positive length inside (tnear, tfar)? Uses Embree's occlusion
 // query and stops at the first unit that blocks (the callback sets
 // tfar = -inf); differences stop at their first piece that answers (Need::Any).
+// Sphere-minus-few units are first decided by the chords of their balls
+// (README.md, "Ball chords").
 #include <algorithm>
 #include <limits>
 
-#include "render/tracer/ray_state.hpp"
+#include "render/tracer/ball_chords.hpp"
 
 namespace kerf::render {
 
@@ -27,12 +29,28 @@ bool unit_blocks(TopContext& ctx, std::uint32_t item, std::uint32_t node) {
     return blocks;
 }
 
+// A sphere-minus-few unit decided by the chords of its balls
+// (ball_chords.hpp): 0 no span in the window, 1 a span longer than the
+// degenerate rule in it, -1 not proven (evaluate it).
+int blocks_by_chords(TopContext& ctx, std::uint32_t item, std::uint32_t node) {
+    UnitChords u;
+    if (!unit_chords(*ctx.state, item, node, ctx.tnear, ctx.best, u)) return 0;
+    if (chords_lower(u, ctx.tnear, ctx.best) == kInf) return 0;
+    return chords_inside(u, ctx.tnear, ctx.best) < kInf ? 1 : -1;
+}
+
 }  // namespace
 
 void top_occluded_callback(const RTCOccludedFunctionNArguments* args) {
     if (!args->valid[0]) return;
     auto* ctx = reinterpret_cast<TopContext*>(args->context);
-    if (unit_blocks(*ctx, args->primID, ctx->accel->items[args->primID])) {
+    const std::vector<SphereMinus>& sm = ctx->accel->sphere_minus;
+    int by_chords = -1;
+    if (args->primID < sm.size() && sm[args->primID].r_in >= 0) {
+        by_chords = blocks_by_chords(*ctx, args->primID, ctx->accel->items[args->primID]);
+        if (by_chords == 0) return;
+    }
+    if (by_chords == 1 || unit_blocks(*ctx, args->primID, ctx->accel->items[args->primID])) {
         ctx->found = true;
         reinterpret_cast<RTCRay*>(args->ray)->tfar = -std::numeric_limits<float>::infinity();
     }

@@ -18,6 +18,19 @@ double stretch_bound(const glm::dmat3& m) {
     return std::sqrt(worst) * (1 + 1e-12);
 }
 
+// The sphere leaf `id`'s radius bounds: the largest and smallest stretch of
+// its world_from_object (the smallest as 1 / the largest of the inverse);
+// r < 0 when `id` is no sphere leaf.
+void sphere_radii(const csg::Scene& scene, std::uint32_t id, double& r_out, double& r_in) {
+    r_out = r_in = -1;
+    const csg::Node& n = scene.nodes[id];
+    if (n.op != csg::Op::Leaf) return;
+    const csg::Leaf& leaf = scene.leaves[n.first];
+    if (leaf.kind != csg::PrimKind::Sphere) return;
+    r_out = leaf.p[0] * stretch_bound(leaf.world_from_object.linear);
+    r_in = leaf.p[0] / stretch_bound(leaf.object_from_world.linear);
+}
+
 Ball node_ball(const csg::Scene& scene, std::uint32_t id, int depth) {
     const csg::Node& n = scene.nodes[id];
     if (depth > 64) return {};  // deep chains: not worth following
@@ -58,6 +71,55 @@ std::vector<Ball> unit_balls(const csg::Scene& scene, const std::vector<std::uin
         // of the leaf's own sphere test; 4 degenerate rules: beyond every
         // window slack of the unit's evaluation.
         out[i].r = out[i].r * (1 + 1e-9) + 4 * pad[units[i]];
+        any = true;
+    }
+    if (!any) out.clear();
+    return out;
+}
+
+std::vector<SphereMinus> sphere_minus_units(const csg::Scene& scene, const std::vector<std::uint32_t>& units,
+                                            const std::vector<double>& pad, std::vector<SubBound>& subs) {
+    std::vector<SphereMinus> out(units.size());
+    bool any = false;
+    for (std::size_t i = 0; i < units.size(); ++i) {
+        const csg::Node& n = scene.nodes[units[i]];
+        if (n.op != csg::Op::Difference || n.count < 2 || n.count - 1 > SphereMinus::kMaxSubs) continue;
+        double r_out, r_in;
+        sphere_radii(scene, scene.children[n.first], r_out, r_in);
+        const double e = pad[units[i]];
+        // The same padding as unit_balls, inwards for what must lie inside.
+        r_in = r_in * (1 - 1e-9) - 4 * e;
+        if (r_out < 0 || !(r_in > 0)) continue;
+        SphereMinus u;
+        u.r_in = r_in;
+        u.first = std::uint32_t(subs.size());
+        bool ok = true;
+        for (std::uint32_t k = 1; k < n.count && ok; ++k) {
+            const std::uint32_t id = scene.children[n.first + k];
+            const csg::Aabb& b = scene.nodes[id].bounds;
+            SubBound s;
+            s.box = {b.lo - glm::dvec3(4 * e), b.hi + glm::dvec3(4 * e)};
+            sphere_radii(scene, id, s.r_out, s.r_in);
+            // A box no smaller than the minuend's ball (a cutting half-space
+            // made of a big cube) would only ever cover it: the chords could
+            // prove nothing, and computing them would be waste.
+            if (s.r_out < 0 && !(0.5 * glm::length(b.hi - b.lo) < r_out)) ok = false;
+            if (s.r_out >= 0) {
+                s.c = scene.leaves[scene.nodes[id].first].world_from_object.offset;
+                s.r_out = s.r_out * (1 + 1e-9) + 4 * e;
+                s.r_in = s.r_in * (1 - 1e-9) - 4 * e;
+                if (!(s.r_in > 0)) s.r_in = -1;
+            }
+            ok = ok && !b.empty() && std::isfinite(glm::dot(s.box.lo, s.box.lo)) && std::isfinite(glm::dot(s.box.hi, s.box.hi)) &&
+                 std::isfinite(s.r_out) && std::isfinite(glm::dot(s.c, s.c));
+            subs.push_back(s);
+        }
+        if (!ok) {
+            subs.resize(u.first);
+            continue;
+        }
+        u.count = n.count - 1;
+        out[i] = u;
         any = true;
     }
     if (!any) out.clear();

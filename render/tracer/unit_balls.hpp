@@ -27,11 +27,35 @@ struct Ball {
     double r = -1;  // < 0: none known (the unit is evaluated as before)
 };
 
+// A subtrahend of a sphere-minus-few unit (ball_chords.hpp): the ball around
+// it, or else its box, and the ball inside it, if any (a sphere leaf).
+struct SubBound {
+    glm::dvec3 c{0.0};
+    double r_out = -1;  // < 0: its outer bound is `box`
+    double r_in = -1;   // < 0: nothing known inside it
+    csg::Aabb box;      // its bounds grown by the unit's degenerate rule
+};
+
+// A unit that is a sphere leaf minus at most kMaxSubs other nodes: the
+// sphere's inner ball (the outer one is the unit's Ball) and its
+// subtrahends' bounds at subs[first..first+count).
+struct SphereMinus {
+    double r_in = -1;  // < 0: not such a unit
+    std::uint32_t first = 0, count = 0;
+    static constexpr std::uint32_t kMaxSubs = 8;  // more: an own BVH, left to it
+};
+
 // Per unit (in `units` order), padded by `pad[unit]` (world length). Empty
 // when no unit has a ball, or only leaves do (a leaf's ball test would
 // duplicate its own interval test): scenes without such units pay nothing.
 std::vector<Ball> unit_balls(const csg::Scene& scene, const std::vector<std::uint32_t>& units,
                              const std::vector<double>& pad);
+
+// Per unit (in `units` order) its SphereMinus, with the subtrahends appended
+// to `subs`; balls shrunk (inner) or grown (outer) by the same padding as
+// unit_balls. Empty when no unit is one.
+std::vector<SphereMinus> sphere_minus_units(const csg::Scene& scene, const std::vector<std::uint32_t>& units,
+                                            const std::vector<double>& pad, std::vector<SubBound>& subs);
 
 // True if the segment [a, b] of o + t·d is provably outside `ball`: the
 // line misses it or its chord lies wholly before a or after b. inv_len2 =

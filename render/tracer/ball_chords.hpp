@@ -1,0 +1,184 @@
+// Bounds on a sphere-minus-few unit (unit_balls.hpp, SphereMinus: a cell,
+// a shell segment) along one ray from the chords of its balls alone, before
+// any of its evaluation: in a crowd of overlapping cells most units the ray
+// crosses before its visible hit are entered through their hollow, and the
+// chords prove it with a few multiplies (README.md, "Ball chords").
+//
+// Each ball is padded beyond the round-off of the leaves' own interval
+// tests (the same padding as the unit balls, grown for an outer ball and
+// shrunk for an inner one, plus the round-off of the chord itself), so:
+// - the minuend's computed span lies inside its outer chord and holds its
+//   inner chord, and the same for each subtrahend (a subtrahend that is not
+//   a sphere leaf: its box chord outside, nothing inside);
+// - so no piece of the unit starts (or overlaps the window) where the
+//   subtrahends' inner chords cover the minuend's outer chord: the lower
+//   bound;
+// - and a stretch of the minuend's inner chord clear of every subtrahend's
+//   outer chord, longer than twice the degenerate rule, lies in a piece the
+//   exact evaluation keeps: the upper bound, and a proven shadow.
+// The answers the callers take from these are the ones the exact
+// evaluation gives; only the work shrinks.
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "render/tracer/ray_state.hpp"
+
+namespace kerf::render {
+
+struct Chord {
+    double t0, t1;  // empty unless t0 <= t1
+};
+constexpr Chord kNoChord{kInf, -kInf};
+
+namespace ball_chords_detail {
+
+// Where a ball's centre lies from the ray: the outer and inner chords of
+// any radius follow from these.
+struct Centre {
+    double tc, q2, w1;
+};
+
+[[gnu::always_inline]] inline Centre centre(const RayState& st, const glm::dvec3& c, double inv_len2) {
+    Centre k;
+    const double wx = c.x - st.o.x, wy = c.y - st.o.y, wz = c.z - st.o.z;
+    k.tc = (wx * st.d.x + wy * st.d.y + wz * st.d.z) * inv_len2;
+    const double cx = wx - k.tc * st.d.x, cy = wy - k.tc * st.d.y, cz = wz - k.tc * st.d.z;
+    k.q2 = cx * cx + cy * cy + cz * cz;
+    k.w1 = std::abs(wx) + std::abs(wy) + std::abs(wz);
+    return k;
+}
+
+// Outer (grow = +1) or inner (grow = -1) chord of the ball of radius r
+// around k, padded per ray by the origin's rule and the relative round-off;
+// the last term bounds the round-off of r² - |c0|² (it matters at grazing
+// chords; w1² >= |w|²).
+[[gnu::always_inline]] inline Chord chord(const Centre& k, double r, double grow, double slack_abs, double slack_rel,
+                                          double inv_len2) {
+    Chord ch = kNoChord;
+    if (!(r > 0)) return ch;
+    const double rr = r + grow * (slack_abs + slack_rel * k.w1);
+    if (!(rr > 0)) return ch;
+    const double h2 = (rr * rr - k.q2 + grow * 1e-13 * (k.w1 * k.w1 + rr * rr)) * inv_len2;
+    if (!(h2 > 0)) return ch;
+    const double h = std::sqrt(h2);
+    ch.t0 = k.tc - h;
+    ch.t1 = k.tc + h;
+    return ch;
+}
+
+}  // namespace ball_chords_detail
+
+// The chords of a unit's balls along the state's ray. (Left uninitialised:
+// unit_chords writes what is read.)
+struct UnitChords {
+    Chord m_out, m_in;  // the minuend sphere
+    Chord s_out[SphereMinus::kMaxSubs], s_in[SphereMinus::kMaxSubs];
+    std::uint32_t n;
+    double eps;  // the unit's degenerate rule (t)
+};
+
+// The chords of unit `item` of the top BVH (which has a SphereMinus) for
+// the window [a, b]. False, with the rest not computed, when the minuend's
+// outer chord misses the window (the unit has no span there).
+inline bool unit_chords(const RayState& st, std::uint32_t item, std::uint32_t node, double a, double b,
+                        UnitChords& u) {
+    using namespace ball_chords_detail;
+    const CsgTracer::Impl& impl = *st.impl;
+    const double inv_len2 = st.inv_len * st.inv_len, slack_abs = 4 * st.eps_ray, rel = impl.ball_slack;
+    const Ball& ball = impl.top.balls[item];
+    const Centre m = centre(st, ball.c, inv_len2);
+    {
+        // Most units the ray's box test lets through miss here: decided
+        // without the square root (h < a - tc, h < tc - b), whose latency
+        // was most of their cost.
+        const double rr = ball.r + slack_abs + rel * m.w1;
+        const double h2 = (rr * rr - m.q2 + 1e-13 * (m.w1 * m.w1 + rr * rr)) * inv_len2;
+        if (!(h2 > 0)) return false;
+        if (m.tc < a && (a - m.tc) * (a - m.tc) > h2) return false;
+        if (m.tc > b && (m.tc - b) * (m.tc - b) > h2) return false;
+    }
+    u.m_out = chord(m, ball.r, 1, slack_abs, rel, inv_len2);
+    if (!(u.m_out.t0 <= b && u.m_out.t1 >= a)) return false;
+    const SphereMinus& sm = impl.top.sphere_minus[item];
+    u.eps = (impl.node_eps[node] + st.eps_ray) * st.inv_len;
+    u.m_in = chord(m, sm.r_in, -1, slack_abs, rel, inv_len2);
+    u.n = sm.count;
+    for (std::uint32_t k = 0; k < sm.count; ++k) {
+        const SubBound& s = impl.top.subs[sm.first + k];
+        if (s.r_out >= 0) {
+            const Centre c = centre(st, s.c, inv_len2);
+            u.s_out[k] = chord(c, s.r_out, 1, slack_abs, rel, inv_len2);
+            u.s_in[k] = chord(c, s.r_in, -1, slack_abs, rel, inv_len2);
+        } else {
+            // The box's chord, grown by the same per-ray slack (in t).
+            double t0 = -kInf, t1 = kInf;
+            u.s_in[k] = kNoChord;
+            if (!slab_clip(s.box, st.o, st.invd, t0, t1)) {
+                u.s_out[k] = kNoChord;
+                continue;
+            }
+            const glm::dvec3 w = 0.5 * (s.box.lo + s.box.hi) - st.o;
+            const double pad =
+                4 * u.eps + (slack_abs + rel * (std::abs(w.x) + std::abs(w.y) + std::abs(w.z))) * st.inv_len;
+            u.s_out[k] = Chord{t0 - pad, t1 + pad};
+        }
+    }
+    return true;
+}
+
+// x moved past every chord of cs[0..n) that holds it (again and again:
+// the chords may chain).
+inline double past_chords(const Chord* cs, std::uint32_t n, double x) {
+    for (std::uint32_t pass = 0; pass < n; ++pass) {
+        bool moved = false;
+        for (std::uint32_t k = 0; k < n; ++k)
+            if (cs[k].t0 <= x && cs[k].t1 > x) {
+                x = cs[k].t1;
+                moved = true;
+            }
+        if (!moved) break;
+    }
+    return x;
+}
+
+// No piece of the unit starts in (a, lower) or lies in [a, lower): the
+// first point of the minuend's outer chord on [a, b] that the subtrahends'
+// inner chords leave uncovered; kInf when they cover all of it (then the
+// unit has no span overlapping [a, b]).
+inline double chords_lower(const UnitChords& u, double a, double b) {
+    const double lo = std::max(a, u.m_out.t0), hi = std::min(b, u.m_out.t1);
+    if (!(lo <= hi)) return kInf;
+    const double x = past_chords(u.s_in, u.n, lo);
+    return x > hi ? kInf : x;
+}
+
+// The start of the first stretch of the minuend's inner chord on (a, b)
+// that no subtrahend's outer chord touches and that is longer than 2·eps
+// (a piece of the unit holds it); kInf when none is found.
+inline double chords_inside(const UnitChords& u, double a, double b) {
+    double x = std::max(a, u.m_in.t0);
+    const double end = std::min(b, u.m_in.t1);
+    for (std::uint32_t guard = 0; guard <= u.n && x < end; ++guard) {
+        x = past_chords(u.s_out, u.n, x);
+        if (!(x < end)) break;
+        double next = end;
+        for (std::uint32_t k = 0; k < u.n; ++k)
+            if (u.s_out[k].t0 > x) next = std::min(next, u.s_out[k].t0);
+        if (next - x > 2 * u.eps) return x;
+        x = next;
+    }
+    return kInf;
+}
+
+// An upper bound on the unit's first entry after a (the entry try_unit_entry
+// finds), or kInf: a stretch inside the unit, on a ray that is outside the
+// minuend's outer chord just after a (so the piece holding the stretch
+// starts after a).
+inline double chords_upper(const UnitChords& u, double a, double b) {
+    if (!(u.m_out.t0 > a)) return kInf;
+    return chords_inside(u, a, b);
+}
+
+}  // namespace kerf::render
