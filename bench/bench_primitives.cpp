@@ -6,6 +6,8 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -13,6 +15,7 @@
 #include "render/primitives/primitives.hpp"
 #include "render/primitives/lathe.hpp"
 #include "render/primitives/prism.hpp"
+#include "render/primitives/prism_grid.hpp"
 
 namespace {
 
@@ -86,8 +89,10 @@ void run(benchmark::State& state, Leaf leaf, RaySet rays) {
 }
 
 // Prism leaves (intersect_prism): a regular n-gon section of circumradius
-// 0.5 times 0 < z < 1, with n = 4 (the box's shape), 32 and 1000 edges, and
-// a 1000-edge star (a gear profile's worth of crossings per ray).
+// 0.5 times 0 < z < 1, with n = 4 (the box's shape), 32 … 10,000 edges, and
+// a 1000-edge star (a gear profile's worth of crossings per ray). Each
+// without a grid (every edge tested) and with one of `cells` cells per edge
+// (render/primitives/prism_grid.hpp; "/gridC" in the name).
 kerf::csg::Polygon2 ngon(int n, bool star) {
     kerf::csg::Polygon2 p;
     std::vector<glm::dvec2> v;
@@ -102,7 +107,7 @@ kerf::csg::Polygon2 ngon(int n, bool star) {
 }
 
 template <typename T>
-void run_prism(benchmark::State& state, kerf::csg::Polygon2 poly, RaySet rays) {
+void run_prism(benchmark::State& state, kerf::csg::Polygon2 poly, RaySet rays, kerf::csg::PrismGrid grid) {
     using V = glm::vec<3, T>;
     std::vector<V> o(rays.o.begin(), rays.o.end()), d(rays.d.begin(), rays.d.end());
     const double p[6] = {0, 1, 0, 0, 0, 0};
@@ -111,7 +116,9 @@ void run_prism(benchmark::State& state, kerf::csg::Polygon2 poly, RaySet rays) {
     const std::size_t mask = o.size() - 1;
     std::size_t i = 0;
     for (auto _ : state) {
-        const int n = kerf::csg::intersect_prism<T>(poly, p, o[i], d[i], spans.data(), scratch.data());
+        const int n = kerf::csg::intersect_prism<T>(poly, p, o[i], d[i], spans.data(), scratch.data(),
+                                                    -std::numeric_limits<T>::infinity(),
+                                                    std::numeric_limits<T>::infinity(), &grid);
         benchmark::DoNotOptimize(n);
         benchmark::DoNotOptimize(spans.data());
         i = (i + 1) & mask;
@@ -142,9 +149,11 @@ RaySet sorted_rays(const Leaf& box, const Shape& around, bool hit, std::uint64_t
 const bool prisms_registered = [] {
     std::uint64_t seed = 100;
     const Shape around{"prism", PrimKind::Box, {-0.5, -0.5, 0, 0.5, 0.5, 1}, dvec3(0, 0, 0.5), 0.87};
-    struct Case { const char* name; int n; bool star; };
-    for (const Case c : {Case{"prism4", 4, false}, Case{"prism32", 32, false}, Case{"prism1000", 1000, false},
-                         Case{"prism1000_star", 1000, true}}) {
+    struct Case { const char* name; int n; bool star; std::vector<double> cells; };
+    for (const Case& c : {Case{"prism4", 4, false, {}}, Case{"prism16", 16, false, {2}}, Case{"prism32", 32, false, {2}},
+                          Case{"prism64", 64, false, {2}}, Case{"prism128", 128, false, {2}},
+                          Case{"prism1000", 1000, false, {0.5, 1, 2, 4, 8}}, Case{"prism1000_star", 1000, true, {1, 2, 4}},
+                          Case{"prism10000", 10000, false, {2}}}) {
         const kerf::csg::Polygon2 poly = ngon(c.n, c.star);
         // Hit or miss by the prism itself: rays are drawn around its box and sorted by intersect_prism.
         Leaf box;
@@ -160,8 +169,15 @@ const bool prisms_registered = [] {
             seed += 2;
             if (rays.o.empty()) continue;
             const std::string base = std::string(c.name) + (hit ? "/hit" : "/miss");
-            benchmark::RegisterBenchmark((base + "/float").c_str(), run_prism<float>, poly, rays);
-            benchmark::RegisterBenchmark((base + "/double").c_str(), run_prism<double>, poly, rays);
+            benchmark::RegisterBenchmark((base + "/float").c_str(), run_prism<float>, poly, rays, kerf::csg::PrismGrid{});
+            benchmark::RegisterBenchmark((base + "/double").c_str(), run_prism<double>, poly, rays, kerf::csg::PrismGrid{});
+            for (double cells : c.cells) {
+                const kerf::csg::PrismGrid grid = kerf::csg::build_prism_grid(poly, 0, cells);
+                char tag[32];
+                std::snprintf(tag, sizeof tag, "/grid%g", cells);
+                benchmark::RegisterBenchmark((base + tag + "/float").c_str(), run_prism<float>, poly, rays, grid);
+                benchmark::RegisterBenchmark((base + tag + "/double").c_str(), run_prism<double>, poly, rays, grid);
+            }
         }
     }
     return true;

@@ -141,6 +141,7 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
     }
     if (scene.root == csg::kNone) return;
     impl_->build_meshes();
+    impl_->build_prism_grids();
     for (std::uint32_t id = 0; id < scene.nodes.size(); ++id) {
         const Node& n = scene.nodes[id];
         const std::uint32_t skip = n.op == Op::Difference ? 1 : 0;

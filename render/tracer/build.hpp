@@ -13,6 +13,7 @@
 #include <glm/glm.hpp>
 
 #include "csg/scene.hpp"
+#include "render/primitives/prism_grid.hpp"
 #include "render/tracer/tracer.hpp"
 #include "render/tracer/unit_balls.hpp"
 
@@ -64,12 +65,14 @@ struct CsgTracer::Impl {
     std::vector<double> leaf_stretch;         // per leaf: Frobenius norm of object_from_world.linear
     std::vector<RTCScene> mesh_bvhs;        // per csg::Mesh used by a leaf (object space)
     std::vector<csg::Aabb> mesh_boxes;        // object-space bounds of each mesh
+    std::vector<csg::PrismGrid> prism_grids;  // per Scene::polygons entry used by a prism (prism_spans.cpp)
 
     Impl(const csg::Scene& s, bool f) : scene(s), use_float(f) {}
     ~Impl();
     void build_accel(Accel& accel, const std::vector<std::uint32_t>& nodes, bool top_level);
     void local_tolerances(const std::vector<std::uint32_t>& units);  // build.cpp
     void build_meshes();  // mesh_spans.cpp
+    void build_prism_grids();  // prism_spans.cpp
 };
 
 // Embree callbacks the build installs, each defined beside the query it serves.

@@ -3,7 +3,8 @@
 // per-thread buffers sized for the largest section seen (they only grow: no
 // allocation per ray once warm), spans shorter than the degenerate rule's
 // eps dropped (a zero-area section's edges cross in pairs a rounding apart),
-// then pushed like any leaf's, the edge riding in SpanEnd::prim.
+// then pushed like any leaf's, the edge riding in SpanEnd::prim. A section
+// of many edges gets a grid (primitives/prism_grid.hpp), built with the tracer.
 #include "render/tracer/prism_spans.hpp"
 
 #include <vector>
@@ -27,8 +28,8 @@ struct PrismBuffers {
 };
 
 template <typename T>
-int prism_in(const csg::Polygon2& poly, const csg::Leaf& leaf, const glm::dvec3& o, const glm::dvec3& d, double wa,
-             double wb, std::vector<csg::PrismSpan<double>>& out) {
+int prism_in(const csg::Polygon2& poly, const csg::PrismGrid* grid, const csg::Leaf& leaf, const glm::dvec3& o,
+             const glm::dvec3& d, double wa, double wb, std::vector<csg::PrismSpan<double>>& out) {
     thread_local PrismBuffers<T> buf;
     const std::size_t edges = poly.edges.size();
     int n;
@@ -38,7 +39,7 @@ int prism_in(const csg::Polygon2& poly, const csg::Leaf& leaf, const glm::dvec3&
     } else {
         buf.fit(edges, csg::prism_span_room(edges, leaf.p));
         n = csg::intersect_prism<T>(poly, leaf.p, glm::vec<3, T>(o), glm::vec<3, T>(d), buf.spans.data(),
-                                    buf.crossings.data(), T(wa), T(wb));
+                                    buf.crossings.data(), T(wa), T(wb), grid);
     }
     if (out.size() < buf.spans.size()) out.resize(buf.spans.size());
     for (int i = 0; i < n; ++i) {
@@ -50,6 +51,18 @@ int prism_in(const csg::Polygon2& poly, const csg::Leaf& leaf, const glm::dvec3&
 
 }  // namespace
 
+// One grid per section that a straight or tapered prism leaf extrudes,
+// however many leaves share it (lathes and swept prisms test every edge).
+void CsgTracer::Impl::build_prism_grids() {
+    std::vector<char> wanted(scene.polygons.size(), 0);
+    for (const csg::Leaf& leaf : scene.leaves)
+        if (leaf.kind == csg::PrimKind::Prism && leaf.polygon < wanted.size() && !csg::is_swept(leaf.p))
+            wanted[leaf.polygon] = 1;
+    prism_grids.resize(scene.polygons.size());
+    for (std::size_t i = 0; i < wanted.size(); ++i)
+        if (wanted[i]) prism_grids[i] = csg::build_prism_grid(scene.polygons[i]);
+}
+
 std::uint32_t prism_spans(RayState& es, std::uint32_t leaf_id, double a, double b) {
     const csg::Leaf& leaf = es.impl->scene.leaves[leaf_id];
     if (leaf.polygon >= es.impl->scene.polygons.size()) return 0;
@@ -57,9 +70,10 @@ std::uint32_t prism_spans(RayState& es, std::uint32_t leaf_id, double a, double 
     const glm::dvec3 lo = leaf.object_from_world.point(es.o);
     const glm::dvec3 ld = leaf.object_from_world.vector(es.d);
     const double wa = a - 4 * es.eps, wb = b + 4 * es.eps;
+    const csg::PrismGrid* grid = leaf.polygon < es.impl->prism_grids.size() ? &es.impl->prism_grids[leaf.polygon] : nullptr;
     thread_local std::vector<csg::PrismSpan<double>> spans;
-    const int count = es.impl->use_float ? prism_in<float>(poly, leaf, lo, ld, wa, wb, spans)
-                                         : prism_in<double>(poly, leaf, lo, ld, wa, wb, spans);
+    const int count = es.impl->use_float ? prism_in<float>(poly, grid, leaf, lo, ld, wa, wb, spans)
+                                         : prism_in<double>(poly, grid, leaf, lo, ld, wa, wb, spans);
     es.scratch->counters.interval_tests++;
     std::uint32_t pushed = 0;
     for (int i = 0; i < count; ++i) {

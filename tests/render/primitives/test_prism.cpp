@@ -17,6 +17,7 @@
 #include "csg/membership.hpp"
 #include "tests/render/primitives/polygon_sections.hpp"
 #include "render/primitives/prism.hpp"
+#include "render/primitives/prism_grid.hpp"
 
 using namespace kerf;
 using test::add_path;
@@ -75,12 +76,18 @@ double surface_gap(const Section& s, const double* c, const dvec3& p) {
     return std::min(std::hypot(edge, dz), cap);
 }
 
+// Random rays against the section: the oracle at `samples` points along
+// each, and the same spans bit for bit through grids of the section
+// (coarse, default, fine) as from testing every edge.
 template <typename T>
-void check_rays(const Section& s, double scale, std::mt19937_64& rng, int rays, double taper = 0) {
+void check_rays(const Section& s, double scale, std::mt19937_64& rng, int rays, double taper = 0,
+                int samples = 400) {
     const double c[6] = {-0.3 * scale, 0.4 * scale, taper, 0, 0, 0};
     std::uniform_real_distribution<double> u(-1, 1);
-    std::vector<csg::PrismSpan<T>> out(csg::prism_span_room(s.poly.edges.size()));
+    std::vector<csg::PrismSpan<T>> out(csg::prism_span_room(s.poly.edges.size())), via_grid(out.size());
     std::vector<csg::PrismCrossing<T>> scratch(s.poly.edges.size());
+    std::vector<csg::PrismGrid> grids;
+    for (double cells_per_edge : {0.05, 2.0, 40.0}) grids.push_back(csg::build_prism_grid(s.poly, 0, cells_per_edge));
     const double tol_k = std::is_same_v<T, float> ? 2e-5 : 1e-11;
     for (int r = 0; r < rays; ++r) {
         dvec3 o(u(rng), u(rng), u(rng));
@@ -103,6 +110,21 @@ void check_rays(const Section& s, double scale, std::mt19937_64& rng, int rays, 
         const int n = csg::intersect_prism<T>(s.poly, c, glm::vec<3, T>(o), glm::vec<3, T>(d), out.data(),
                                               scratch.data());
         REQUIRE(n <= int(out.size()));
+        for (const csg::PrismGrid& g : grids) {
+            const int ng = csg::intersect_prism<T>(s.poly, c, glm::vec<3, T>(o), glm::vec<3, T>(d), via_grid.data(),
+                                                   scratch.data(), -std::numeric_limits<T>::infinity(),
+                                                   std::numeric_limits<T>::infinity(), &g);
+            INFO("ray " << r << " mode " << mode << " grid " << g.nx << " x " << g.ny);
+            REQUIRE(ng == n);
+            for (int i = 0; i < n; ++i) {
+                REQUIRE(via_grid[i].s.t0 == out[i].s.t0);
+                REQUIRE(via_grid[i].s.t1 == out[i].s.t1);
+                REQUIRE(via_grid[i].s.part0 == out[i].s.part0);
+                REQUIRE(via_grid[i].s.part1 == out[i].s.part1);
+                REQUIRE(via_grid[i].edge0 == out[i].edge0);
+                REQUIRE(via_grid[i].edge1 == out[i].edge1);
+            }
+        }
         const double tol = tol_k * 8 * scale * (1 + std::abs(taper));  // world length; |o|, |t·d| are a few times scale
         std::vector<double> ends;
         for (int i = 0; i < n; ++i) {
@@ -117,8 +139,8 @@ void check_rays(const Section& s, double scale, std::mt19937_64& rng, int rays, 
         }
         // Membership at samples away from the surface.
         const double tlen = glm::length(d);
-        for (int k = 0; k <= 400; ++k) {
-            const double t = -1.0 + 3.0 * k / 400.0;
+        for (int k = 0; k <= samples; ++k) {
+            const double t = -1.0 + 3.0 * k / samples;
             const dvec3 p = o + t * d;
             if (surface_gap(s, c, p) <= 8 * tol) continue;  // 8: the in-section distance of a slanted side
             bool near_end = false;
@@ -157,6 +179,90 @@ TEMPLATE_TEST_CASE("tapered prism spans agree with even-odd membership of the sc
             }
         }
     }
+}
+
+// Sections of thousands of edges (the case the grid is for): a 10,000-point
+// star with a 2,000-point star hole and a ring of 1,000 collinear edges
+// along one line, and a 4,000-edge zero-area zigzag, at several scales.
+// Fewer oracle samples per ray: each costs a pass over every edge.
+TEMPLATE_TEST_CASE("prisms of 10,000 edges agree with even-odd membership", "[prism]", double, float) {
+    std::mt19937_64 rng(21);
+    for (double scale : {1.0, 1e-6, 1e6}) {
+        Section s;
+        add_path(s, star(rng, {0, 0}, 1, 10000));
+        add_path(s, star(rng, {0.1, -0.05}, 0.25, 2000));
+        std::vector<dvec2> line;
+        for (int i = 0; i <= 500; ++i) line.push_back({-0.9 + 1.8 * i / 500, 0.7});
+        for (int i = 499; i > 0; --i) line.push_back({-0.9 + 1.8 * i / 500, 0.75});
+        add_path(s, line);
+        for (glm::dvec4& e : s.poly.edges) e *= scale;
+        for (dvec2& v : s.vertices) v *= scale;
+        finish(s);
+        INFO("scale " << scale);
+        check_rays<TestType>(s, scale, rng, 25, 0, 24);
+        check_rays<TestType>(s, scale, rng, 10, 0.5, 24);
+    }
+    Section zig;
+    std::vector<dvec2> z;
+    for (int i = 0; i < 4000; ++i) z.push_back({-1 + 2.0 * i / 4000, 0.3 * (i % 2) - 0.15});
+    for (int i = 3999; i >= 0; --i) z.push_back({-1 + 2.0 * i / 4000, 0.3 * (i % 2) - 0.15});
+    add_path(zig, z);
+    finish(zig);
+    check_rays<TestType>(zig, 1, rng, 40, 0, 24);
+}
+
+// Rays grazing a grid's cells: along its rows and columns, through its
+// corners, and along edges lying on cell boundaries.
+TEMPLATE_TEST_CASE("grid walks agree with testing every edge on grazing rays", "[prism]", double, float) {
+    std::mt19937_64 rng(22);
+    Section s;  // an 8 x 8 checkerboard of squares: edges on every grid line
+    for (int i = 0; i < 8; ++i)
+        for (int j = (i % 2); j < 8; j += 2)
+            add_path(s, {{i / 4.0 - 1, j / 4.0 - 1}, {i / 4.0 - 0.75, j / 4.0 - 1}, {i / 4.0 - 0.75, j / 4.0 - 0.75},
+                         {i / 4.0 - 1, j / 4.0 - 0.75}});
+    finish(s);
+    const double c[6] = {-0.3, 0.4, 0, 0, 0, 0};
+    std::vector<csg::PrismSpan<TestType>> a(csg::prism_span_room(s.poly.edges.size())), b(a.size());
+    std::vector<csg::PrismCrossing<TestType>> scratch(s.poly.edges.size());
+    std::uniform_real_distribution<double> u(-1, 1);
+    using V = glm::vec<3, TestType>;
+    int crossed = 0;
+    for (double cells_per_edge : {0.1, 0.5, 1.0, 2.0, 7.0}) {
+        const csg::PrismGrid g = csg::build_prism_grid(s.poly, 0, cells_per_edge);
+        for (int r = 0; r < 2000; ++r) {
+            // Along a grid line (x or y = k/8 or k/4), nearly along it, or through two vertices.
+            const double k = std::round(8 * u(rng)) / 8, off = r % 3 == 0 ? 0 : std::ldexp(u(rng), -40 + int(rng() % 30));
+            dvec3 o, d;
+            if (r % 4 < 2) {
+                o = dvec3(-3, k + off, 0.1 * u(rng));
+                d = dvec3(6, off * u(rng), 0.05 * u(rng));
+            } else {
+                o = dvec3(k + off, -3, 0.1 * u(rng));
+                d = dvec3(off * u(rng), 6, 0.05 * u(rng));
+            }
+            if (r % 4 == 1 || r % 4 == 3) std::swap(o.x, o.y), std::swap(d.x, d.y);
+            if (r % 7 == 0) {  // through two vertices
+                const dvec2 p = s.vertices[rng() % s.vertices.size()], q = s.vertices[rng() % s.vertices.size()];
+                if (p == q) continue;
+                o = dvec3(p - 2.0 * (q - p), 0.05);
+                d = dvec3(q - p, 0.01 * u(rng));
+            }
+            const int na = csg::intersect_prism<TestType>(s.poly, c, V(o), V(d), a.data(), scratch.data());
+            const int nb = csg::intersect_prism<TestType>(s.poly, c, V(o), V(d), b.data(), scratch.data(),
+                                                          -std::numeric_limits<TestType>::infinity(),
+                                                          std::numeric_limits<TestType>::infinity(), &g);
+            INFO("ray " << r << " cells per edge " << cells_per_edge);
+            REQUIRE(na == nb);
+            crossed += na > 0;
+            for (int i = 0; i < na; ++i) {
+                REQUIRE(a[i].s.t0 == b[i].s.t0);
+                REQUIRE(a[i].s.t1 == b[i].s.t1);
+                REQUIRE(a[i].edge0 == b[i].edge0);
+                REQUIRE(a[i].edge1 == b[i].edge1);
+            }
+        }
+    }
+    CHECK(crossed > 2000);
 }
 
 TEST_CASE("a prism's window only drops what lies outside it", "[prism]") {
