@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
-"""A glass lens and an area-lit open shell rendered by kerf and by POV-Ray 3.7
-from one description each (docs/quality.md, "Side by side with POV-Ray"):
-same camera, same lights, same solids; bench/checker_twin.py is the third twin.
+"""A glass lens, an area-lit open shell and a checker-textured cube rendered by
+kerf and by POV-Ray 3.7 from one description each (docs/quality.md, "Side by
+side with POV-Ray"): same camera, same lights, same solids
+(bench/checker_twin.py checks the checker's cells themselves).
 
 For each scene:
 - silhouettes: the object alone (no backdrop, no ground), kerf's depth AOV
@@ -17,7 +18,7 @@ For each scene:
 Coordinates as bench/scenes.py: POV-Ray gets kerf's world through
 (x, y, z) -> (x, z, y), the swap matrix on each object.
 
-    python3 bench/pov_twins.py --kerf build/kerf --out /tmp/twins [--size 320x240]
+    python3 bench/pov_twins.py --kerf build/kerf --out /tmp/twins [--size 320x240] [--only lens,shell,checker]
 """
 import argparse
 import math
@@ -85,6 +86,23 @@ class Shell:
                 f"  rotate <25, 0, 0>\n  {look}\n  {SWAP} }}\n" + ground)
 
 
+class Checker:
+    """bench/checker_twin.py's cube: red and blue cells of size 1 on a 4-unit
+    cube, kerf's `pattern = "checker"` against POV-Ray's `pigment { checker }`."""
+    name, cam, at, fov, light = "checker", (9, -7, 8), (2, 2, 2), 40, (10, -4, 12)
+
+    def sdl(self, mask):
+        look = ('material(color = "white")' if mask else
+                'material(color = "red", color2 = "blue", pattern = "checker", pattern_scale = 1, diffuse = 0.8, specular = 0)')
+        return look + "\n    translate([0.001, 0.001, 0.001]) cube(4);  // off the cell boundaries\n"
+
+    def pov(self, mask):
+        look = ("texture { pigment { rgb 1 } finish { ambient 1 diffuse 0 } }" if mask else
+                "texture { pigment { checker color rgb <1, 0, 0> color rgb <0, 0, 1> scale 1 }\n"
+                "            finish { ambient 0.1 diffuse 0.8 } }")
+        return f"box {{ <0.001, 0.001, 0.001>, <4.001, 4.001, 4.001>\n  {look}\n  {SWAP} }}\n"
+
+
 def kerf_text(s, mask, samples):
     r = f", radius = {s.radius}, samples = {samples}" if getattr(s, "radius", 0) else ""
     return (f"camera(position = [{s.cam[0]}, {s.cam[1]}, {s.cam[2]}], look_at = [{s.at[0]}, {s.at[1]}, {s.at[2]}], fov = {s.fov});\n"
@@ -125,11 +143,12 @@ def main():
     ap.add_argument("--out", required=True)
     ap.add_argument("--size", default="320x240")
     ap.add_argument("--runs", type=int, default=3)
+    ap.add_argument("--only", default="lens,shell,checker", help="comma-separated scene names")
     a = ap.parse_args()
     w, h = (int(v) for v in a.size.split("x"))
     os.makedirs(a.out, exist_ok=True)
     ok = True
-    for s in (Lens(), Shell()):
+    for s in (x for x in (Lens(), Shell(), Checker()) if x.name in a.only.split(",")):
         base = os.path.join(a.out, s.name)
         kerf = lambda src, out, extra: [a.kerf, "render", src, "-o", out, "-W", str(w), "-H", str(h),  # noqa: E731
                                         "--threads", "2", "--no-progress"] + extra
