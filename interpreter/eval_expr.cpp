@@ -1,6 +1,7 @@
 // Expressions: names, operators, calls, list comprehensions, let/echo/assert.
 #include <cmath>
 #include <iostream>
+#include <memory>
 #include <utility>
 
 #include "interpreter/builtins/builtins.hpp"
@@ -171,35 +172,89 @@ void Evaluator::do_assert(const std::vector<ast::Binding>& args, Scope& s, const
     throw SourceError(loc, "assertion failed");
 }
 
+const ast::Stmt* Evaluator::find_function(std::string_view name, Scope& s, Scope*& def_scope) {
+    for (Scope* sc = &s; sc; sc = sc->parent) {
+        for (const ast::Stmt* f : sc->functions)
+            if (f->name == name) return def_scope = sc, f;
+        for (Scope* used : sc->used)
+            for (const ast::Stmt* f : used->functions)
+                if (f->name == name) return def_scope = used, f;
+    }
+    return nullptr;
+}
+
 Value Evaluator::call_function(const ast::Expr& e, Scope& s) {
     std::string_view name = e.text;
     // OpenSCAD calls a variable holding a function before a function of
     // that name (only once a literal exists can a variable hold one).
     if (function_values_)
         if (const Value* v = find_value(name, s); v && v->is_function()) return call_closure(*v, e.args, s, e.loc, e.text);
-    for (Scope* sc = &s; sc; sc = sc->parent) {
-        auto try_scope = [&](Scope* def_scope) -> const ast::Stmt* {
-            for (const ast::Stmt* f : def_scope->functions)
-                if (f->name == name) return f;
-            return nullptr;
-        };
-        Scope* def_scope = sc;
-        const ast::Stmt* def = try_scope(sc);
-        for (std::size_t i = 0; !def && i < sc->used.size(); ++i) {
-            def_scope = sc->used[i];
-            def = try_scope(def_scope);
+    Scope* def_scope = nullptr;
+    const ast::Stmt* def = find_function(name, s, def_scope);
+    if (!def) return call_builtin(e, s);
+    DepthGuard guard(*this, e.loc);
+    DynRestore restore(dyn_);
+    Scope callee(def_scope);
+    callee.module = def_scope->module;
+    return traced([&] {
+        bind_params(def->params, e.args, def->name, s, callee, e.loc);
+        return run_body(*def, *def_scope, callee);
+    });
+}
+
+// A function's body, with OpenSCAD 2021's tail calls: through `?:`, `let`,
+// `echo` and `assert`, a call of the function itself rebinds its parameters
+// and loops instead of nesting, so `f(n - 1, acc + n)` recursion is not
+// bound by the call depth (OpenSCAD's evaluate_function() does the same,
+// and stops a chain at 1,000,000 calls). Only while the call has pushed no
+// `$` variable: those belong to the call they were bound in.
+Value Evaluator::run_body(const ast::Stmt& def, Scope& def_scope, Scope& callee) {
+    const std::size_t dyn_entry = dyn_.size();
+    const std::size_t calls_entry = calls_.size();  // the call's own note is the last
+    std::vector<std::unique_ptr<Scope>> lets;       // the lets passed on the way, innermost last
+    std::uint64_t tail_calls = 0;
+    Scope* s = &callee;
+    const ast::Expr* body = def.value.get();
+    while (body) {
+        switch (body->kind) {
+            case ast::ExprKind::Ternary: body = body->items[eval(*body->items[0], *s).truthy() ? 1 : 2].get(); continue;
+            case ast::ExprKind::Let:
+                lets.push_back(std::make_unique<Scope>(s));
+                s = lets.back().get();
+                bind_sequential(body->bindings, *s, "let");
+                body = body->items.empty() ? nullptr : body->items[0].get();
+                continue;
+            case ast::ExprKind::Echo:
+            case ast::ExprKind::Assert:
+                if (body->kind == ast::ExprKind::Echo) do_echo(body->args, *s);
+                else do_assert(body->args, *s, body->loc);
+                body = body->items.empty() ? nullptr : body->items[0].get();
+                continue;
+            case ast::ExprKind::Call: {
+                if (body->text != def.name || dyn_.size() != dyn_entry) break;
+                if (function_values_)
+                    if (const Value* v = find_value(body->text, *s); v && v->is_function()) break;
+                Scope* scope = nullptr;
+                if (find_function(body->text, *s, scope) != &def) break;
+                if (++tail_calls > opt_.limits.tail_calls)
+                    throw SourceError(body->loc, "tail call limit " + std::to_string(opt_.limits.tail_calls) +
+                                                     " exceeded ('" + def.name + "' calls itself without end?)");
+                count_step(body->loc);
+                Scope next(&def_scope);
+                bind_params(def.params, body->args, def.name, *s, next, body->loc);
+                calls_.resize(calls_entry);  // notes name the first call, not each pass
+                callee.truncate(0);
+                for (VarSlot& v : next.vars) callee.add(std::move(v));
+                lets.clear();
+                s = &callee;
+                body = def.value.get();
+                continue;
+            }
+            default: break;
         }
-        if (!def) continue;
-        DepthGuard guard(*this, e.loc);
-        DynRestore restore(dyn_);
-        Scope callee(def_scope);
-        callee.module = def_scope->module;
-        return traced([&] {
-            bind_params(def->params, e.args, def->name, s, callee, e.loc);
-            return def->value ? eval(*def->value, callee) : Value();
-        });
+        return eval(*body, *s);
     }
-    return call_builtin(e, s);
+    return Value();
 }
 
 // A function value's call (function_values.cpp makes them).
