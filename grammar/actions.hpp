@@ -63,7 +63,7 @@ KERF_AT(and_tail, b.binary(at));
 KERF_AT(or_tail, b.binary(at));
 KERF_AT(ternary_tail, b.ternary(at));
 KERF_AT(index_op, b.index(at));
-KERF_AT(member_name, b.member_name(in.peek_char()));
+KERF_AT(member_name, b.member_name(in.string_view()));
 KERF_AT(member_op, b.member(at));
 KERF_AT(list_open, b.mark_items());
 KERF_AT(list_empty, b.list_kind(ast::ExprKind::List));

@@ -121,7 +121,9 @@ struct primary : pg::sor<pg::seq<pg::at<pg::digit>, pg::at<name>, word_primary>,
 
 // ---- postfix and operators -------------------------------------------------
 struct index_op : nest<lbracket, pg::must<expr>, pg::must<rbracket>> {};
-struct member_name : pg::seq<pg::one<'x', 'y', 'z'>, pg::not_at<pg::identifier_other>> {};
+// `.x`, `.y`, `.z`; OpenSCAD's dialect takes any name there (`v.w` is undef).
+struct member_name : pg::sor<pg::seq<pg::one<'x', 'y', 'z'>, pg::not_at<pg::identifier_other>>,
+                             pg::seq<openscad_on, pg::identifier>> {};
 struct member_tok : pg::seq<member_name, ws> {};
 struct member_op : pg::if_must<pg::seq<pg::one<'.'>, ws>, member_tok> {};
 // A call of whatever value an expression has: `f(1)(2)`, `fs[0](3)`.

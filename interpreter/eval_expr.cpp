@@ -503,6 +503,10 @@ Value Evaluator::eval(const ast::Expr& e, Scope& s) {
         case K::Member: {
             Value obj = eval(*e.items[0], s);
             int i = e.text == "x" ? 0 : e.text == "y" ? 1 : e.text == "z" ? 2 : -1;
+            if (i < 0 && lenient_) {  // OpenSCAD 2021: undef, silently
+                warn(e.loc, "unknown member '." + e.text + "' is undef (OpenSCAD 2021 knows .x, .y and .z)");
+                return Value();
+            }
             if (i < 0) throw SourceError(e.loc, "unknown member '." + e.text + "'");
             if (lenient_) return openscad_index(obj.is_list() ? obj : Value(), Value(i));
             if (!obj.is_list()) throw SourceError(e.loc, "'." + e.text + "' needs a list, got " + obj.type_name());
