@@ -1,5 +1,7 @@
 #include "interpreter/loader.hpp"
 
+#include "interpreter/value.hpp"
+
 #include <cstdlib>
 #include <filesystem>
 
@@ -21,6 +23,13 @@ std::string Loader::resolve(const std::string& name_text, const SourceLoc& loc) 
     std::string path = find(name_text, loc);
     if (path.empty()) throw SourceError(loc, "cannot find '" + name_text + "'");
     return path;
+}
+
+std::string Loader::resolve_data(const std::string& name_text, const SourceLoc& loc) const {
+    std::string path = find(name_text, loc);
+    if (!path.empty()) return path;
+    if (opt_.dialect == Dialect::Lenient) throw SoftError(loc, "cannot find '" + name_text + "'");
+    throw SourceError(loc, "cannot find '" + name_text + "'");
 }
 
 std::string Loader::find(const std::string& name_text, const SourceLoc& loc) const {
