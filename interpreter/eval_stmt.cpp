@@ -1,10 +1,12 @@
 // Statements: blocks and their bindings, modules and children(), for/let/
 // echo/assert/if, include and use.
 #include <optional>
+#include <strings.h>
 #include <unordered_map>
 
 #include "grammar/parser.hpp"
 #include "interpreter/evaluator.hpp"
+#include "interpreter/text/font.hpp"
 
 namespace kerf::eval {
 
@@ -34,6 +36,12 @@ public:
 private:
     std::unordered_map<std::string_view, std::size_t> first_;
 };
+
+// `use <f.ttf>` names a font, not a script (OpenSCAD's FileModule::registerUse).
+bool is_font_file(const std::string& path) {
+    const std::size_t n = path.size();
+    return n >= 4 && (strcasecmp(path.c_str() + n - 4, ".ttf") == 0 || strcasecmp(path.c_str() + n - 4, ".otf") == 0);
+}
 
 }  // namespace
 
@@ -68,6 +76,13 @@ std::string Evaluator::find_library(const ast::Stmt& st) {
 Scope* Evaluator::load_use(const ast::Stmt& st) {
     const std::string path = find_library(st);
     if (path.empty()) return nullptr;
+    if (is_font_file(path)) {  // OpenSCAD: the font's families become usable by text()
+        if (!text::register_font_file(path)) {
+            if (!lenient_) throw SourceError(st.loc, "cannot read the font file '" + st.name + "'");
+            warn(st.loc, "Can't read font with path '" + st.name + "'");
+        }
+        return nullptr;
+    }
     const std::string key = Loader::identity(path);
     auto it = use_scopes_.find(key);
     if (it != use_scopes_.end()) return it->second.get();
