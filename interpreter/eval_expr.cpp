@@ -35,8 +35,16 @@ void Evaluator::count_iterations(std::uint64_t n, const SourceLoc& loc) {
 
 std::uint64_t Evaluator::iteration_count(Value& v, const SourceLoc& loc) {
     std::uint64_t n;
-    if (v.is_range()) n = v.as_range().size();
-    else if (v.is_list()) n = v.as_list().size();
+    if (v.is_range()) {
+        n = v.as_range().size();
+        // OpenSCAD runs no pass over a range it counts too many elements
+        // in (a step of 0 among them), with its warning.
+        if (lenient_)
+            if (const std::uint32_t count = openscad_range_count(v.as_range()); count >= kOpenScadForCap) {
+                warn(loc, "Bad range parameter in for statement: too many elements (" + std::to_string(count) + ")");
+                n = 0;
+            }
+    } else if (v.is_list()) n = v.as_list().size();
     else if (v.is_string()) n = utf8_length(v.as_string());
     else if (lenient_) {  // OpenSCAD: undef runs no iteration, any other value one
         n = v.is_undef() ? 0 : 1;
@@ -462,7 +470,8 @@ Value Evaluator::eval(const ast::Expr& e, Scope& s) {
                 }
                 return Value::range(v[0], 1, v[1]);
             }
-            if (v[1] == 0) throw SourceError(e.items[1]->loc, "range step must not be 0");
+            // OpenSCAD makes [a : 0 : b]; its loops then run no pass (iteration_count).
+            if (v[1] == 0 && !lenient_) throw SourceError(e.items[1]->loc, "range step must not be 0");
             // A step pointing away from the end: empty in both dialects, and
             // OpenSCAD says so where the range is made.
             if (lenient_ && v[0] < v[2] && v[1] < 0) warn(e.loc, "begin is smaller than the end, but step is negative");

@@ -6,6 +6,7 @@
 
 #include "grammar/parser.hpp"
 #include "interpreter/evaluator.hpp"
+#include "interpreter/openscad_ops.hpp"
 #include "interpreter/text/font.hpp"
 
 namespace kerf::eval {
@@ -340,8 +341,10 @@ void Evaluator::call_module(const ast::Stmt& def, Scope& def_scope, const ast::S
 
 void Evaluator::stmt_children(const ast::Stmt& st, Scope& s) {
     const ModuleFrame* frame = s.module;
+    if (!frame && lenient_) return warn(st.loc, "children() outside a module makes nothing");  // OpenSCAD: silently
     if (!frame) throw SourceError(st.loc, "children() is only allowed inside a module");
-    if (st.args.size() > 1) throw SourceError(st.args[1].loc, "too many arguments for 'children' (takes 1)");
+    if (st.args.size() > 1 && lenient_) warn(st.args[1].loc, "children() takes one argument: the others are ignored");
+    else if (st.args.size() > 1) throw SourceError(st.args[1].loc, "too many arguments for 'children' (takes 1)");
     if (!st.args.empty() && !st.args[0].name.empty() && st.args[0].name != "index")
         throw SourceError(st.args[0].loc, "unknown argument '" + st.args[0].name + "' for 'children'");
     const BlockInfo& info = prepare(*frame->children);
@@ -350,11 +353,21 @@ void Evaluator::stmt_children(const ast::Stmt& st, Scope& s) {
         for (std::size_t i = 0; i < info.children.size(); ++i) picks.push_back(i);
     } else {
         Value v = eval(*st.args[0].value, s);
+        // OpenSCAD's answers (its ControlModule::getChild): a child it cannot
+        // pick is nothing, with its warning.
+        auto bad_type = [&](const Value& x) {
+            warn(st.loc, "Bad parameter type (" + to_repr(x) + ") for children, only accept: empty, number, vector, range");
+        };
         auto pick = [&](const Value& x) {
-            if (!x.is_number() || x.as_number() != std::floor(x.as_number()))
+            double d = x.is_number() ? x.as_number() : 0;
+            if (lenient_) {
+                if (!x.is_number()) return bad_type(x);
+                d = std::trunc(d);
+                if (!(d >= 0)) return warn(st.loc, "Negative children index (" + format_number(d) + ") not allowed");
+            } else if (!x.is_number() || d != std::floor(d)) {
                 throw SourceError(st.loc, std::string("children: index must be an integer, got ") +
-                                              (x.is_number() ? format_number(x.as_number()) : x.type_name()));
-            double d = x.as_number();
+                                              (x.is_number() ? format_number(d) : x.type_name()));
+            }
             if (d < 0 || d >= static_cast<double>(info.children.size())) {
                 if (lenient_) {  // OpenSCAD: that child is nothing
                     warn(st.loc, "Children index (" + format_number(d) + ") out of bounds (" +
@@ -369,10 +382,13 @@ void Evaluator::stmt_children(const ast::Stmt& st, Scope& s) {
         if (v.is_number()) pick(v);
         else if (v.is_list()) for (const Value& x : v.as_list()) pick(x);
         else if (v.is_range()) {
+            if (const std::uint32_t count = openscad_range_count(v.as_range()); lenient_ && count >= kOpenScadChildrenCap)
+                return warn(st.loc, "Bad range parameter for children: too many elements (" + std::to_string(count) + ")");
             std::uint64_t n = v.as_range().size();
             count_iterations(n, st.loc);
             for (std::uint64_t i = 0; i < n; ++i) pick(Value(v.as_range().at(i)));
-        } else throw SourceError(st.loc, std::string("children: index must be a number, list or range, got ") + v.type_name());
+        } else if (lenient_) return bad_type(v);
+        else throw SourceError(st.loc, std::string("children: index must be a number, list or range, got ") + v.type_name());
     }
     std::size_t mark = out_.mark();
     DynRestore restore(dyn_);

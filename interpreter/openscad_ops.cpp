@@ -121,6 +121,17 @@ Value openscad_unary(std::string_view op, const Value& a, std::string& warning) 
     return Value();
 }
 
+std::uint32_t openscad_range_count(const Range& r) {
+    constexpr std::uint32_t max = 4294967295u;
+    if (std::isnan(r.start) || std::isnan(r.end) || std::isnan(r.step)) return 0;
+    if (r.step < 0 ? r.start < r.end : r.start > r.end) return 0;
+    if (r.start == r.end || std::isinf(r.step)) return 1;
+    if (std::isinf(r.start) || std::isinf(r.end) || r.step == 0) return max;
+    // nextafter: a quotient just below a whole number counts it (OpenSCAD's words).
+    const double steps = std::nextafter((r.end - r.start) / r.step, double(max));
+    return steps >= double(max) ? max : static_cast<std::uint32_t>(steps) + 1;
+}
+
 Value openscad_index(const Value& object, const Value& index) {
     if (!index.is_number()) return Value();
     double d = index.as_number();

@@ -56,7 +56,7 @@ TEST_CASE("a loop over [0:1e12] ends at the iteration limit (10^7)") {
 
 TEST_CASE("ranges with a zero step or a non-finite bound are located errors") {
     expect_errors(test_dir("ranges"),
-                  {{"zero.sdl", "for (i = [0:0:1]) cube(1);\n", 1, 13, "range step must not be 0"},
+                  {{"zero.sdl", "for (i = [0:0:1]) cube(1);\n", 1, 13, "range step must not be 0"},  // .scad: OpenSCAD's warning
                    {"nan.sdl", "for (i = [0:0/0]) cube(1);\n", 1, 14, "range bound must be finite, got nan"},
                    {"inf.sdl", "for (i = [-1/0:0]) cube(1);\n", 1, 13, "range bound must be finite, got -inf"}});
 }
