@@ -38,6 +38,24 @@ private:
     std::unordered_map<std::string_view, std::size_t> first_;
 };
 
+// OpenSCAD's Expression::isLiteral(): a literal, or a sign, list or range
+// of literals (what its "overwritten with a literal" warning looks at).
+bool is_literal(const ast::Expr& e) {
+    switch (e.kind) {
+        case ast::ExprKind::Number:
+        case ast::ExprKind::String:
+        case ast::ExprKind::Bool:
+        case ast::ExprKind::Undef: return true;
+        case ast::ExprKind::Unary:
+        case ast::ExprKind::List:
+        case ast::ExprKind::Range:
+            for (const ast::ExprPtr& i : e.items)
+                if (!i || !is_literal(*i)) return false;
+            return true;
+        default: return false;
+    }
+}
+
 // `use <f.ttf>` names a font, not a script (OpenSCAD's FileModule::registerUse).
 bool is_font_file(const std::string& path) {
     const std::size_t n = path.size();
@@ -51,6 +69,13 @@ bool is_font_file(const std::string& path) {
 void Evaluator::flatten(const std::vector<ast::StmtPtr>& stmts, std::vector<const ast::Stmt*>& out) {
     for (const ast::StmtPtr& sp : stmts) {
         const ast::Stmt& st = *sp;
+        // OpenSCAD's parser puts a bare `{ ... }`'s statements in the
+        // enclosing block: its bindings are the block's own (`f = 2;` in it
+        // replaces the outer f, with the overwrite warning).
+        if (lenient_ && st.kind == ast::StmtKind::Block && st.modifier == ast::Modifier::None) {
+            flatten(st.body, out);
+            continue;
+        }
         if (st.kind != ast::StmtKind::Include) {
             out.push_back(&st);
             continue;
@@ -264,6 +289,7 @@ void Evaluator::bind_params(const std::vector<ast::Binding>& params, const std::
     }
     std::size_t positional = 0;
     std::size_t dyn_start = dyn_.size();
+    std::vector<std::pair<const ast::Binding*, Value>> extra;  // OpenSCAD binds them too
     for (const ast::Binding& a : args) {
         Value v = a.value ? eval(*a.value, caller) : Value();
         std::size_t i;
@@ -287,8 +313,9 @@ void Evaluator::bind_params(const std::vector<ast::Binding>& params, const std::
                     dyn_.push_back(DynVar{a.name, std::move(v)});
                     continue;
                 }
-                if (lenient_) {
+                if (lenient_) {  // OpenSCAD binds it in the call anyway, after the parameters
                     warn(a.loc, "variable " + a.name + " not specified as parameter");
+                    extra.emplace_back(&a, std::move(v));
                     continue;
                 }
                 throw SourceError(a.loc, "unknown argument '" + a.name + "' for '" + callee + "'");
@@ -308,6 +335,10 @@ void Evaluator::bind_params(const std::vector<ast::Binding>& params, const std::
         if (have[i]) v = std::move(given[i]);
         else if (p.value) v = eval(*p.value, scope);  // defaults see earlier parameters
         bind(scope, p.name, std::move(v), &p.loc);
+    }
+    for (auto& [a, v] : extra) {
+        if (VarSlot* twice = scope.find_local(a->name)) twice->value = std::move(v);  // the last counts
+        else bind(scope, a->name, std::move(v), &a->loc);
     }
 }
 
@@ -333,6 +364,10 @@ void Evaluator::call_module(const ast::Stmt& def, Scope& def_scope, const ast::S
             ~PopModule() { m.pop_back(); }
         } pop{module_stack_};
         bind(callee, "$parent_modules", Value(static_cast<double>(module_stack_.size())), nullptr);
+        if (lenient_)  // OpenSCAD's ModuleContext::initializeModule()
+            for (const ast::Stmt* a : prepare(def.body).assigns)
+                if (a->value && is_literal(*a->value) && callee.find_local(a->name))
+                    warn(a->loc, "Module " + def.name + ": Parameter " + a->name + " is overwritten with a literal");
         std::size_t mark = out_.mark();
         eval_block(def.body, callee, false);
         out_.group(mark, call.loc);

@@ -22,7 +22,7 @@ OpenSCAD), through
 For files both accept, the ECHO lines are compared too.
 
 usage: scripts/openscad_testdata.py --data DIR/tests/data/scad
-         [--kerf build/kerf] [--openscad openscad] [--timeout 30]
+         [--kerf build/kerf] [--openscad openscad] [--timeout 60]
          [--jobs 2] [--render] [--cache FILE] [--only SUBSTR]
          [--list pass,error,crash,echo,...] [--top 25]
 exit: 0, or 1 when any file crashes or times out in kerf, 2 bad usage.
@@ -120,7 +120,7 @@ def main():
     ap.add_argument("--data", required=True, help="OpenSCAD's tests/data/scad")
     ap.add_argument("--kerf", default="build/kerf")
     ap.add_argument("--openscad", default="openscad")
-    ap.add_argument("--timeout", type=float, default=30)
+    ap.add_argument("--timeout", type=float, default=60)
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--render", action="store_true")
     ap.add_argument("--cache", help="JSON file keeping OpenSCAD's outcomes")
