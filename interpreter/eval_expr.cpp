@@ -301,10 +301,13 @@ Value Evaluator::call_builtin(const ast::Expr& e, Scope& s) {
         if (!a.name.empty()) check_builtin_name(*fn, a, i, e.args.size());
         argv[i] = a.value ? eval(*a.value, s) : Value();
     }
-    BuiltinContext ctx{e.loc, opt_.limits.list_elements, module_stack_, lenient_};
+    std::vector<std::string> said;
+    BuiltinContext ctx{e.loc, opt_.limits.list_elements, module_stack_, lenient_, &said};
     if (!lenient_) return fn->fn(std::span<const Value>(argv, e.args.size()), ctx);
     try {
-        return fn->fn(std::span<const Value>(argv, e.args.size()), ctx);
+        Value v = fn->fn(std::span<const Value>(argv, e.args.size()), ctx);
+        for (std::string& m : said) warn(e.loc, std::move(m));
+        return v;
     } catch (const SoftError& err) {
         warn(err.diagnostic().loc, err.diagnostic().message);
         return Value();
