@@ -55,7 +55,20 @@ Value less(const Value& a, const Value& b, std::string& warning) {
     return Value();
 }
 
+// Two ranges as OpenSCAD's RangeType orders them: an empty one (no
+// element) below any other, then by begin, step and element count.
+Value compare_ranges(std::string_view op, const Range& a, const Range& b) {
+    const std::uint32_t n1 = openscad_range_count(a), n2 = openscad_range_count(b);
+    int c;
+    if (n1 == 0 || n2 == 0) c = (n1 != 0) - (n2 != 0);
+    else if (a.start != b.start) c = a.start < b.start ? -1 : 1;
+    else if (a.step != b.step) c = a.step < b.step ? -1 : 1;
+    else c = (n1 > n2) - (n1 < n2);
+    return Value(op == "<" ? c < 0 : op == ">" ? c > 0 : op == "<=" ? c <= 0 : c >= 0);
+}
+
 Value compare(std::string_view op, const Value& a, const Value& b, std::string& warning) {
+    if (a.is_range() && b.is_range()) return compare_ranges(op, a.as_range(), b.as_range());
     Value r;
     if (op == "<") r = less(a, b, warning);
     else if (op == ">") r = less(b, a, warning);
