@@ -14,6 +14,7 @@
 
 #include "grammar/literals.hpp"
 #include "interpreter/builtins/support.hpp"
+#include "interpreter/openscad_ops.hpp"
 
 namespace kerf::builtin {
 namespace {
@@ -233,12 +234,22 @@ Value search_fn(std::span<const Value> args, const BuiltinContext& ctx) {
     return Value::list(std::move(m.flat));
 }
 
-// chr(65, [72, 105]): the characters of valid code points (1 to 0x10FFFF,
-// no surrogates; fractions truncated), lists flattened; anything else adds
-// nothing, as in OpenSCAD.
-void chr_of(const Value& v, std::string& out) {
+// chr(65, [72, 105], [67:69]): the characters of valid code points (1 to
+// 0x10FFFF, no surrogates; fractions truncated), lists flattened, ranges
+// taken element by element (one of 10,000 elements or more adds nothing,
+// with OpenSCAD's warning); anything else adds nothing, as in OpenSCAD.
+void chr_of(const Value& v, std::string& out, const BuiltinContext& ctx) {
     if (v.is_list()) {
-        for (const Value& e : v.as_list()) chr_of(e, out);
+        for (const Value& e : v.as_list()) chr_of(e, out, ctx);
+        return;
+    }
+    if (v.is_range()) {
+        const Range& r = v.as_range();
+        if (const std::uint32_t n = openscad_range_count(r); n >= 10000) {
+            ctx.warn("Bad range parameter in for statement: too many elements (" + std::to_string(n) + ").");
+            return;
+        }
+        for (std::uint64_t i = 0, n = r.size(); i < n; ++i) chr_of(Value(r.at(i)), out, ctx);
         return;
     }
     if (!v.is_number()) return;
@@ -249,9 +260,9 @@ void chr_of(const Value& v, std::string& out) {
     grammar::append_utf8(out, c);
 }
 
-Value chr_fn(std::span<const Value> args, const BuiltinContext&) {
+Value chr_fn(std::span<const Value> args, const BuiltinContext& ctx) {
     std::string out;
-    for (const Value& a : args) chr_of(a, out);
+    for (const Value& a : args) chr_of(a, out, ctx);
     return Value::string(std::move(out));
 }
 
