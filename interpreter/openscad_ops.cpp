@@ -115,6 +115,15 @@ Value openscad_binary(std::string_view op, const Value& a, const Value& b, std::
                   " != " + std::to_string(b.as_list().size()) + ")";
         return Value();
     }
+    if (op == "/" && a.is_number() && b.is_list()) {  // 2 / [1, 4] is [2, 0.5], nested lists alike
+        ValueList out;
+        out.reserve(b.as_list().size());
+        std::string inner;
+        for (const Value& e : b.as_list())
+            out.push_back(e.is_number() ? Value(a.as_number() / e.as_number())
+                                        : e.is_list() ? openscad_binary(op, a, e, inner) : Value());
+        return Value::list(std::move(out));
+    }
     warning = undefined_operation(op, a, b);
     return Value();
 }

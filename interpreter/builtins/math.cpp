@@ -151,6 +151,11 @@ Value cross_fn(std::span<const Value> args, const BuiltinContext& ctx) {
     std::vector<double> a, b;
     vector_arg(args, 0, ctx, "cross", a);
     vector_arg(args, 1, ctx, "cross", b);
+    for (const std::vector<double>* v : {&a, &b})
+        for (double x : *v)
+            if (!std::isfinite(x))  // OpenSCAD: undef
+                fail(ctx, std::string("Invalid value (") + (std::isnan(x) ? "NaN" : "INF") +
+                              ") in parameter vector for cross()");
     if (a.size() == 2 && b.size() == 2) return Value(a[0] * b[1] - a[1] * b[0]);
     if (a.size() != 3 || b.size() != 3)
         fail(ctx, "cross: expected two 3-vectors or two 2-vectors, got lengths " + std::to_string(a.size()) +
