@@ -82,6 +82,10 @@ void Evaluator::flatten(const std::vector<ast::StmtPtr>& stmts, std::vector<cons
         }
         const std::string path = find_library(st);
         if (path.empty()) continue;
+        if (lenient_ && files_.includes.contains(path)) {  // OpenSCAD: as if the file were not there
+            warn(st.loc, "Can't open include file '" + st.name + "'.");
+            continue;
+        }
         ChainGuard on_chain(files_.includes, path, st.loc);
         flatten(files_.load(path, st.loc).stmts, out);
     }

@@ -90,14 +90,19 @@ const ast::Program& Loader::keep(ast::Program program) {
     return programs_.back();
 }
 
-void Loader::Chain::enter(const std::string& path, const SourceLoc& loc) {
+bool Loader::Chain::contains(const std::string& path) const {
     const std::string key = identity(path);
     for (const std::string& c : paths_)
-        if (identity(c) == key) {
-            std::string text;
-            for (const std::string& p : paths_) text += p + " -> ";
-            throw SourceError(loc, std::string(what_) + " cycle: " + text + path);
-        }
+        if (identity(c) == key) return true;
+    return false;
+}
+
+void Loader::Chain::enter(const std::string& path, const SourceLoc& loc) {
+    if (contains(path)) {
+        std::string text;
+        for (const std::string& p : paths_) text += p + " -> ";
+        throw SourceError(loc, std::string(what_) + " cycle: " + text + path);
+    }
     paths_.push_back(path);
 }
 

@@ -42,6 +42,7 @@ public:
     public:
         explicit Chain(const char* what) : what_(what) {}
         void enter(const std::string& path, const SourceLoc& loc);
+        bool contains(const std::string& path) const;
         void leave() { paths_.pop_back(); }
         bool empty() const { return paths_.empty(); }
         // A used file's includes start a chain of their own.
