@@ -124,6 +124,7 @@ KERF_AT(function_def, b.function_def(at));
 KERF_AT(assign_name, b.push_name(in.string_view(), at));
 KERF_AT(assign_stmt, b.assign(at));
 KERF_AT(path_text, b.path(in.string()));
+KERF_AT(empty_path, b.path(std::string()));
 KERF_AT(quoted_path, b.path(decode_string(in.string_view())));
 KERF_AT(include_stmt, b.include(ast::StmtKind::Include, at));
 KERF_AT(use_stmt, b.include(ast::StmtKind::Use, at));
