@@ -2,6 +2,7 @@
 #include <cmath>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <utility>
 
 #include "interpreter/builtins/builtins.hpp"
@@ -204,10 +205,26 @@ Value Evaluator::call_function(const ast::Expr& e, Scope& s) {
     DynRestore restore(dyn_);
     Scope callee(def_scope);
     callee.module = def_scope->module;
+    if (def->self_tail_call < 0) def->self_tail_call = def->value && calls_itself_last(*def->value, def->name);
     return traced([&] {
         bind_params(def->params, e.args, def->name, s, callee, e.loc);
+        if (!def->self_tail_call) return def->value ? eval(*def->value, callee) : Value();
         return run_body(*def, *def_scope, callee);
     });
+}
+
+// Whether e, in tail position, may call `name`: through ?:, let, echo and
+// assert, as run_body follows them.
+bool Evaluator::calls_itself_last(const ast::Expr& e, std::string_view name) {
+    switch (e.kind) {
+        case ast::ExprKind::Ternary:
+            return calls_itself_last(*e.items[1], name) || calls_itself_last(*e.items[2], name);
+        case ast::ExprKind::Let:
+        case ast::ExprKind::Echo:
+        case ast::ExprKind::Assert: return !e.items.empty() && e.items[0] && calls_itself_last(*e.items[0], name);
+        case ast::ExprKind::Call: return e.text == name;
+        default: return false;
+    }
 }
 
 // A function's body, with OpenSCAD 2021's tail calls: through `?:`, `let`,
@@ -219,7 +236,10 @@ Value Evaluator::call_function(const ast::Expr& e, Scope& s) {
 Value Evaluator::run_body(const ast::Stmt& def, Scope& def_scope, Scope& callee) {
     const std::size_t dyn_entry = dyn_.size();
     const std::size_t calls_entry = calls_.size();  // the call's own note is the last
-    std::vector<std::unique_ptr<Scope>> lets;       // the lets passed on the way, innermost last
+    // The lets passed on the way: the first on the stack (the common `let
+    // (...) expr` body costs no allocation), any further ones on the heap.
+    std::optional<Scope> first_let;
+    std::vector<std::unique_ptr<Scope>> lets;
     std::uint64_t tail_calls = 0;
     Scope* s = &callee;
     const ast::Expr* body = def.value.get();
@@ -227,8 +247,13 @@ Value Evaluator::run_body(const ast::Stmt& def, Scope& def_scope, Scope& callee)
         switch (body->kind) {
             case ast::ExprKind::Ternary: body = body->items[eval(*body->items[0], *s).truthy() ? 1 : 2].get(); continue;
             case ast::ExprKind::Let:
-                lets.push_back(std::make_unique<Scope>(s));
-                s = lets.back().get();
+                if (!first_let) {
+                    first_let.emplace(s);
+                    s = &*first_let;
+                } else {
+                    lets.push_back(std::make_unique<Scope>(s));
+                    s = lets.back().get();
+                }
                 bind_sequential(body->bindings, *s, "let");
                 body = body->items.empty() ? nullptr : body->items[0].get();
                 continue;
@@ -254,6 +279,7 @@ Value Evaluator::run_body(const ast::Stmt& def, Scope& def_scope, Scope& callee)
                 callee.truncate(0);
                 for (VarSlot& v : next.vars) callee.add(std::move(v));
                 lets.clear();
+                first_let.reset();
                 s = &callee;
                 body = def.value.get();
                 continue;
