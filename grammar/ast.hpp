@@ -90,6 +90,10 @@ struct Stmt {
     std::vector<StmtPtr> else_body;
     bool has_else = false;
     Modifier modifier = Modifier::None;
+    // FunctionDef: whether the body calls the function itself in tail
+    // position (the evaluator's cache, filled on the first call: -1 not
+    // known yet), so that only such functions take the tail-call loop.
+    mutable signed char self_tail_call = -1;
 };
 
 struct Program {

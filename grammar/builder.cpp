@@ -165,13 +165,13 @@ void Builder::index(SourceLoc at) {
     push(std::move(e), h + 1);
 }
 
-void Builder::member_name(char c) { member_ = c; }
+void Builder::member_name(std::string_view name) { member_ = name; }
 
 void Builder::member(SourceLoc at) {
     std::uint32_t h = 0;
     auto e = make(ExprKind::Member, std::move(at));
     e->items.reserve(1);
-    e->text = std::string(1, member_);
+    e->text = member_;
     e->items.push_back(pop(h));
     push(std::move(e), h + 1);
 }

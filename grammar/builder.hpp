@@ -43,7 +43,7 @@ public:
     void binary(SourceLoc at);
     void ternary(SourceLoc at);
     void index(SourceLoc at);
-    void member_name(char c);
+    void member_name(std::string_view name);
     void member(SourceLoc at);
     void mark_items();  // items of a list / range / list-if start here
     void list_kind(ast::ExprKind kind);  // List or Range, known at the closing `]`
@@ -120,7 +120,7 @@ private:
     std::vector<ast::StmtPtr> open_;  // open_[0] is the program's root block
     bool c_style_pending_ = false;
     std::vector<bool> for_kinds_;  // per open list `for`: C-style?
-    char member_ = 'x';
+    std::string member_ = "x";
     ast::ExprKind list_kind_ = ast::ExprKind::List;
     ast::Modifier modifier_ = ast::Modifier::None;
     std::string path_;

@@ -22,6 +22,7 @@ KERF_EXPECT(rel_expr, "expression");
 KERF_EXPECT(eq_expr, "expression");
 KERF_EXPECT(and_expr, "expression");
 KERF_EXPECT(list_element, "expression");
+KERF_EXPECT(generator, "for, if or each");
 KERF_EXPECT(prefix_body, "expression");
 KERF_EXPECT(list_next, "expression");
 KERF_EXPECT(arg_next, "expression");

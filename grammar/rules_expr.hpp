@@ -64,9 +64,9 @@ struct list_tail : pg::seq<pg::star<pg::if_must<comma, list_next>>, pg::must<rbr
 struct range_end : pg::sor<rbracket, pg::if_must<colon, expr, rbracket>> {};
 struct range_tail : pg::if_must<colon, expr, range_end> {};
 struct list_rest : pg::sor<range_tail, list_tail> {};
-struct generator;
+struct generator_elem;
 struct list_body
-    : pg::sor<list_empty, pg::if_must<generator, list_tail>, pg::if_must<expr, list_rest>,
+    : pg::sor<list_empty, pg::if_must<generator_elem, list_tail>, pg::if_must<expr, list_rest>,
               pg::seq<empty_item, list_tail>> {};
 struct list_expr : nest<list_open, pg::must<list_body>> {};
 
@@ -90,7 +90,13 @@ struct gen_if
 struct gen_let : nest<kw<'l', 'e', 't'>, pg::must<bind_list>, pg::must<list_element>> {};
 struct gen_each : nest<kw<'e', 'a', 'c', 'h'>, pg::must<list_element>> {};
 struct generator : pg::sor<gen_for, gen_if, gen_let, gen_each> {};
-struct list_element : pg::sor<generator, expr> {};
+// `( if (c) x )`: a generator in parentheses, as OpenSCAD allows. Only a
+// generator no expression starts like (for, if, each): `(let (a = 1) a)`
+// stays the let expression, which may go on (`(let (a = 1) a) + 1`).
+struct gen_paren_head : pg::seq<lparen, pg::at<pg::sor<gen_for_kw, gen_if_kw, kw<'e', 'a', 'c', 'h'>>>> {};
+struct gen_paren : nest<gen_paren_head, pg::must<generator>, pg::must<rparen>> {};
+struct generator_elem : pg::sor<generator, gen_paren> {};
+struct list_element : pg::sor<generator_elem, expr> {};
 
 // Expression prefixes `let (...) e`, `echo (...) e`, `assert (...) e`.
 struct let_expr : nest<kw<'l', 'e', 't'>, pg::must<bind_list>, pg::must<expr>> {};
@@ -121,7 +127,9 @@ struct primary : pg::sor<pg::seq<pg::at<pg::digit>, pg::at<name>, word_primary>,
 
 // ---- postfix and operators -------------------------------------------------
 struct index_op : nest<lbracket, pg::must<expr>, pg::must<rbracket>> {};
-struct member_name : pg::seq<pg::one<'x', 'y', 'z'>, pg::not_at<pg::identifier_other>> {};
+// `.x`, `.y`, `.z`; OpenSCAD's dialect takes any name there (`v.w` is undef).
+struct member_name : pg::sor<pg::seq<pg::one<'x', 'y', 'z'>, pg::not_at<pg::identifier_other>>,
+                             pg::seq<openscad_on, pg::identifier>> {};
 struct member_tok : pg::seq<member_name, ws> {};
 struct member_op : pg::if_must<pg::seq<pg::one<'.'>, ws>, member_tok> {};
 // A call of whatever value an expression has: `f(1)(2)`, `fs[0](3)`.

@@ -73,7 +73,9 @@ struct path_text : pg::plus<pg::not_one<'>', '\n', '\r'>> {};
 struct path_close : pg::one<'>'> {};
 struct angle_path : pg::if_must<pg::one<'<'>, path_text, path_close> {};
 struct quoted_path : string_lit {};
-struct file_path : pg::seq<pg::sor<angle_path, quoted_path>, ws> {};
+// `use <>`: OpenSCAD's dialect takes it (and warns that it cannot open '').
+struct empty_path : pg::seq<openscad_on, pg::string<'<', '>'>> {};
+struct file_path : pg::seq<pg::sor<empty_path, angle_path, quoted_path>, ws> {};
 struct include_stmt : pg::if_must<kw<'i', 'n', 'c', 'l', 'u', 'd', 'e'>, file_path> {};
 struct use_stmt : pg::if_must<kw<'u', 's', 'e'>, file_path> {};
 

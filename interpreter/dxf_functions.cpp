@@ -47,7 +47,12 @@ Value Evaluator::call_dxf_function(const ast::Expr& e, Scope& s) {
         }
     }
     if (file.empty()) return soft(e.loc, "no file given"), Value();
-    const std::string path = files_.resolve(file, e.loc);
+    std::string path;
+    try {
+        path = files_.resolve_data(file, e.loc);
+    } catch (const SoftError& err) {
+        return soft(e.loc, err.diagnostic().message), Value();
+    }
     const std::string where = "'" + file + "', layer '" + layer + "'";
     try {
         if (dim) {

@@ -1,6 +1,8 @@
 // Expressions: names, operators, calls, list comprehensions, let/echo/assert.
 #include <cmath>
 #include <iostream>
+#include <memory>
+#include <optional>
 #include <utility>
 
 #include "interpreter/builtins/builtins.hpp"
@@ -34,8 +36,16 @@ void Evaluator::count_iterations(std::uint64_t n, const SourceLoc& loc) {
 
 std::uint64_t Evaluator::iteration_count(Value& v, const SourceLoc& loc) {
     std::uint64_t n;
-    if (v.is_range()) n = v.as_range().size();
-    else if (v.is_list()) n = v.as_list().size();
+    if (v.is_range()) {
+        n = v.as_range().size();
+        // OpenSCAD runs no pass over a range it counts too many elements
+        // in (a step of 0 among them), with its warning.
+        if (lenient_)
+            if (const std::uint32_t count = openscad_range_count(v.as_range()); count >= kOpenScadForCap) {
+                warn(loc, "Bad range parameter in for statement: too many elements (" + std::to_string(count) + ")");
+                n = 0;
+            }
+    } else if (v.is_list()) n = v.as_list().size();
     else if (v.is_string()) n = utf8_length(v.as_string());
     else if (lenient_) {  // OpenSCAD: undef runs no iteration, any other value one
         n = v.is_undef() ? 0 : 1;
@@ -171,35 +181,114 @@ void Evaluator::do_assert(const std::vector<ast::Binding>& args, Scope& s, const
     throw SourceError(loc, "assertion failed");
 }
 
+const ast::Stmt* Evaluator::find_function(std::string_view name, Scope& s, Scope*& def_scope) {
+    for (Scope* sc = &s; sc; sc = sc->parent) {
+        for (const ast::Stmt* f : sc->functions)
+            if (f->name == name) return def_scope = sc, f;
+        for (Scope* used : sc->used)
+            for (const ast::Stmt* f : used->functions)
+                if (f->name == name) return def_scope = used, f;
+    }
+    return nullptr;
+}
+
 Value Evaluator::call_function(const ast::Expr& e, Scope& s) {
     std::string_view name = e.text;
     // OpenSCAD calls a variable holding a function before a function of
     // that name (only once a literal exists can a variable hold one).
     if (function_values_)
         if (const Value* v = find_value(name, s); v && v->is_function()) return call_closure(*v, e.args, s, e.loc, e.text);
-    for (Scope* sc = &s; sc; sc = sc->parent) {
-        auto try_scope = [&](Scope* def_scope) -> const ast::Stmt* {
-            for (const ast::Stmt* f : def_scope->functions)
-                if (f->name == name) return f;
-            return nullptr;
-        };
-        Scope* def_scope = sc;
-        const ast::Stmt* def = try_scope(sc);
-        for (std::size_t i = 0; !def && i < sc->used.size(); ++i) {
-            def_scope = sc->used[i];
-            def = try_scope(def_scope);
-        }
-        if (!def) continue;
-        DepthGuard guard(*this, e.loc);
-        DynRestore restore(dyn_);
-        Scope callee(def_scope);
-        callee.module = def_scope->module;
-        return traced([&] {
-            bind_params(def->params, e.args, def->name, s, callee, e.loc);
-            return def->value ? eval(*def->value, callee) : Value();
-        });
+    Scope* def_scope = nullptr;
+    const ast::Stmt* def = find_function(name, s, def_scope);
+    if (!def) return call_builtin(e, s);
+    DepthGuard guard(*this, e.loc);
+    DynRestore restore(dyn_);
+    Scope callee(def_scope);
+    callee.module = def_scope->module;
+    if (def->self_tail_call < 0) def->self_tail_call = def->value && calls_itself_last(*def->value, def->name);
+    return traced([&] {
+        bind_params(def->params, e.args, def->name, s, callee, e.loc);
+        if (!def->self_tail_call) return def->value ? eval(*def->value, callee) : Value();
+        return run_body(*def, *def_scope, callee);
+    });
+}
+
+// Whether e, in tail position, may call `name`: through ?:, let, echo and
+// assert, as run_body follows them.
+bool Evaluator::calls_itself_last(const ast::Expr& e, std::string_view name) {
+    switch (e.kind) {
+        case ast::ExprKind::Ternary:
+            return calls_itself_last(*e.items[1], name) || calls_itself_last(*e.items[2], name);
+        case ast::ExprKind::Let:
+        case ast::ExprKind::Echo:
+        case ast::ExprKind::Assert: return !e.items.empty() && e.items[0] && calls_itself_last(*e.items[0], name);
+        case ast::ExprKind::Call: return e.text == name;
+        default: return false;
     }
-    return call_builtin(e, s);
+}
+
+// A function's body, with OpenSCAD 2021's tail calls: through `?:`, `let`,
+// `echo` and `assert`, a call of the function itself rebinds its parameters
+// and loops instead of nesting, so `f(n - 1, acc + n)` recursion is not
+// bound by the call depth (OpenSCAD's evaluate_function() does the same,
+// and stops a chain at 1,000,000 calls). Only while the call has pushed no
+// `$` variable: those belong to the call they were bound in.
+Value Evaluator::run_body(const ast::Stmt& def, Scope& def_scope, Scope& callee) {
+    const std::size_t dyn_entry = dyn_.size();
+    const std::size_t calls_entry = calls_.size();  // the call's own note is the last
+    // The lets passed on the way: the first on the stack (the common `let
+    // (...) expr` body costs no allocation), any further ones on the heap.
+    std::optional<Scope> first_let;
+    std::vector<std::unique_ptr<Scope>> lets;
+    std::uint64_t tail_calls = 0;
+    Scope* s = &callee;
+    const ast::Expr* body = def.value.get();
+    while (body) {
+        switch (body->kind) {
+            case ast::ExprKind::Ternary: body = body->items[eval(*body->items[0], *s).truthy() ? 1 : 2].get(); continue;
+            case ast::ExprKind::Let:
+                if (!first_let) {
+                    first_let.emplace(s);
+                    s = &*first_let;
+                } else {
+                    lets.push_back(std::make_unique<Scope>(s));
+                    s = lets.back().get();
+                }
+                bind_sequential(body->bindings, *s, "let");
+                body = body->items.empty() ? nullptr : body->items[0].get();
+                continue;
+            case ast::ExprKind::Echo:
+            case ast::ExprKind::Assert:
+                if (body->kind == ast::ExprKind::Echo) do_echo(body->args, *s);
+                else do_assert(body->args, *s, body->loc);
+                body = body->items.empty() ? nullptr : body->items[0].get();
+                continue;
+            case ast::ExprKind::Call: {
+                if (body->text != def.name || dyn_.size() != dyn_entry) break;
+                if (function_values_)
+                    if (const Value* v = find_value(body->text, *s); v && v->is_function()) break;
+                Scope* scope = nullptr;
+                if (find_function(body->text, *s, scope) != &def) break;
+                if (++tail_calls > opt_.limits.tail_calls)
+                    throw SourceError(body->loc, "tail call limit " + std::to_string(opt_.limits.tail_calls) +
+                                                     " exceeded ('" + def.name + "' calls itself without end?)");
+                count_step(body->loc);
+                Scope next(&def_scope);
+                bind_params(def.params, body->args, def.name, *s, next, body->loc);
+                calls_.resize(calls_entry);  // notes name the first call, not each pass
+                callee.truncate(0);
+                for (VarSlot& v : next.vars) callee.add(std::move(v));
+                lets.clear();
+                first_let.reset();
+                s = &callee;
+                body = def.value.get();
+                continue;
+            }
+            default: break;
+        }
+        return eval(*body, *s);
+    }
+    return Value();
 }
 
 // A function value's call (function_values.cpp makes them).
@@ -238,10 +327,13 @@ Value Evaluator::call_builtin(const ast::Expr& e, Scope& s) {
         if (!a.name.empty()) check_builtin_name(*fn, a, i, e.args.size());
         argv[i] = a.value ? eval(*a.value, s) : Value();
     }
-    BuiltinContext ctx{e.loc, opt_.limits.list_elements, module_stack_, lenient_};
+    std::vector<std::string> said;
+    BuiltinContext ctx{e.loc, opt_.limits.list_elements, module_stack_, lenient_, &said};
     if (!lenient_) return fn->fn(std::span<const Value>(argv, e.args.size()), ctx);
     try {
-        return fn->fn(std::span<const Value>(argv, e.args.size()), ctx);
+        Value v = fn->fn(std::span<const Value>(argv, e.args.size()), ctx);
+        for (std::string& m : said) warn(e.loc, std::move(m));
+        return v;
     } catch (const SoftError& err) {
         warn(err.diagnostic().loc, err.diagnostic().message);
         return Value();
@@ -407,7 +499,8 @@ Value Evaluator::eval(const ast::Expr& e, Scope& s) {
                 }
                 return Value::range(v[0], 1, v[1]);
             }
-            if (v[1] == 0) throw SourceError(e.items[1]->loc, "range step must not be 0");
+            // OpenSCAD makes [a : 0 : b]; its loops then run no pass (iteration_count).
+            if (v[1] == 0 && !lenient_) throw SourceError(e.items[1]->loc, "range step must not be 0");
             // A step pointing away from the end: empty in both dialects, and
             // OpenSCAD says so where the range is made.
             if (lenient_ && v[0] < v[2] && v[1] < 0) warn(e.loc, "begin is smaller than the end, but step is negative");
@@ -448,6 +541,10 @@ Value Evaluator::eval(const ast::Expr& e, Scope& s) {
         case K::Member: {
             Value obj = eval(*e.items[0], s);
             int i = e.text == "x" ? 0 : e.text == "y" ? 1 : e.text == "z" ? 2 : -1;
+            if (i < 0 && lenient_) {  // OpenSCAD 2021: undef, silently
+                warn(e.loc, "unknown member '." + e.text + "' is undef (OpenSCAD 2021 knows .x, .y and .z)");
+                return Value();
+            }
             if (i < 0) throw SourceError(e.loc, "unknown member '." + e.text + "'");
             if (lenient_) return openscad_index(obj.is_list() ? obj : Value(), Value(i));
             if (!obj.is_list()) throw SourceError(e.loc, "'." + e.text + "' needs a list, got " + obj.type_name());

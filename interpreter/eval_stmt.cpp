@@ -1,10 +1,13 @@
 // Statements: blocks and their bindings, modules and children(), for/let/
 // echo/assert/if, include and use.
 #include <optional>
+#include <strings.h>
 #include <unordered_map>
 
 #include "grammar/parser.hpp"
 #include "interpreter/evaluator.hpp"
+#include "interpreter/openscad_ops.hpp"
+#include "interpreter/text/font.hpp"
 
 namespace kerf::eval {
 
@@ -35,6 +38,30 @@ private:
     std::unordered_map<std::string_view, std::size_t> first_;
 };
 
+// OpenSCAD's Expression::isLiteral(): a literal, or a sign, list or range
+// of literals (what its "overwritten with a literal" warning looks at).
+bool is_literal(const ast::Expr& e) {
+    switch (e.kind) {
+        case ast::ExprKind::Number:
+        case ast::ExprKind::String:
+        case ast::ExprKind::Bool:
+        case ast::ExprKind::Undef: return true;
+        case ast::ExprKind::Unary:
+        case ast::ExprKind::List:
+        case ast::ExprKind::Range:
+            for (const ast::ExprPtr& i : e.items)
+                if (!i || !is_literal(*i)) return false;
+            return true;
+        default: return false;
+    }
+}
+
+// `use <f.ttf>` names a font, not a script (OpenSCAD's FileModule::registerUse).
+bool is_font_file(const std::string& path) {
+    const std::size_t n = path.size();
+    return n >= 4 && (strcasecmp(path.c_str() + n - 4, ".ttf") == 0 || strcasecmp(path.c_str() + n - 4, ".otf") == 0);
+}
+
 }  // namespace
 
 // ---------------------------------------------------------------- files
@@ -42,12 +69,23 @@ private:
 void Evaluator::flatten(const std::vector<ast::StmtPtr>& stmts, std::vector<const ast::Stmt*>& out) {
     for (const ast::StmtPtr& sp : stmts) {
         const ast::Stmt& st = *sp;
+        // OpenSCAD's parser puts a bare `{ ... }`'s statements in the
+        // enclosing block: its bindings are the block's own (`f = 2;` in it
+        // replaces the outer f, with the overwrite warning).
+        if (lenient_ && st.kind == ast::StmtKind::Block && st.modifier == ast::Modifier::None) {
+            flatten(st.body, out);
+            continue;
+        }
         if (st.kind != ast::StmtKind::Include) {
             out.push_back(&st);
             continue;
         }
         const std::string path = find_library(st);
         if (path.empty()) continue;
+        if (lenient_ && files_.includes.contains(path)) {  // OpenSCAD: as if the file were not there
+            warn(st.loc, "Can't open include file '" + st.name + "'.");
+            continue;
+        }
         ChainGuard on_chain(files_.includes, path, st.loc);
         flatten(files_.load(path, st.loc).stmts, out);
     }
@@ -68,6 +106,13 @@ std::string Evaluator::find_library(const ast::Stmt& st) {
 Scope* Evaluator::load_use(const ast::Stmt& st) {
     const std::string path = find_library(st);
     if (path.empty()) return nullptr;
+    if (is_font_file(path)) {  // OpenSCAD: the font's families become usable by text()
+        if (!text::register_font_file(path)) {
+            if (!lenient_) throw SourceError(st.loc, "cannot read the font file '" + st.name + "'");
+            warn(st.loc, "Can't read font with path '" + st.name + "'");
+        }
+        return nullptr;
+    }
     const std::string key = Loader::identity(path);
     auto it = use_scopes_.find(key);
     if (it != use_scopes_.end()) return it->second.get();
@@ -248,6 +293,7 @@ void Evaluator::bind_params(const std::vector<ast::Binding>& params, const std::
     }
     std::size_t positional = 0;
     std::size_t dyn_start = dyn_.size();
+    std::vector<std::pair<const ast::Binding*, Value>> extra;  // OpenSCAD binds them too
     for (const ast::Binding& a : args) {
         Value v = a.value ? eval(*a.value, caller) : Value();
         std::size_t i;
@@ -271,8 +317,9 @@ void Evaluator::bind_params(const std::vector<ast::Binding>& params, const std::
                     dyn_.push_back(DynVar{a.name, std::move(v)});
                     continue;
                 }
-                if (lenient_) {
+                if (lenient_) {  // OpenSCAD binds it in the call anyway, after the parameters
                     warn(a.loc, "variable " + a.name + " not specified as parameter");
+                    extra.emplace_back(&a, std::move(v));
                     continue;
                 }
                 throw SourceError(a.loc, "unknown argument '" + a.name + "' for '" + callee + "'");
@@ -292,6 +339,10 @@ void Evaluator::bind_params(const std::vector<ast::Binding>& params, const std::
         if (have[i]) v = std::move(given[i]);
         else if (p.value) v = eval(*p.value, scope);  // defaults see earlier parameters
         bind(scope, p.name, std::move(v), &p.loc);
+    }
+    for (auto& [a, v] : extra) {
+        if (VarSlot* twice = scope.find_local(a->name)) twice->value = std::move(v);  // the last counts
+        else bind(scope, a->name, std::move(v), &a->loc);
     }
 }
 
@@ -317,6 +368,10 @@ void Evaluator::call_module(const ast::Stmt& def, Scope& def_scope, const ast::S
             ~PopModule() { m.pop_back(); }
         } pop{module_stack_};
         bind(callee, "$parent_modules", Value(static_cast<double>(module_stack_.size())), nullptr);
+        if (lenient_)  // OpenSCAD's ModuleContext::initializeModule()
+            for (const ast::Stmt* a : prepare(def.body).assigns)
+                if (a->value && is_literal(*a->value) && callee.find_local(a->name))
+                    warn(a->loc, "Module " + def.name + ": Parameter " + a->name + " is overwritten with a literal");
         std::size_t mark = out_.mark();
         eval_block(def.body, callee, false);
         out_.group(mark, call.loc);
@@ -325,8 +380,10 @@ void Evaluator::call_module(const ast::Stmt& def, Scope& def_scope, const ast::S
 
 void Evaluator::stmt_children(const ast::Stmt& st, Scope& s) {
     const ModuleFrame* frame = s.module;
+    if (!frame && lenient_) return warn(st.loc, "children() outside a module makes nothing");  // OpenSCAD: silently
     if (!frame) throw SourceError(st.loc, "children() is only allowed inside a module");
-    if (st.args.size() > 1) throw SourceError(st.args[1].loc, "too many arguments for 'children' (takes 1)");
+    if (st.args.size() > 1 && lenient_) warn(st.args[1].loc, "children() takes one argument: the others are ignored");
+    else if (st.args.size() > 1) throw SourceError(st.args[1].loc, "too many arguments for 'children' (takes 1)");
     if (!st.args.empty() && !st.args[0].name.empty() && st.args[0].name != "index")
         throw SourceError(st.args[0].loc, "unknown argument '" + st.args[0].name + "' for 'children'");
     const BlockInfo& info = prepare(*frame->children);
@@ -335,11 +392,21 @@ void Evaluator::stmt_children(const ast::Stmt& st, Scope& s) {
         for (std::size_t i = 0; i < info.children.size(); ++i) picks.push_back(i);
     } else {
         Value v = eval(*st.args[0].value, s);
+        // OpenSCAD's answers (its ControlModule::getChild): a child it cannot
+        // pick is nothing, with its warning.
+        auto bad_type = [&](const Value& x) {
+            warn(st.loc, "Bad parameter type (" + to_repr(x) + ") for children, only accept: empty, number, vector, range");
+        };
         auto pick = [&](const Value& x) {
-            if (!x.is_number() || x.as_number() != std::floor(x.as_number()))
+            double d = x.is_number() ? x.as_number() : 0;
+            if (lenient_) {
+                if (!x.is_number()) return bad_type(x);
+                d = std::trunc(d);
+                if (!(d >= 0)) return warn(st.loc, "Negative children index (" + format_number(d) + ") not allowed");
+            } else if (!x.is_number() || d != std::floor(d)) {
                 throw SourceError(st.loc, std::string("children: index must be an integer, got ") +
-                                              (x.is_number() ? format_number(x.as_number()) : x.type_name()));
-            double d = x.as_number();
+                                              (x.is_number() ? format_number(d) : x.type_name()));
+            }
             if (d < 0 || d >= static_cast<double>(info.children.size())) {
                 if (lenient_) {  // OpenSCAD: that child is nothing
                     warn(st.loc, "Children index (" + format_number(d) + ") out of bounds (" +
@@ -354,10 +421,13 @@ void Evaluator::stmt_children(const ast::Stmt& st, Scope& s) {
         if (v.is_number()) pick(v);
         else if (v.is_list()) for (const Value& x : v.as_list()) pick(x);
         else if (v.is_range()) {
+            if (const std::uint32_t count = openscad_range_count(v.as_range()); lenient_ && count >= kOpenScadChildrenCap)
+                return warn(st.loc, "Bad range parameter for children: too many elements (" + std::to_string(count) + ")");
             std::uint64_t n = v.as_range().size();
             count_iterations(n, st.loc);
             for (std::uint64_t i = 0; i < n; ++i) pick(Value(v.as_range().at(i)));
-        } else throw SourceError(st.loc, std::string("children: index must be a number, list or range, got ") + v.type_name());
+        } else if (lenient_) return bad_type(v);
+        else throw SourceError(st.loc, std::string("children: index must be a number, list or range, got ") + v.type_name());
     }
     std::size_t mark = out_.mark();
     DynRestore restore(dyn_);

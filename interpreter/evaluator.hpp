@@ -126,6 +126,10 @@ private:
     Value lookup(const ast::Expr& e, Scope& s);
     Value unknown_variable(const ast::Expr& e);  // the OpenSCAD dialect: undef and a warning
     Value call_function(const ast::Expr& e, Scope& s);
+    // The user function `name` seen from s (and the scope it is defined in), or null.
+    const ast::Stmt* find_function(std::string_view name, Scope& s, Scope*& def_scope);
+    Value run_body(const ast::Stmt& def, Scope& def_scope, Scope& callee);
+    static bool calls_itself_last(const ast::Expr& e, std::string_view name);
     void expand_element(const ast::Expr& e, Scope& s, ValueList& out);
     void expand_for(const ast::Expr& e, std::size_t k, Scope& s, ValueList& out);
     void expand_for_c(const ast::Expr& e, Scope& s, ValueList& out);

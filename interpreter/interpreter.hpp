@@ -21,6 +21,7 @@ struct EvalLimits {
     std::uint64_t list_elements = 10'000'000;    // per list
     std::uint64_t primitives = 1'000'000;
     std::uint64_t steps = 100'000'000;       // calls + instantiations + iterations
+    std::uint64_t tail_calls = 1'000'000;    // a function calling itself in tail position, per chain (OpenSCAD's)
 };
 
 // Which rules a run follows (docs/openscad.md): kerf's strict rules, or

@@ -1,5 +1,7 @@
 #include "interpreter/loader.hpp"
 
+#include "interpreter/value.hpp"
+
 #include <cstdlib>
 #include <filesystem>
 
@@ -21,6 +23,13 @@ std::string Loader::resolve(const std::string& name_text, const SourceLoc& loc) 
     std::string path = find(name_text, loc);
     if (path.empty()) throw SourceError(loc, "cannot find '" + name_text + "'");
     return path;
+}
+
+std::string Loader::resolve_data(const std::string& name_text, const SourceLoc& loc) const {
+    std::string path = find(name_text, loc);
+    if (!path.empty()) return path;
+    if (opt_.dialect == Dialect::Lenient) throw SoftError(loc, "cannot find '" + name_text + "'");
+    throw SourceError(loc, "cannot find '" + name_text + "'");
 }
 
 std::string Loader::find(const std::string& name_text, const SourceLoc& loc) const {
@@ -81,14 +90,19 @@ const ast::Program& Loader::keep(ast::Program program) {
     return programs_.back();
 }
 
-void Loader::Chain::enter(const std::string& path, const SourceLoc& loc) {
+bool Loader::Chain::contains(const std::string& path) const {
     const std::string key = identity(path);
     for (const std::string& c : paths_)
-        if (identity(c) == key) {
-            std::string text;
-            for (const std::string& p : paths_) text += p + " -> ";
-            throw SourceError(loc, std::string(what_) + " cycle: " + text + path);
-        }
+        if (identity(c) == key) return true;
+    return false;
+}
+
+void Loader::Chain::enter(const std::string& path, const SourceLoc& loc) {
+    if (contains(path)) {
+        std::string text;
+        for (const std::string& p : paths_) text += p + " -> ";
+        throw SourceError(loc, std::string(what_) + " cycle: " + text + path);
+    }
     paths_.push_back(path);
 }
 

@@ -20,6 +20,11 @@ public:
 
     // The path of `name` as written at `loc`; "cannot find 'name'" otherwise.
     std::string resolve(const std::string& name, const SourceLoc& loc) const;
+    // A data file import(), surface(), dxf_dim() and dxf_cross() read: as
+    // resolve(), but in the OpenSCAD dialect a missing file is a SoftError
+    // (the caller warns and makes nothing, as OpenSCAD warns and imports
+    // nothing).
+    std::string resolve_data(const std::string& name, const SourceLoc& loc) const;
     // The same search; "" when no place holds `name` (an include or use the
     // OpenSCAD dialect skips with a warning).
     std::string find(const std::string& name, const SourceLoc& loc) const;
@@ -37,6 +42,7 @@ public:
     public:
         explicit Chain(const char* what) : what_(what) {}
         void enter(const std::string& path, const SourceLoc& loc);
+        bool contains(const std::string& path) const;
         void leave() { paths_.pop_back(); }
         bool empty() const { return paths_.empty(); }
         // A used file's includes start a chain of their own.

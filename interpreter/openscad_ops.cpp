@@ -55,7 +55,20 @@ Value less(const Value& a, const Value& b, std::string& warning) {
     return Value();
 }
 
+// Two ranges as OpenSCAD's RangeType orders them: an empty one (no
+// element) below any other, then by begin, step and element count.
+Value compare_ranges(std::string_view op, const Range& a, const Range& b) {
+    const std::uint32_t n1 = openscad_range_count(a), n2 = openscad_range_count(b);
+    int c;
+    if (n1 == 0 || n2 == 0) c = (n1 != 0) - (n2 != 0);
+    else if (a.start != b.start) c = a.start < b.start ? -1 : 1;
+    else if (a.step != b.step) c = a.step < b.step ? -1 : 1;
+    else c = (n1 > n2) - (n1 < n2);
+    return Value(op == "<" ? c < 0 : op == ">" ? c > 0 : op == "<=" ? c <= 0 : c >= 0);
+}
+
 Value compare(std::string_view op, const Value& a, const Value& b, std::string& warning) {
+    if (a.is_range() && b.is_range()) return compare_ranges(op, a.as_range(), b.as_range());
     Value r;
     if (op == "<") r = less(a, b, warning);
     else if (op == ">") r = less(b, a, warning);
@@ -102,6 +115,15 @@ Value openscad_binary(std::string_view op, const Value& a, const Value& b, std::
                   " != " + std::to_string(b.as_list().size()) + ")";
         return Value();
     }
+    if (op == "/" && a.is_number() && b.is_list()) {  // 2 / [1, 4] is [2, 0.5], nested lists alike
+        ValueList out;
+        out.reserve(b.as_list().size());
+        std::string inner;
+        for (const Value& e : b.as_list())
+            out.push_back(e.is_number() ? Value(a.as_number() / e.as_number())
+                                        : e.is_list() ? openscad_binary(op, a, e, inner) : Value());
+        return Value::list(std::move(out));
+    }
     warning = undefined_operation(op, a, b);
     return Value();
 }
@@ -119,6 +141,17 @@ Value openscad_unary(std::string_view op, const Value& a, std::string& warning) 
     }
     warning = std::string("undefined operation (-") + openscad_type_name(a) + ")";
     return Value();
+}
+
+std::uint32_t openscad_range_count(const Range& r) {
+    constexpr std::uint32_t max = 4294967295u;
+    if (std::isnan(r.start) || std::isnan(r.end) || std::isnan(r.step)) return 0;
+    if (r.step < 0 ? r.start < r.end : r.start > r.end) return 0;
+    if (r.start == r.end || std::isinf(r.step)) return 1;
+    if (std::isinf(r.start) || std::isinf(r.end) || r.step == 0) return max;
+    // nextafter: a quotient just below a whole number counts it (OpenSCAD's words).
+    const double steps = std::nextafter((r.end - r.start) / r.step, double(max));
+    return steps >= double(max) ? max : static_cast<std::uint32_t>(steps) + 1;
 }
 
 Value openscad_index(const Value& object, const Value& index) {

@@ -93,7 +93,15 @@ bool Value::operator==(const Value& o) const {
                 if (a[i] != b[i]) return false;
             return true;
         }
-        case ValueType::Range: return as_range() == o.as_range();
+        case ValueType::Range: {
+            // Equal when they hold the same elements, as OpenSCAD compares
+            // them: two empty ranges are equal, [0:1:3] equals [0:1:3.5].
+            const Range& a = as_range();
+            const Range& b = o.as_range();
+            const std::uint64_t n = a.size();
+            if (n != b.size()) return false;
+            return n == 0 || (a.start == b.start && a.step == b.step);
+        }
         case ValueType::Function: return &as_function() == &o.as_function();
     }
     return false;

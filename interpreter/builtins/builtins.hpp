@@ -9,7 +9,9 @@
 #pragma once
 #include <cstdint>
 #include <span>
+#include <string>
 #include <string_view>
+#include <vector>
 
 #include "grammar/source.hpp"
 #include "interpreter/value.hpp"
@@ -25,6 +27,12 @@ struct BuiltinContext {
                                           // outermost first (parent_module)
     bool lenient = false;                 // the OpenSCAD dialect (where a
                                           // builtin's result differs)
+    // What a call that succeeds has to say (OpenSCAD's warning beside a
+    // value); the evaluator reports each at loc.
+    std::vector<std::string>* warnings = nullptr;
+    void warn(std::string message) const {
+        if (warnings) warnings->push_back(std::move(message));
+    }
 };
 
 using BuiltinFn = Value (*)(std::span<const Value> args, const BuiltinContext& ctx);

@@ -16,36 +16,50 @@ namespace kerf::builtin {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kDegPerRad = 180.0 / std::numbers::pi;
-constexpr double kRadPerDeg = std::numbers::pi / 180.0;
 
-// tan in degrees: exact at 0, 30, 45, 60 and their supplements; ±90 (mod
-// 180) is +inf, as in OpenSCAD.
+// tan in degrees, as OpenSCAD 2021 computes it: x is brought into [0, 180)
+// by whole half turns (cycles), then 0, 30, 45, 60 and 90 and their
+// supplements are exact; 0 is -0 and 90 is -inf after an odd number of
+// half turns (tan(-180) is -0, tan(-90) is -inf, tan(90) is +inf).
 double tan_deg(double x) {
     if (!std::isfinite(x)) return kNaN;
-    x = std::fmod(x, 180.0);
-    if (x < 0) x += 180.0;
-    bool negative = false;
-    if (x > 90.0) {
-        x = 180.0 - x;
-        negative = true;
-    }
+    const double cycles = std::floor(x / 180.0);
+    const bool odd = std::fmod(cycles, 2.0) != 0;
+    if (!(x >= 0 && x < 180.0)) x -= 180.0 * cycles;
+    const bool oppose = x > 90.0;
+    if (oppose) x = 180.0 - x;
     double t;
-    if (x == 0) t = 0;
-    else if (x == 30) t = 1 / std::numbers::sqrt3;
+    if (x == 0) t = odd ? -0.0 : 0.0;
+    else if (x == 30) t = std::numbers::inv_sqrt3;
     else if (x == 45) t = 1;
     else if (x == 60) t = std::numbers::sqrt3;
-    else if (x == 90) return std::numeric_limits<double>::infinity();
-    else t = std::tan(x * kRadPerDeg);
-    return negative && t != 0 ? -t : t;
+    else if (x == 90) t = odd ? -std::numeric_limits<double>::infinity() : std::numeric_limits<double>::infinity();
+    else t = std::tan(x * (std::numbers::pi / 180.0));
+    return oppose ? -t : t;
 }
 
-// Radians to degrees, snapping results within rounding of a multiple of
-// 15° to it so that acos(0) is 90 and atan2(1, 1) is 45 exactly.
-double to_degrees(double r) {
-    double d = r * kDegPerRad;
-    double k = std::round(d / 15.0) * 15.0;
-    return std::abs(d - k) <= 1e-13 * std::max(1.0, std::abs(k)) ? k : d;
+double to_degrees(double r) { return r * (180.0 / std::numbers::pi); }  // OpenSCAD: x * M_RAD2DEG
+
+// The inverse functions as OpenSCAD 2021's: the nearest whole degree when
+// the forward function gives x back there exactly (asin(0.5) is 30,
+// atan(1) is 45), the computed angle otherwise.
+template <double (*Inverse)(double), double (*Forward)(double)>
+double inverse_deg(double x) {
+    const double d = to_degrees(Inverse(x));
+    const double whole = std::round(d);
+    return Forward(whole) == x ? whole : d;
+}
+double asin_(double x) { return std::asin(x); }
+double acos_(double x) { return std::acos(x); }
+double atan_(double x) { return std::atan(x); }
+double asin_deg(double x) { return inverse_deg<asin_, sin_deg>(x); }
+double acos_deg(double x) { return inverse_deg<acos_, cos_deg>(x); }
+double atan_deg(double x) { return inverse_deg<atan_, tan_deg>(x); }
+// atan2: the nearest whole degree when within 3e-14 of it.
+double atan2_deg(double y, double x) {
+    const double d = to_degrees(std::atan2(y, x));
+    const double whole = std::round(d);
+    return std::abs(d - whole) < 3.0e-14 ? whole : d;
 }
 
 template <double (*F)(double)>
@@ -54,9 +68,6 @@ Value unary(std::span<const Value> args, const BuiltinContext& ctx, std::string_
     return Value(F(number_arg(args, 0, ctx, name)));
 }
 
-double asin_deg(double x) { return to_degrees(std::asin(x)); }
-double acos_deg(double x) { return to_degrees(std::acos(x)); }
-double atan_deg(double x) { return to_degrees(std::atan(x)); }
 double sqrt_(double x) { return std::sqrt(x); }
 double exp_(double x) { return std::exp(x); }
 double ln_(double x) { return std::log(x); }
@@ -71,7 +82,7 @@ double round_(double x) { return std::round(x); }  // half away from zero
 
 Value atan2_fn(std::span<const Value> args, const BuiltinContext& ctx) {
     expect_count(args, ctx, "atan2", 2);
-    return Value(to_degrees(std::atan2(number_arg(args, 0, ctx, "atan2"), number_arg(args, 1, ctx, "atan2"))));
+    return Value(atan2_deg(number_arg(args, 0, ctx, "atan2"), number_arg(args, 1, ctx, "atan2")));
 }
 
 Value pow_fn(std::span<const Value> args, const BuiltinContext& ctx) {
@@ -140,6 +151,11 @@ Value cross_fn(std::span<const Value> args, const BuiltinContext& ctx) {
     std::vector<double> a, b;
     vector_arg(args, 0, ctx, "cross", a);
     vector_arg(args, 1, ctx, "cross", b);
+    for (const std::vector<double>* v : {&a, &b})
+        for (double x : *v)
+            if (!std::isfinite(x))  // OpenSCAD: undef
+                fail(ctx, std::string("Invalid value (") + (std::isnan(x) ? "NaN" : "INF") +
+                              ") in parameter vector for cross()");
     if (a.size() == 2 && b.size() == 2) return Value(a[0] * b[1] - a[1] * b[0]);
     if (a.size() != 3 || b.size() != 3)
         fail(ctx, "cross: expected two 3-vectors or two 2-vectors, got lengths " + std::to_string(a.size()) +

@@ -14,6 +14,7 @@
 
 #include "grammar/literals.hpp"
 #include "interpreter/builtins/support.hpp"
+#include "interpreter/openscad_ops.hpp"
 
 namespace kerf::builtin {
 namespace {
@@ -31,36 +32,62 @@ Value version_num_fn(std::span<const Value> args, const BuiltinContext&) {
     return Value(l[0].as_number() * 10000 + l[1].as_number() * 100 + (l.size() > 2 ? l[2].as_number() : 0));
 }
 
-// One stream for the run's thread, as OpenSCAD has one generator: a seeded
-// call reseeds it, an unseeded call goes on from where it is. It starts at
-// a fixed seed, so kerf runs are reproducible (OpenSCAD seeds from the
-// clock); the values themselves differ from OpenSCAD's.
+// One stream for the run's thread, as OpenSCAD has one generator (a
+// Mersenne twister drawn through uniform_real_distribution, as here): a
+// seeded call reseeds it, an unseeded call goes on from where it is. It
+// starts at a fixed seed, so kerf runs are reproducible (OpenSCAD seeds
+// from the clock).
 std::mt19937& random_stream() {
     thread_local std::mt19937 stream(20210100u);
     return stream;
 }
 
+// The seed OpenSCAD 2021 makes of a number: its numeric hash modulo the
+// Mersenne prime 2^31 - 1 (the rational value |v| = m * 2^e reduced modulo
+// P, where 2^31 is 1, so 2^e is 2^(e mod 31)), signed, as a 32-bit word;
+// infinities are +-314159 and NaN 0. Equal seeds give OpenSCAD's sequence.
+std::uint32_t openscad_seed(double v) {
+    constexpr std::uint64_t P = (1ull << 31) - 1;
+    if (std::isnan(v)) return 0;
+    if (std::isinf(v)) return static_cast<std::uint32_t>(v > 0 ? 314159 : -314159);
+    int e = 0;
+    const double fraction = std::frexp(std::abs(v), &e);                 // |v| = fraction * 2^e
+    const auto m = static_cast<std::uint64_t>(std::ldexp(fraction, 53));  // exact: 53 bits
+    e -= 53;
+    const int shift = ((e % 31) + 31) % 31;
+    std::uint64_t x = m % P;
+    x = (x << shift) % P;  // x < 2^31 and shift <= 30: no overflow
+    const auto h = static_cast<std::int64_t>(x) * (v < 0 ? -1 : 1);
+    return static_cast<std::uint32_t>(static_cast<std::int32_t>(h));
+}
+
 // rands(min, max, count [, seed]): |count| truncated numbers uniform in
-// [min, max) (the bounds swapped if needed), as OpenSCAD counts them.
+// [min, max) (the bounds swapped if needed), as OpenSCAD counts them; an
+// infinite or NaN bound is -DBL_MAX/2 (min) or DBL_MAX/2 (max), with
+// OpenSCAD's warning.
 Value rands_fn(std::span<const Value> args, const BuiltinContext& ctx) {
     if (args.size() != 3 && args.size() != 4) fail(ctx, "rands() number of parameters does not match");
     for (const Value& a : args)
         if (!a.is_number()) fail(ctx, "rands() parameter could not be converted");
     double lo = args[0].as_number(), hi = args[1].as_number();
-    if (!std::isfinite(lo) || !std::isfinite(hi)) fail(ctx, "rands() range cannot be infinite");
+    constexpr double half = std::numeric_limits<double>::max() / 2;
+    if (!std::isfinite(lo)) {
+        if (!ctx.lenient) fail(ctx, "rands() range cannot be infinite");
+        ctx.warn("rands() range min cannot be infinite: resetting to -" + format_number(half));
+        lo = -half;
+    }
+    if (!std::isfinite(hi)) {
+        if (!ctx.lenient) fail(ctx, "rands() range cannot be infinite");
+        ctx.warn("rands() range max cannot be infinite: resetting to " + format_number(half));
+        hi = half;
+    }
     if (hi < lo) std::swap(lo, hi);
     double count = std::abs(args[2].as_number());
     if (!std::isfinite(count)) count = 1;  // OpenSCAD: "resetting number of results to 1"
     if (count >= static_cast<double>(ctx.max_list_elements) + 1)
         throw SourceError(ctx.loc, "rands: list size limit " + std::to_string(ctx.max_list_elements) + " exceeded");
     std::mt19937& stream = random_stream();
-    if (args.size() == 4) {
-        double seed = args[3].as_number();
-        std::uint64_t bits = 0;
-        static_assert(sizeof bits == sizeof seed);
-        std::memcpy(&bits, &seed, sizeof bits);
-        stream.seed(static_cast<std::uint32_t>(bits ^ (bits >> 32)));
-    }
+    if (args.size() == 4) stream.seed(openscad_seed(args[3].as_number()));
     std::uniform_real_distribution<double> uniform(lo, hi);
     ValueList out;
     out.reserve(static_cast<std::size_t>(count));
@@ -207,12 +234,22 @@ Value search_fn(std::span<const Value> args, const BuiltinContext& ctx) {
     return Value::list(std::move(m.flat));
 }
 
-// chr(65, [72, 105]): the characters of valid code points (1 to 0x10FFFF,
-// no surrogates; fractions truncated), lists flattened; anything else adds
-// nothing, as in OpenSCAD.
-void chr_of(const Value& v, std::string& out) {
+// chr(65, [72, 105], [67:69]): the characters of valid code points (1 to
+// 0x10FFFF, no surrogates; fractions truncated), lists flattened, ranges
+// taken element by element (one of 10,000 elements or more adds nothing,
+// with OpenSCAD's warning); anything else adds nothing, as in OpenSCAD.
+void chr_of(const Value& v, std::string& out, const BuiltinContext& ctx) {
     if (v.is_list()) {
-        for (const Value& e : v.as_list()) chr_of(e, out);
+        for (const Value& e : v.as_list()) chr_of(e, out, ctx);
+        return;
+    }
+    if (v.is_range()) {
+        const Range& r = v.as_range();
+        if (const std::uint32_t n = openscad_range_count(r); n >= 10000) {
+            ctx.warn("Bad range parameter in for statement: too many elements (" + std::to_string(n) + ").");
+            return;
+        }
+        for (std::uint64_t i = 0, n = r.size(); i < n; ++i) chr_of(Value(r.at(i)), out, ctx);
         return;
     }
     if (!v.is_number()) return;
@@ -223,9 +260,9 @@ void chr_of(const Value& v, std::string& out) {
     grammar::append_utf8(out, c);
 }
 
-Value chr_fn(std::span<const Value> args, const BuiltinContext&) {
+Value chr_fn(std::span<const Value> args, const BuiltinContext& ctx) {
     std::string out;
-    for (const Value& a : args) chr_of(a, out);
+    for (const Value& a : args) chr_of(a, out, ctx);
     return Value::string(std::move(out));
 }
 

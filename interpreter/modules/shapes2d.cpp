@@ -198,9 +198,14 @@ void linear_extrude(ModuleCall& c) {
         c.children();
     }
     if (g.mark() == mark) return;
-    for (std::size_t i = mark; i < g.pending.size(); ++i)
-        if (!g.graph.nodes[g.pending[i]].flat)
+    for (std::size_t i = mark; i < g.pending.size(); ++i) {
+        if (g.graph.nodes[g.pending[i]].flat) continue;
+        if (!c.lenient())
             throw SourceError(g.graph.nodes[g.pending[i]].loc, "linear_extrude: extrudes 2D shapes, not 3D solids");
+        c.warn("Ignoring 3D child object for 2D operation");  // OpenSCAD drops it
+        g.pending.erase(g.pending.begin() + std::ptrdiff_t(i--));
+    }
+    if (g.mark() == mark) return;
     bool sweep = twist != 0 || top.x != top.y;
     // OpenSCAD cuts these sides into slices of flat triangles; kerf sweeps them exactly in every mode.
     if (sweep && c.facet_mode() == FacetMode::OpenScad)

@@ -244,7 +244,7 @@ void import_file(ModuleCall& c) {
     if (!a.has(0) || !a[0].is_string())
         arg_error(a, "file must be a string naming an .stl, .obj, .ply, .off, .amf, .3mf, .dxf or .svg file");
     const bool solid = arg_bool(a, 1, "solid", true);
-    const std::string path = c.files().resolve(a[0].as_string(), c.st.loc);
+    const std::string path = c.files().resolve_data(a[0].as_string(), c.st.loc);
     if (path.size() >= 4 && strcasecmp(path.c_str() + path.size() - 4, ".dxf") == 0) return import_drawing(c, path);
     if (path.size() >= 4 && strcasecmp(path.c_str() + path.size() - 4, ".svg") == 0) return import_svg_drawing(c, path);
     const std::string key = (solid ? "1|" : "0|") + path;

@@ -139,7 +139,7 @@ void surface(ModuleCall& c) {
         arg_error(a, "file must be a string naming a .dat height map or a .png image");
     const bool center = arg_bool(a, Center, "center", false);
     const bool invert = arg_bool(a, Invert, "invert", false);
-    const std::string path = c.files().resolve(a[File].as_string(), c.st.loc);
+    const std::string path = c.files().resolve_data(a[File].as_string(), c.st.loc);
     const std::string key = std::string("surface|") + (center ? "1" : "0") + (invert ? "1|" : "0|") + path;
     auto it = c.state().imported.find(key);
     if (it == c.state().imported.end()) {

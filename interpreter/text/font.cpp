@@ -52,14 +52,22 @@ using Pattern = std::unique_ptr<FcPattern, decltype(&FcPatternDestroy)>;
 
 }  // namespace
 
+bool fontconfig_ready() {
+    static std::once_flag init;
+    static bool fc_ok = false;
+    std::call_once(init, [] { fc_ok = FcInit() == FcTrue; });
+    return fc_ok;
+}
+
+bool register_font_file(const std::string& path) {
+    return fontconfig_ready() && FcConfigAppFontAddFile(nullptr, reinterpret_cast<const FcChar8*>(path.c_str())) == FcTrue;
+}
+
 Font find_font(std::string_view spec, bool fallback, std::string* substituted) {
     struct stat st {};
     if (spec.empty() && ::stat(kDefaultFile, &st) == 0) return open_face(kDefaultFile, 0);
     const std::string name(spec.empty() ? kDefaultFont : spec);
-    static std::once_flag init;
-    static bool fc_ok = false;
-    std::call_once(init, [] { fc_ok = FcInit() == FcTrue; });
-    if (!fc_ok) throw FontError("fontconfig could not start, so no font can be found");
+    if (!fontconfig_ready()) throw FontError("fontconfig could not start, so no font can be found");
     Pattern pattern(FcNameParse(reinterpret_cast<const FcChar8*>(name.c_str())), FcPatternDestroy);
     if (!pattern) throw FontError("'" + name + "' is not a font name (expected 'Family' or 'Family:style=Style')");
     FcChar8* asked = nullptr;

@@ -35,4 +35,9 @@ inline constexpr std::string_view kDefaultFont = "Liberation Sans";
 // returned and `substituted` names it.
 Font find_font(std::string_view spec, bool fallback, std::string* substituted);
 
+// `use <f.ttf>` (or .otf): the font file's families join the fonts
+// find_font knows, for the rest of the process, as OpenSCAD registers
+// them. False when fontconfig cannot read the file.
+bool register_font_file(const std::string& path);
+
 }  // namespace kerf::text

@@ -122,10 +122,13 @@ TEST_CASE("open DXF paths are closed with a warning, as OpenSCAD, bad files are 
     CHECK(r.status == 1);
     CHECK(r.err.find("j.scad:2:3: error: import(\"junk.dxf\"): not a readable DXF file") != std::string::npos);
 
-    r = run_kerf("check '" + write_file(dir / "n.scad", "import(\"missing.dxf\");\n") + "'", dir);
+    // A missing file: an error in .sdl, a warning in .scad (as OpenSCAD).
+    r = run_kerf("check '" + write_file(dir / "n.sdl", "linear_extrude(1) import(\"missing.dxf\");\n") + "'", dir);
     CHECK(r.status == 1);
-    CHECK(r.err.find("n.scad:1:1: error:") != std::string::npos);
-    CHECK(r.err.find("missing.dxf") != std::string::npos);
+    CHECK(r.err.find("n.sdl:1:19: error: cannot find 'missing.dxf'") != std::string::npos);
+    r = run_kerf("check '" + write_file(dir / "n.scad", "import(\"missing.dxf\");\n") + "'", dir);
+    CHECK(r.status == 0);
+    CHECK(r.err.find("n.scad:1:1: warning: cannot find 'missing.dxf' (nothing is made)") != std::string::npos);
 }
 
 TEST_CASE("OpenSCAD's example013: four INSERTs of two BLOCKs, measured as OpenSCAD exports it", "[dxf]") {

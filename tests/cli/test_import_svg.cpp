@@ -285,8 +285,12 @@ TEST_CASE("bad SVG files are located errors, what kerf does not draw, a warning"
     CHECK(error(r) == "b.scad:1:1: error: import(\"big.svg\"): line 3: path data (d) of <path>: more than 100 points "
                       "once its curves are flattened");
 
-    r = run_kerf("check '" + write_file(dir / "n.scad", "import(\"missing.svg\");\n") + "'", dir);
+    // A missing file: an error in .sdl, a warning in .scad (OpenSCAD 2021
+    // prints an ERROR for a missing SVG but goes on without it).
+    r = run_kerf("check '" + write_file(dir / "n.sdl", "import(\"missing.svg\");\n") + "'", dir);
     CHECK(r.status == 1);
-    CHECK(r.err.find("n.scad:1:1: error:") != std::string::npos);
-    CHECK(r.err.find("missing.svg") != std::string::npos);
+    CHECK(r.err.find("n.sdl:1:1: error: cannot find 'missing.svg'") != std::string::npos);
+    r = run_kerf("check '" + write_file(dir / "n.scad", "import(\"missing.svg\");\n") + "'", dir);
+    CHECK(r.status == 0);
+    CHECK(r.err.find("n.scad:1:1: warning: cannot find 'missing.svg' (nothing is made)") != std::string::npos);
 }

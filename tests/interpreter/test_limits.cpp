@@ -26,6 +26,24 @@ TEST_CASE("call depth limit", "[limits]") {
     CHECK(error_of(std::string(count) + "\nx = count(20);", small) == "test.sdl:1:38: error: call depth limit 10 exceeded");
 }
 
+TEST_CASE("a function calling itself in tail position is not bound by the call depth", "[limits]") {
+    // Through ?:, let, echo and assert, as OpenSCAD 2021's evaluate_function().
+    const char* sum = "function sum(n, acc = 0) = n <= 0 ? acc : let(m = n - 1) assert(m >= 0) sum(m, acc + n);";
+    CHECK(value_of("sum(100000)", sum) == "5.00005e+9");
+    const char* down = "function down(n) = n > 0 ? down(n - 1) : n;";
+    CHECK(value_of("down(500000)", down) == "0");
+    // Not a tail call: the sum, a call of another function, a closure.
+    CHECK(error_of(std::string("function count(n) = n == 0 ? 0 : 1 + count(n - 1);\nx = count(5000);")) ==
+          "test.sdl:1:38: error: call depth limit 1000 exceeded");
+    CHECK(error_of("function f(n) = n == 0 ? 0 : g(n - 1);\nfunction g(n) = f(n);\nx = f(5000);") ==
+          "test.sdl:2:17: error: call depth limit 1000 exceeded");
+    kerf::EvalOptions small;
+    small.limits.tail_calls = 50;
+    CHECK(kerf::test::echoes(std::string(down) + "\necho(down(50));", small) == std::vector<std::string>{"ECHO: 0"});
+    CHECK(error_of(std::string(down) + "\nx = down(51);", small) ==
+          "test.sdl:1:28: error: tail call limit 50 exceeded ('down' calls itself without end?)");
+}
+
 TEST_CASE("deep recursion is bounded by the limit, not the C stack", "[limits]") {
     // 30,000 nested calls, each through several expression levels: far
     // beyond a default 8 MB stack, fine on the evaluator's own thread.

@@ -276,7 +276,9 @@ TEST_CASE("broken OFF, AMF and 3MF files: located errors in .sdl, a warning and 
     r = import_of(t, "range.3mf", "scad");
     CHECK(r.parts.empty());
     CHECK(r.warnings.size() == 1);
-    // A bound stays an error in both dialects; so does a missing file.
+    // A bound stays an error in both dialects; a missing file is one in .sdl
+    // (a .scad file warns and makes nothing, as OpenSCAD:
+    // tests/scripts/openscad/missing_files.scad).
     kerf::EvalOptions opt;
     opt.limits.list_elements = 5;
     t.write("cube.amf", cube);
@@ -284,5 +286,5 @@ TEST_CASE("broken OFF, AMF and 3MF files: located errors in .sdl, a warning and 
     for (int i = 0; i < 6; ++i) sixth = cube.find("<triangle>", sixth + 1);
     CHECK(error_in(t.write("s.scad", "import(\"cube.amf\");\n"), opt) ==
           "1:1: error: import(\"cube.amf\"): " + line_of(cube, "<triangle>", sixth) + ": more than 5 triangles (--max-list)");
-    CHECK(error_in(t.write("s.scad", "import(\"missing.off\");\n")) == "1:1: error: cannot find 'missing.off'");
+    CHECK(error_in(t.write("s.sdl", "import(\"missing.off\");\n")) == "1:1: error: cannot find 'missing.off'");
 }

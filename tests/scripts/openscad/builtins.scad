@@ -1,6 +1,6 @@
 // OpenSCAD 2021's remaining built-in functions, with its results and
-// warnings (openscad -o x.echo); rands' values differ from OpenSCAD's by
-// design (docs/openscad.md), so only their count and range are checked.
+// warnings (openscad -o x.echo); a seeded rands() gives OpenSCAD's values
+// (its seed hash, Mersenne twister and uniform distribution).
 echo(version = version(), vn = version_num(), version_num() == 20210100, version_num([2019, 5, 0]));
 echo(chr(65), chr([72, 105]), chr(65, 66), chr(0), chr(-1), chr(1114112), chr("a"), chr(undef), chr(65.7), chr([65, "x", 66]), chr(256), chr(9731), chr(55296));
 echo(ord("A"), ord("☃"), ord(""), ord(65));
@@ -14,6 +14,8 @@ echo(is_function(1), is_function(undef));
 r = rands(0, 1, 3, 42);
 echo(len(r), min(r) >= 0, max(r) < 1, r == rands(0, 1, 3, 42), rands(5, 5, 2), len(rands(1, 0, 2, 7)), len(rands(0, 1, 0)), len(rands(0, 1, 2.7)), len(rands(0, 1, -3)), rands(0, 1, "a"));
 echo(len(rands(min_value = 0, max_value = 10, value_count = 2, seed_value = 3)));
+echo(rands(0, 1, 3, 42), rands(-5, 5, 2, -3.5), rands(10, 20, 2, 1e10), rands(0, 1, 2, 1 / 0), rands(0, 1, 1));
+echo(chr([48:57]), chr([70 : 2 : 80]), chr([65, [66, [67], [[68:70]]]]));
 // ECHO: version = [2021, 1, 0], vn = 2.02101e+7, true, 2.01905e+7
 // ECHO: "A", "Hi", "AB", "", "", "", "", "", "A", "AB", "Ā", "☃", ""
 // ECHO: 65, 9731, undef, undef
@@ -26,6 +28,8 @@ echo(len(rands(min_value = 0, max_value = 10, value_count = 2, seed_value = 3)))
 // ECHO: false, false
 // ECHO: 3, true, true, true, [5, 5], 2, 0, 2, 3, undef
 // ECHO: 2
+// ECHO: [0.796543, 0.183435, 0.779691], [-4.7619, -4.2254], [14.1125, 14.5225], [0.0776717, 0.997662], [0.385839]
+// ECHO: "0123456789", "FHJLNP", "ABCDEF"
 // warning: 6:37: ord() argument 65 is not of type string
 // warning: 8:6: lookup("a", ...) first argument is not a number
 // warning: 15:170: rands() parameter could not be converted

@@ -8,3 +8,10 @@ echo(r = [0 : undef]);
 // ECHO: undef, undef, 2, undef, undef, "b", undef, undef
 // ECHO: 2, 10, undef, 3, undef
 // ECHO: r = undef
+// Any other member name is undef in OpenSCAD 2021 (silently; current
+// OpenSCAD reads .w and the rgba names as indices too), with kerf's warning.
+echo(v.w, v.xy, [10, 20, 30, 40].a, v.x);
+// ECHO: undef, undef, undef, 1
+// warning: 13:7: unknown member '.w' is undef (OpenSCAD 2021 knows .x, .y and .z)
+// warning: 13:12: unknown member '.xy' is undef (OpenSCAD 2021 knows .x, .y and .z)
+// warning: 13:33: unknown member '.a' is undef (OpenSCAD 2021 knows .x, .y and .z)
