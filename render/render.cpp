@@ -16,6 +16,7 @@
 #include "render/adaptive.hpp"
 #include "render/aov.hpp"
 #include "render/camera.hpp"
+#include "render/corner_probes.hpp"
 #include "render/ghosts.hpp"
 #include "render/integrator_path.hpp"
 #include "render/ground.hpp"
@@ -87,6 +88,7 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
     // thread-local count, reset per pixel, needs no change to the sample
     // paths below.
     static thread_local double hits = 0;
+    static thread_local double last_cover = 0;  // what the last sample added to `hits`
     auto put = [&](int x, int y, const glm::dvec3& c, int samples) {
         if (alpha) store.color_alpha(x, y, c, hits / samples, shader.miss(), options.alpha == Alpha::Premultiplied);
         else store.color(x, y, c);
@@ -119,7 +121,8 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
         if (surface) *surface = id;
         double ghost = 0;
         if (ghosts) c = ghosts->over(ray, c, ts, &ghost, surface);
-        hits += id != 0 ? 1.0 : ghost;
+        last_cover = id != 0 ? 1.0 : ghost;
+        hits += last_cover;
         return c;
     };
     // One sample through (px, py); `surface` as Shader::radiance.
@@ -204,6 +207,8 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
             hits = 0;
         });
         // Only candidates are written again; the rest keep their centre.
+        static thread_local CornerProbes probes;
+        const std::uint64_t generation = CornerProbes::next_generation();
         complete &= for_each_tile(arena, region, camera, tracer, shadow, states, part(0.25, 1), stack_need, options.cancel, [&](int x, int y, ThreadState& ts, bool traced) {
             hits = 0;
             if (!centres.needs_more(x, y, threshold)) return;
@@ -213,12 +218,23 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
             // on one side, about half of them) stops there with their mean.
             glm::dvec3 sum = sample(x + 0.5, y + 0.5, ts, traced, nullptr);
             bool same = true;
+            // A corner is shared by up to 4 candidates: traced once per tile
+            // (corner_probes.hpp), the same value whichever pixel asks.
+            probes.enter(region[0] + (x - region[0]) / kTile * kTile, region[1] + (y - region[1]) / kTile * kTile, generation);
             for (int i = 0; i < 4; ++i) {
-                std::uint32_t surface;
-                ts.on_ground = false;
-                const glm::dvec3 c = sample(x + (i & 1), y + (i >> 1), ts, traced, &surface);
-                same = same && centres.looks_alike(x, y, ts.on_ground ? shader.miss() : c, surface, threshold);
-                sum += c;
+                CornerProbe& p = probes.at(x + (i & 1), y + (i >> 1));
+                if (!p.traced) {
+                    ts.on_ground = false;
+                    last_cover = 0;  // a culled sample traces nothing and covers nothing
+                    p.color = sample(x + (i & 1), y + (i >> 1), ts, traced, &p.surface);
+                    p.on_ground = ts.on_ground;
+                    p.cover = last_cover;
+                    p.traced = true;
+                } else {
+                    hits += alpha ? p.cover : 0.0;
+                }
+                same = same && centres.looks_alike(x, y, p.on_ground ? shader.miss() : p.color, p.surface, threshold);
+                sum += p.color;
             }
             if (same) {
                 put(x, y, sum / 5.0, 5);
