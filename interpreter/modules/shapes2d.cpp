@@ -214,6 +214,8 @@ void linear_extrude(ModuleCall& c) {
         c.warn("a twisted or unevenly scaled extrusion is swept exactly, not in OpenSCAD's slices");
     else if (sweep && slices > 0)
         c.warn("slices = " + format_number(slices) + " is ignored: kerf sweeps the twisted or unevenly scaled sides exactly");
+    else if (sweep)
+        c.exact_curve();  // OpenSCAD takes its slices from $fn, $fa and $fs here
     for (std::size_t i = mark; i < g.pending.size() && top.x != 1; ++i)
         sweep = sweep || has_sum_or_resize(g.graph, g.pending[i]);
     if (sweep) {
