@@ -96,7 +96,7 @@ graph::SceneGraph Evaluator::run(ast::Program program) {
                                      (exact_curves_ == 1 ? " curved shape" : " curved shapes") +
                                      " (the first here): kerf renders curves exact" +
                                      (opt_.facets == FacetMode::Exact      ? " (--facets exact)"
-                                      : opt_.facets == FacetMode::OpenScad ? " (--facets openscad cuts only OpenSCAD's curves)"
+                                      : opt_.facets == FacetMode::OpenScad ? " (--facets openscad does not cut these)"
                                                                            : ""));
     if (!errors_.empty() || (opt_.werror && !warnings_.empty())) throw_errors();
     if (root_override_ >= 0) {

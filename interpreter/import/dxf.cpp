@@ -73,6 +73,7 @@ public:
     std::vector<Chain> loops;   // closed polylines, and circles the insert map does not keep round
     std::vector<DxfCircle> circles;
     std::string bad;            // the first problem seen
+    std::size_t curves = 0;     // arcs and circles drawn
 
     void addBlock(const DL_BlockData& d) override {
         finish();
@@ -88,12 +89,14 @@ public:
             if (!radius_ok(d.radius) || !std::isfinite(d.angle1) || !std::isfinite(d.angle2)) return;
             double a1 = d.angle1, a2 = d.angle2;
             while (a2 < a1) a2 += 360;  // counter-clockwise from angle1 to angle2, OpenSCAD's reading
+            ++curves;
             chains.push_back(arc_points(d.cx, d.cy, d.radius, a1, a2, false));
         });
     }
     void addCircle(const DL_CircleData& d) override {
         draw([this, d] {
             if (!radius_ok(d.radius)) return;
+            ++curves;
             const glm::dvec2 c = map(d.cx, d.cy);
             const glm::dvec2 u = map(d.cx + d.radius, d.cy) - c, v = map(d.cx, d.cy + d.radius) - c;
             const double r = glm::length(u);
@@ -427,6 +430,7 @@ DxfShape import_dxf(const std::string& path, const DxfOptions& options) {
     if (!ok) throw MeshFormatError("not a readable DXF file");
     if (!got.bad.empty()) throw MeshFormatError("not a readable DXF file: " + got.bad);
     DxfShape out;
+    out.curves = got.curves;
     out.loops = join_chains(std::move(got.chains), out.open_paths, out.lone_lines);
     const std::size_t base = out.loops.size();
     for (Chain& l : got.loops) out.loops.push_back(std::move(l));

@@ -41,6 +41,7 @@ struct DxfShape {
     std::vector<int> circle_depth;
     std::vector<DxfSegment> segments;  // exact bulges (the rest flattened into loops)
     std::size_t open_paths = 0;
+    std::size_t curves = 0;  // ARCs and CIRCLEs read: OpenSCAD cuts them by $fn, $fa and $fs
     std::vector<std::vector<glm::dvec2>> lone_lines;  // open chains of one segment, in file order (dxf_cross)  // chains that do not close: closed by a straight edge, as OpenSCAD does
 };
 

@@ -118,6 +118,7 @@ void import_drawing(ModuleCall& c, const std::string& path) {
     o.tolerance = c.curve_tolerance();
     o.max_entities = c.limits().list_elements;
     const DxfShape shape = read_drawing(c, [&] { return import_dxf(path, o); });
+    if (shape.curves) c.exact_curve();  // kept exact or flattened to the tolerance, not in $fn steps
     const std::string name = "\"" + a[File].as_string() + "\"";
     if (shape.open_paths)
         c.warn(std::to_string(shape.open_paths) + " open path(s) in " + name +

@@ -152,6 +152,7 @@ void offset(ModuleCall& c) {
     // --facets openscad: OpenSCAD's own round join, Clipper's arcs of
     // get_fragments_from_r(|r|) steps per turn (its arc tolerance).
     const bool openscad_arcs = round && c.facet_mode() == FacetMode::OpenScad;
+    if (round && !openscad_arcs) c.exact_curve();  // the round joins are exact arcs, not $fn steps
     Map2 m(1.0);
     if (shapes.size() == 1 && !openscad_arcs) {
         if (graph::Node* circle = lone_circle(g.graph, shapes[0], m); circle) {

@@ -189,7 +189,9 @@ void linear_extrude(ModuleCall& c) {
     const double h = a.has(0) || !a.has(6) ? arg_positive(a, 0, "height", 100) : vlen;
     const bool center = arg_bool(a, 1, "center", false);
     const double twist = arg_number(a, 3, "twist", 0);
-    if (a.has(4)) arg_positive(a, 4, "slices", 1);  // accepted: kerf extrudes exactly, not in slices
+    // slices only cut a twisted or unevenly scaled side (straight sides are
+    // flat however many slices OpenSCAD makes), and kerf sweeps those exactly.
+    const double slices = a.has(4) ? arg_positive(a, 4, "slices", 1) : 0;
     const glm::dvec2 top = scale_arg(a, 5);  // the top section's scales
     GraphBuilder& g = c.graph();
     const std::size_t mark = g.mark();
@@ -210,6 +212,10 @@ void linear_extrude(ModuleCall& c) {
     // OpenSCAD cuts these sides into slices of flat triangles; kerf sweeps them exactly in every mode.
     if (sweep && c.facet_mode() == FacetMode::OpenScad)
         c.warn("a twisted or unevenly scaled extrusion is swept exactly, not in OpenSCAD's slices");
+    else if (sweep && slices > 0)
+        c.warn("slices = " + format_number(slices) + " is ignored: kerf sweeps the twisted or unevenly scaled sides exactly");
+    else if (sweep)
+        c.exact_curve();  // OpenSCAD takes its slices from $fn, $fa and $fs here
     for (std::size_t i = mark; i < g.pending.size() && top.x != 1; ++i)
         sweep = sweep || has_sum_or_resize(g.graph, g.pending[i]);
     if (sweep) {

@@ -1,6 +1,7 @@
 // Primitive solids (docs/spec.md §4), validated and canonicalised as the
 // csg::PrimKind comments in csg/scene.hpp say.
 #include <cmath>
+#include <initializer_list>
 #include <strings.h>
 
 #include "interpreter/import/mesh_import.hpp"
@@ -239,14 +240,34 @@ std::vector<std::uint32_t> read_mesh_file(ModuleCall& c, const std::string& path
     return meshes;
 }
 
+// import()'s arguments a format does not read (neither does OpenSCAD
+// 2021.01, silently): each one given warns. Indices into import()'s list.
+void warn_unread(ModuleCall& c, std::initializer_list<std::size_t> unread, const char* readers) {
+    static constexpr const char* kNames[] = {"file", "solid", "convexity", "layer", "origin", "scale", "center", "dpi"};
+    const Args& a = c.args;
+    for (std::size_t i : unread)
+        if (a.has(i) && !a[i].is_undef())
+            c.warn(std::string(kNames[i]) + " is ignored: it applies to " + readers + ", not to \"" + a[0].as_string() +
+                   "\"");
+}
+
 void import_file(ModuleCall& c) {
     const Args& a = c.args;
     if (!a.has(0) || !a[0].is_string())
         arg_error(a, "file must be a string naming an .stl, .obj, .ply, .off, .amf, .3mf, .dxf or .svg file");
     const bool solid = arg_bool(a, 1, "solid", true);
     const std::string path = c.files().resolve_data(a[0].as_string(), c.st.loc);
-    if (path.size() >= 4 && strcasecmp(path.c_str() + path.size() - 4, ".dxf") == 0) return import_drawing(c, path);
-    if (path.size() >= 4 && strcasecmp(path.c_str() + path.size() - 4, ".svg") == 0) return import_svg_drawing(c, path);
+    enum { Layer = 3, Origin, Scale, Center, Dpi };
+    if (path.size() >= 4 && strcasecmp(path.c_str() + path.size() - 4, ".dxf") == 0) {
+        warn_unread(c, {Center, Dpi}, "SVG files");
+        return import_drawing(c, path);
+    }
+    if (path.size() >= 4 && strcasecmp(path.c_str() + path.size() - 4, ".svg") == 0) {
+        warn_unread(c, {Layer, Origin, Scale}, "DXF files");
+        return import_svg_drawing(c, path);
+    }
+    warn_unread(c, {Layer, Origin, Scale}, "DXF files");
+    warn_unread(c, {Center, Dpi}, "SVG files");
     const std::string key = (solid ? "1|" : "0|") + path;
     auto it = c.state().imported_parts.find(key);
     if (it == c.state().imported_parts.end()) it = c.state().imported_parts.emplace(key, read_mesh_file(c, path, solid)).first;

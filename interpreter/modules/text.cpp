@@ -52,6 +52,7 @@ void text(ModuleCall& c) {
     p.language = arg_string(a, Language, "language", "en");
     p.script = arg_string(a, Script, "script", "");
     p.tolerance = c.curve_tolerance();
+    c.exact_curve();  // the outlines are flattened to the tolerance, not in OpenSCAD's $fn steps
     p.fallback_font = c.lenient();
     text::TextShape shape;
     try {

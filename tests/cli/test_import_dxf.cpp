@@ -191,3 +191,25 @@ TEST_CASE("bulges that meet other outlines are flattened within the curve tolera
     const double want = half - in + (4 - in);
     check_volume(measure(dir, "linear_extrude(height = 1) import(\"x.dxf\");"), want, 2e-3);
 }
+
+TEST_CASE("a DXF's arcs and circles count in the ignored-facets warning, its lines do not", "[dxf]") {
+    auto dir = test_dir("dxf_facets");
+    // OpenSCAD cuts a DXF's ARCs and CIRCLEs by $fn, $fa and $fs; kerf keeps
+    // them exact (or within the curve tolerance).
+    write_file(dir / "c.dxf", dxf(circle({0, 0}, 2)));
+    write_file(dir / "a.dxf", dxf(line({0, -2}, {8, -2}) + arc({8, 0}, 2, 270, 90) + line({8, 2}, {0, 2}) +
+                                  arc({0, 0}, 2, 90, 270)));
+    write_file(dir / "r.dxf", dxf(lwpolyline({{0, 0}, {2, 0}, {2, 1}, {0, 1}})));
+    const std::string scene = write_file(dir / "s.scad",
+                                         "linear_extrude(1) import(\"r.dxf\", $fn = 8);\n"
+                                         "linear_extrude(1) import(\"c.dxf\", $fn = 8);\n"
+                                         "linear_extrude(1) import(\"a.dxf\", $fn = 8);\n");
+    auto r = run_kerf("check '" + scene + "'", dir);
+    CHECK(r.status == 0);
+    CHECK(r.err.find("s.scad:2:19: warning: $fn, $fa and $fs are ignored on 2 curved shapes (the first here)") !=
+          std::string::npos);
+    // Without curves nothing is counted.
+    const std::string lines = write_file(dir / "l.scad", "linear_extrude(1) import(\"r.dxf\", $fn = 8);\n");
+    r = run_kerf("check '" + lines + "'", dir);
+    CHECK(r.err.find("ignored on") == std::string::npos);
+}
