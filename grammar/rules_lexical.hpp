@@ -107,8 +107,6 @@ struct string_lit {
 };
 
 struct line_comment : pg::seq<pg::two<'/'>, pg::until<pg::eolf>> {};
-struct blank : pg::plus<pg::one<' ', '\t', '\r', '\n'>> {};
-struct ws : pg::star<pg::sor<blank, line_comment, block_comment>> {};
 
 // ---- names and keywords -------------------------------------------------
 // True for module function if else for let include use true false undef.
@@ -127,6 +125,13 @@ struct openscad_on {
         return openscad_mode(st...);
     }
 };
+
+// Blank space: in OpenSCAD's dialect also U+00A0, the no-break space, as
+// OpenSCAD 2021.01's lexer reads it (`echo\u00A0("B");`, its test data
+// misc/no-break-space-test.scad); kerf's own dialect refuses it.
+struct nbsp : pg::seq<openscad_on, pg::string<'\xC2', '\xA0'>> {};
+struct blank : pg::plus<pg::sor<pg::one<' ', '\t', '\r', '\n'>, nbsp>> {};
+struct ws : pg::star<pg::sor<blank, line_comment, block_comment>> {};
 
 struct name {
     using rule_t = name;
