@@ -99,21 +99,28 @@ csg::Light light_at(glm::dvec3 position, double radius) {
     return l;
 }
 
-}  // namespace
-
-TEST_CASE("path tracer: the white furnace converges to E (1 - rho^(D+1)) / (1 - rho)", "[render][path]") {
-    // A shell between radii 1 and 2; the camera at the centre sees only its
-    // inner face (a cut face: the minuend's interior colour).
-    const glm::dvec3 rho{0.5, 0.65, 0.8}, emission{0.3, 0.2, 0.1};
+// The white furnace: a shell between radii 1 and 2 of reflectance
+// kFurnaceRho glowing with kFurnaceEmission; the camera at the centre sees
+// only its inner face (a cut face: the minuend's interior colour).
+const glm::dvec3 kFurnaceRho{0.5, 0.65, 0.8}, kFurnaceEmission{0.3, 0.2, 0.1};
+csg::Scene furnace() {
     csg::Material m;
-    m.color = m.interior = rho;
+    m.color = m.interior = kFurnaceRho;
     m.diffuse = 1;
-    m.emission = emission;
+    m.emission = kFurnaceEmission;
     csg::Scene s = make_scene(op(csg::Op::Difference, {leaf(sphere(2)), leaf(sphere(1))}), {m});
     s.lights.clear();
     s.camera.position = {0, 0, 0};
     s.camera.look_at = {1, 0.2, 0.1};
     s.camera.fov = 90;
+    return s;
+}
+
+}  // namespace
+
+TEST_CASE("path tracer: the white furnace converges to E (1 - rho^(D+1)) / (1 - rho)", "[render][path]") {
+    const glm::dvec3 rho = kFurnaceRho, emission = kFurnaceEmission;
+    const csg::Scene s = furnace();
     for (int depth : {16, 3}) {
         render::RenderOptions o = path_options(24, 24, 16);
         o.max_path_depth = depth;
@@ -179,16 +186,8 @@ TEST_CASE("path tracer: same bytes on 1 and 2 threads, fixed by the seed", "[ren
 
 TEST_CASE("path tracer: passes of 1, 2, 4 ... paths end in the bytes of one pass, and converge", "[render][path]") {
     // The furnace again (depth 16): its exact answer measures each pass.
-    const glm::dvec3 rho{0.5, 0.65, 0.8}, emission{0.3, 0.2, 0.1};
-    csg::Material m;
-    m.color = m.interior = rho;
-    m.diffuse = 1;
-    m.emission = emission;
-    csg::Scene s = make_scene(op(csg::Op::Difference, {leaf(sphere(2)), leaf(sphere(1))}), {m});
-    s.lights.clear();
-    s.camera.position = {0, 0, 0};
-    s.camera.look_at = {1, 0.2, 0.1};
-    s.camera.fov = 90;
+    const glm::dvec3 rho = kFurnaceRho, emission = kFurnaceEmission;
+    const csg::Scene s = furnace();
     const double expected = emission.y * (1 - std::pow(rho.y, 17)) / (1 - rho.y);
     // The root-mean-square error of channel 1 over the pixels.
     auto rmse = [&](const render::Image& im) {
