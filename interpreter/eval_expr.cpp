@@ -15,8 +15,8 @@ namespace kerf::eval {
 struct Evaluator::DepthGuard {
     Evaluator& ev;
     DepthGuard(Evaluator& e, const SourceLoc& loc) : ev(e) {
-        if (ev.depth_ + 1 > ev.call_depth_)
-            throw SourceError(loc, "call depth limit " + std::to_string(ev.call_depth_) + " exceeded");
+        if (ev.depth_ + 1 > ev.opt_.limits.call_depth)
+            throw SourceError(loc, "call depth limit " + std::to_string(ev.opt_.limits.call_depth) + " exceeded");
         ++ev.depth_;
         ev.count_step(loc);
     }

@@ -347,8 +347,8 @@ void Evaluator::bind_params(const std::vector<ast::Binding>& params, const std::
 }
 
 void Evaluator::call_module(const ast::Stmt& def, Scope& def_scope, const ast::Stmt& call, Scope& s) {
-    if (depth_ + 1 > call_depth_)
-        throw SourceError(call.loc, "call depth limit " + std::to_string(call_depth_) + " exceeded");
+    if (depth_ + 1 > opt_.limits.call_depth)
+        throw SourceError(call.loc, "call depth limit " + std::to_string(opt_.limits.call_depth) + " exceeded");
     ++depth_;
     struct Dec {
         std::uint64_t& d;

@@ -218,7 +218,6 @@ private:
 
     const EvalOptions& opt_;
     const bool lenient_;     // the OpenSCAD dialect
-    const std::uint64_t call_depth_;  // call_depth_limit(): the deepest call nesting allowed
     std::string main_path_;  // the main file (OpenSCAD's overwrite warnings name others)
     GraphBuilder out_;
     Scope root_;  // PI and other constants; parent of every file's scope
