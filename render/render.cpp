@@ -98,6 +98,7 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
 
     // The colour seen along (o, d); `surface` as Shader::radiance.
     auto trace = [&](const glm::dvec3& o, const glm::dvec3& d, ThreadState& ts, std::uint32_t* surface) {
+        const TraceRay ray{o, d, 0, std::numeric_limits<double>::infinity()};
         auto one = [&](std::uint32_t* id) {
             if (path) {
                 std::uint32_t seen = 0;
@@ -106,12 +107,11 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
                 // The studio ground is a shadow catcher, not a surface that
                 // scatters: where a camera ray misses the solid, the shader
                 // draws it (elsewhere the same miss colour as the path's).
-                if (seen == 0) return shader.missed(TraceRay{o, d, 0, std::numeric_limits<double>::infinity()}, ts);
+                if (seen == 0) return shader.missed(ray, ts);
                 return c;
             }
-            return shader.radiance(TraceRay{o, d, 0, std::numeric_limits<double>::infinity()}, 0, ts, id);
+            return shader.radiance(ray, 0, ts, id);
         };
-        const TraceRay ray{o, d, 0, std::numeric_limits<double>::infinity()};
         if (!alpha) {
             const glm::dvec3 c = one(surface);
             return ghosts ? ghosts->over(ray, c, ts, nullptr, surface) : c;
@@ -156,6 +156,11 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
         return sum / double(n);
     };
 
+    // `progress` for a pass that covers the fractions from..to of the render.
+    auto part = [&](double from, double to) -> std::function<void(double)> {
+        if (!progress) return {};
+        return [&progress, from, to](double f) { progress(from + (to - from) * f); };
+    };
     bool complete = true;
     int paths_done = 0;  // the path integrator: paths per pixel in the image
     if (aov != Aov::None) {
@@ -193,10 +198,6 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
         CentreSamples centres(region, options.width, options.height);
         const SamplePattern refine(options.aa_samples);
         const int threshold = int(std::lround(options.aa_threshold * 255));
-        auto part = [&](double from, double to) -> std::function<void(double)> {
-            if (!progress) return {};
-            return [&progress, from, to](double f) { progress(from + (to - from) * f); };
-        };
         const std::array<int, 4> area = centres.area();
         complete &= for_each_tile(arena, area, camera, tracer, shadow, states, part(0, 0.25), stack_need, options.cancel, [&](int x, int y, ThreadState& ts, bool traced) {
             std::uint32_t surface;
@@ -259,11 +260,7 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
         int done = 0;
         while (done < n && complete) {
             const int to = passes ? std::min(n, std::max(1, 2 * done)) : n;
-            auto part = [&]() -> std::function<void(double)> {
-                if (!progress) return {};
-                return [&progress, done, to, n](double f) { progress((done + (to - done) * f) / n); };
-            };
-            complete &= for_each_tile(arena, region, camera, tracer, shadow, states, part(), stack_need, options.cancel, [&](int x, int y, ThreadState& ts, bool traced) {
+            complete &= for_each_tile(arena, region, camera, tracer, shadow, states, part(double(done) / n, double(to) / n), stack_need, options.cancel, [&](int x, int y, ThreadState& ts, bool traced) {
                 const std::size_t at = passes ? std::size_t(y - region[1]) * w + (x - region[0]) : 0;
                 hits = hit_counts.empty() ? 0 : hit_counts[at];
                 if (n == 1) {

@@ -1,13 +1,12 @@
 #include "render/image/png_join.hpp"
 
 #include <algorithm>
-#include <fstream>
-#include <iterator>
 
 #include <tbb/parallel_for.h>
 #include <zlib.h>
 
 #include "render/image/png_file.hpp"
+#include "render/image/png_read.hpp"
 
 namespace kerf::render {
 
@@ -87,10 +86,8 @@ std::string check_pieces(PngBand& band) {
 }  // namespace
 
 std::string read_png_band(const std::string& path, PngBand& band) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return "cannot open it";
-    const std::vector<unsigned char> file((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (in.bad()) return "cannot read it";
+    std::vector<unsigned char> file;
+    if (std::string why = read_file_bytes(path, file); !why.empty()) return why;
     band = PngBand{};
     if (std::string why = read_chunks(file, band); !why.empty()) return why;
     return check_pieces(band);

@@ -62,11 +62,17 @@ bool decode(png_structp png, png_infop info, ReadState& s) {
 
 }  // namespace
 
-std::string read_png(const std::string& path, PngPicture& picture) {
+std::string read_file_bytes(const std::string& path, std::vector<unsigned char>& bytes) {
     std::ifstream in(path, std::ios::binary);
     if (!in) return "cannot open it";
-    const std::vector<unsigned char> file((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
     if (in.bad()) return "cannot read it";
+    return {};
+}
+
+std::string read_png(const std::string& path, PngPicture& picture) {
+    std::vector<unsigned char> file;
+    if (std::string why = read_file_bytes(path, file); !why.empty()) return why;
     if (file.size() < 8 || png_sig_cmp(file.data(), 0, 8) != 0) return "not a PNG file";
     picture = PngPicture{};
     ReadState state;

@@ -22,4 +22,8 @@ struct PngPicture {
 // write_image() produces).
 std::string read_png(const std::string& path, PngPicture& picture);
 
+// The whole of file `path` into `bytes`: an empty string, or "cannot open
+// it" / "cannot read it" (read_png's and read_png_band's first checks).
+std::string read_file_bytes(const std::string& path, std::vector<unsigned char>& bytes);
+
 }  // namespace kerf::render
