@@ -70,7 +70,7 @@ ast::Program parse_program(std::shared_ptr<const SourceFile> file, const ParseOp
     std::string_view text = file->text;
     // A UTF-8 byte order mark is not part of the script (columns start after it).
     if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
-    if (const auto bad = grammar::find_invalid_byte(text); bad != std::string_view::npos)
+    if (const auto bad = grammar::find_invalid_byte(text, limits.openscad); bad != std::string_view::npos)
         throw SourceError(locate(file, text, bad), "invalid character");
 
     grammar::Builder builder(file, limits.max_nesting);

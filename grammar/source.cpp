@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "grammar/text_check.hpp"
+
 namespace kerf {
 
 namespace {
@@ -33,29 +35,13 @@ std::string_view line_of(const std::string& text, std::uint32_t line) {
 
 bool is_continuation(unsigned char c) { return (c & 0xC0) == 0x80; }
 
-// Length of the well-formed UTF-8 sequence at s[i] (RFC 3629: no overlong
-// forms, no surrogates, nothing above U+10FFFF), or 0 if it is not one.
-std::size_t utf8_length(std::string_view s, std::size_t i) {
-    const auto b = [&](std::size_t k) { return static_cast<unsigned char>(s[i + k]); };
-    const unsigned char c = b(0);
-    if (c < 0x80) return 1;
-    std::size_t n = c >= 0xC2 && c <= 0xDF ? 2 : c >= 0xE0 && c <= 0xEF ? 3 : c >= 0xF0 && c <= 0xF4 ? 4 : 0;
-    if (n == 0 || i + n > s.size()) return 0;
-    for (std::size_t k = 1; k < n; ++k)
-        if (!is_continuation(b(k))) return 0;
-    if ((c == 0xE0 && b(1) < 0xA0) || (c == 0xED && b(1) > 0x9F) || (c == 0xF0 && b(1) < 0x90) ||
-        (c == 0xF4 && b(1) > 0x8F))
-        return 0;
-    return n;
-}
-
 // Calls emit(unit_text) for each display unit of s: a valid UTF-8 character,
 // or "?" for an invalid byte or a control character (tabs kept when asked,
 // so a caret can be aligned under them).
 template <class Emit>
 void for_each_unit(std::string_view s, bool keep_tabs, Emit emit) {
     for (std::size_t i = 0; i < s.size();) {
-        const std::size_t n = utf8_length(s, i);
+        const std::size_t n = grammar::utf8_sequence_length(s, i);
         const unsigned char c = static_cast<unsigned char>(s[i]);
         if (n == 0 || ((c < 0x20 || c == 0x7F) && !(keep_tabs && c == '\t'))) {
             emit(std::string_view(c == '\n' ? "\\n" : "?"));

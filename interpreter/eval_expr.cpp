@@ -53,18 +53,11 @@ std::uint64_t Evaluator::iteration_count(Value& v, const SourceLoc& loc) {
     } else throw SourceError(loc, std::string("for: expected a range, a list or a string, got ") + v.type_name());
     count_iterations(n, loc);  // before building a list of characters
     if (v.is_string()) {
-        // One string per character (UTF-8 code point), as OpenSCAD iterates:
-        // the same characters as len() counts and s[i] indexes.
-        const std::string& text = v.as_string();
-        auto continues = [&](std::size_t i) { return (static_cast<unsigned char>(text[i]) & 0xC0) == 0x80; };
+        // One string per character, as OpenSCAD iterates: the same
+        // characters as len() counts and s[i] indexes (operators.hpp).
         ValueList chars;
         chars.reserve(n);
-        for (std::size_t i = 0; i < text.size(); ++i) {
-            if (continues(i)) continue;
-            std::size_t j = i + 1;
-            while (j < text.size() && continues(j)) ++j;
-            chars.push_back(Value::string(text.substr(i, j - i)));
-        }
+        for (std::string_view c : characters(v.as_string())) chars.push_back(Value::string(std::string(c)));
         v = Value::list(std::move(chars));
     }
     return n;

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <string>
 
+#include "grammar/text_check.hpp"
+
 namespace kerf {
 
 namespace {
@@ -205,11 +207,41 @@ Value binary_op(std::string_view op, const Value& a, const Value& b, const Sourc
     type_error(op, a, b, loc);
 }
 
+namespace {
+std::size_t char_bytes(unsigned char lead) {
+    return lead < 0xC0 ? 1 : lead < 0xE0 ? 2 : lead < 0xF0 ? 3 : lead < 0xF8 ? 4 : lead < 0xFC ? 5 : lead < 0xFE ? 6 : 1;
+}
+
+// Calls f(i, n) for each character at s[i, i + n); stops when f is false.
+template <class F>
+void walk_characters(std::string_view s, F f) {
+    for (std::size_t i = 0; i < s.size();) {
+        const std::size_t n = char_bytes(static_cast<unsigned char>(s[i]));
+        if (n > s.size() - i || !f(i, n)) return;
+        i += n;
+    }
+}
+}  // namespace
+
+std::vector<std::string_view> characters(std::string_view s) {
+    std::vector<std::string_view> out;
+    walk_characters(s, [&](std::size_t i, std::size_t n) {
+        out.push_back(s.substr(i, n));
+        return true;
+    });
+    return out;
+}
+
 std::size_t utf8_length(std::string_view s) {
-    std::size_t n = 0;
-    for (unsigned char c : s)
-        if ((c & 0xC0) != 0x80) ++n;
-    return n;
+    std::size_t count = 0;
+    walk_characters(s, [&](std::size_t, std::size_t) { return ++count; });
+    return count;
+}
+
+bool valid_utf8(std::string_view s) {
+    for (std::size_t i = 0, n = 0; i < s.size(); i += n)
+        if ((n = grammar::utf8_sequence_length(s, i)) == 0) return false;
+    return true;
 }
 
 Value index_value(const Value& object, const Value& index, const SourceLoc& loc) {
@@ -234,16 +266,14 @@ Value index_value(const Value& object, const Value& index, const SourceLoc& loc)
         const std::string& s = object.as_string();
         std::size_t n = utf8_length(s);
         if (d < 0 || d >= static_cast<double>(n)) throw out_of_range(n);
-        std::size_t want = static_cast<std::size_t>(d), count = 0, i = 0;
-        for (; i < s.size(); ++i) {
-            if ((static_cast<unsigned char>(s[i]) & 0xC0) != 0x80) {
-                if (count == want) break;
-                ++count;
-            }
-        }
-        std::size_t j = i + 1;
-        while (j < s.size() && (static_cast<unsigned char>(s[j]) & 0xC0) == 0x80) ++j;
-        return Value::string(s.substr(i, j - i));
+        std::size_t want = static_cast<std::size_t>(d), count = 0;
+        std::string_view piece;
+        walk_characters(s, [&](std::size_t i, std::size_t m) {
+            if (count++ < want) return true;
+            piece = std::string_view(s).substr(i, m);
+            return false;
+        });
+        return Value::string(std::string(piece));
     }
     throw SourceError(loc, std::string("cannot index a ") + object.type_name());
 }

@@ -6,6 +6,7 @@
 #pragma once
 #include <cstdint>
 #include <string_view>
+#include <vector>
 
 #include "grammar/source.hpp"
 #include "interpreter/value.hpp"
@@ -32,7 +33,20 @@ Value binary_op(std::string_view op, const Value& a, const Value& b, const Sourc
 // strict; OpenSCAD yields undef).
 Value index_value(const Value& object, const Value& index, const SourceLoc& loc);
 
-// Number of UTF-8 characters (code points) in s, as OpenSCAD's len().
+// A string's characters as OpenSCAD 2021 walks them (glib's
+// g_utf8_next_char and g_utf8_strlen): the lead byte alone gives the
+// length (0xC0-0xDF two bytes, 0xE0-0xEF three, 0xF0-0xF7 four, 0xF8-0xFB
+// five, 0xFC-0xFD six, any other one), and a last character the end cuts
+// short is none. On UTF-8 these are the code points; on the Latin-1 bytes
+// a .scad file may hold they are OpenSCAD's pieces (measured: "\xA4\xC4\xD6"
+// is "\xA4" and "\xC4\xD6", len("\xA4\xC4") is 1). len(), for, s[i] and
+// search() all see these same characters.
+std::vector<std::string_view> characters(std::string_view s);
+
+// Their number, as OpenSCAD's len().
 std::size_t utf8_length(std::string_view s);
+
+// True when s is well-formed UTF-8 (what OpenSCAD's ord() asks).
+bool valid_utf8(std::string_view s);
 
 }  // namespace kerf

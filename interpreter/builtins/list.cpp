@@ -2,20 +2,12 @@
 // bounded by the list-size limit so `concat` doubling in a recursion ends in
 // a located error instead of exhausting memory.
 #include "interpreter/builtins/support.hpp"
+#include "interpreter/operators.hpp"
 
 namespace kerf::builtin {
 namespace {
 
-// Number of Unicode code points (OpenSCAD counts characters, not bytes):
-// every byte that is not a UTF-8 continuation byte starts one.
-std::size_t utf8_length(const std::string& s) {
-    std::size_t n = 0;
-    for (unsigned char c : s)
-        if ((c & 0xC0) != 0x80) ++n;
-    return n;
-}
-
-// len of a list, a string (characters) or a range (its element count; in
+// len of a list, a string (characters, operators.hpp) or a range (its element count; in
 // OpenSCAD 2021 a range's len is undef with its warning).
 Value len_fn(std::span<const Value> args, const BuiltinContext& ctx) {
     expect_count(args, ctx, "len", 1);

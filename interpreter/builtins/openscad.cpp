@@ -15,6 +15,7 @@
 #include "grammar/literals.hpp"
 #include "interpreter/builtins/support.hpp"
 #include "interpreter/openscad_ops.hpp"
+#include "interpreter/operators.hpp"
 
 namespace kerf::builtin {
 namespace {
@@ -134,18 +135,6 @@ Value lookup_fn(std::span<const Value> args, const BuiltinContext& ctx) {
     return Value(high_v * f + low_v * (1 - f));
 }
 
-// The code points of a UTF-8 string, one string each.
-std::vector<std::string> characters(const std::string& s) {
-    std::vector<std::string> out;
-    for (std::size_t i = 0; i < s.size();) {
-        std::size_t j = i + 1;
-        while (j < s.size() && (static_cast<unsigned char>(s[j]) & 0xC0) == 0x80) ++j;
-        out.push_back(s.substr(i, j - i));
-        i = j;
-    }
-    return out;
-}
-
 // Adds the index j to a search result: `one` (the default of one match per
 // term) collects indices flat, otherwise each term gets its own list.
 struct Matches {
@@ -213,8 +202,8 @@ Value search_fn(std::span<const Value> args, const BuiltinContext& ctx) {
     }
     if (!what.is_string()) return Value();
     if (table.is_string()) {
-        const std::vector<std::string> hay = characters(table.as_string());
-        for (const std::string& c : characters(what.as_string()))
+        const std::vector<std::string_view> hay = characters(table.as_string());
+        for (std::string_view c : characters(what.as_string()))
             m.term([&](std::size_t j) { return hay[j] == c; }, hay.size(), false);
         return Value::list(std::move(m.flat));
     }
@@ -223,11 +212,12 @@ Value search_fn(std::span<const Value> args, const BuiltinContext& ctx) {
         column(entries[j], col, ok);
         if (!ok) return Value::list({});  // OpenSCAD: "Invalid entry in search vector"
     }
-    for (const std::string& c : characters(what.as_string()))
+    for (std::string_view c : characters(what.as_string()))
         m.term(
             [&](std::size_t j) {
                 bool ok;
-                const std::vector<std::string> first = characters(to_str(column(entries[j], col, ok)));
+                const std::string entry = to_str(column(entries[j], col, ok));
+                const std::vector<std::string_view> first = characters(entry);
                 return !first.empty() && first[0] == c;
             },
             entries.size(), false);
@@ -266,7 +256,9 @@ Value chr_fn(std::span<const Value> args, const BuiltinContext& ctx) {
     return Value::string(std::move(out));
 }
 
-// ord("A") is 65: the first code point; "" is undef.
+// ord("A") is 65: the first code point; "" is undef, and so is a string
+// that is not UTF-8 (a Latin-1 byte of a .scad file), with OpenSCAD's
+// warning.
 Value ord_fn(std::span<const Value> args, const BuiltinContext& ctx) {
     if (args.empty()) return Value();
     if (args.size() > 1)
@@ -274,6 +266,7 @@ Value ord_fn(std::span<const Value> args, const BuiltinContext& ctx) {
     if (!args[0].is_string()) fail(ctx, "ord() argument " + to_repr(args[0]) + " is not of type string");
     const std::string& s = args[0].as_string();
     if (s.empty()) return Value();
+    if (!valid_utf8(s)) fail(ctx, "ord() argument '" + s + "' is not a valid utf8 string");
     const auto b = [&](std::size_t i) { return static_cast<unsigned char>(s[i]); };
     std::uint32_t c = b(0);
     std::size_t extra = c >= 0xF0 ? 3 : c >= 0xE0 ? 2 : c >= 0xC0 ? 1 : 0;
