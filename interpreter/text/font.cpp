@@ -69,12 +69,19 @@ Font find_font(std::string_view spec, bool fallback, std::string* substituted) {
     const std::string name(spec.empty() ? kDefaultFont : spec);
     if (!fontconfig_ready()) throw FontError("fontconfig could not start, so no font can be found");
     Pattern pattern(FcNameParse(reinterpret_cast<const FcChar8*>(name.c_str())), FcPatternDestroy);
-    if (!pattern) throw FontError("'" + name + "' is not a font name (expected 'Family' or 'Family:style=Style')");
+    if (!pattern)
+        throw FontNameError("'" + name + "' is not a font name (expected 'Family' or 'Family:style=Style')");
     FcChar8* asked = nullptr;
     std::string family = FcPatternGetString(pattern.get(), FC_FAMILY, 0, &asked) == FcResultMatch
                              ? reinterpret_cast<const char*>(asked)
                              : std::string(kDefaultFont);
-    if (!asked) FcPatternAddString(pattern.get(), FC_FAMILY, reinterpret_cast<const FcChar8*>(kDefaultFont.data()));
+    // No family: OpenSCAD leaves the choice to fontconfig (`":style=Bold"`
+    // draws DejaVu Sans Bold where that is fontconfig's sans-serif,
+    // measured); kerf's own dialect keeps its default family, the same on
+    // every machine.
+    const bool any_family = !asked && fallback;
+    if (!asked && !fallback)
+        FcPatternAddString(pattern.get(), FC_FAMILY, reinterpret_cast<const FcChar8*>(kDefaultFont.data()));
     FcConfigSubstitute(nullptr, pattern.get(), FcMatchPattern);
     FcDefaultSubstitute(pattern.get());
     FcResult result = FcResultNoMatch;
@@ -84,7 +91,7 @@ Font find_font(std::string_view spec, bool fallback, std::string* substituted) {
         throw FontError("no font found for '" + name + "' (is fontconfig configured? fc-list lists the fonts)");
     int index = 0;
     FcPatternGetInteger(match.get(), FC_INDEX, 0, &index);
-    bool same = false;
+    bool same = any_family;
     FcChar8* got = nullptr;
     for (int i = 0; FcPatternGetString(match.get(), FC_FAMILY, i, &got) == FcResultMatch; ++i)
         same = same || same_name(family, reinterpret_cast<const char*>(got));

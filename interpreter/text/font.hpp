@@ -17,6 +17,12 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// A font name fontconfig cannot parse (`":charset=xxx"`).
+class FontNameError : public FontError {
+public:
+    using FontError::FontError;
+};
+
 struct Font {
     FT_Face face = nullptr;  // owned by the font cache, valid for the process
     std::string family;      // as the font file names itself
@@ -32,7 +38,10 @@ inline constexpr std::string_view kDefaultFont = "Liberation Sans";
 // fontconfig's best match is not of the family asked for (fontconfig always
 // offers some font; a silent substitute would be a silently wrong model),
 // unless `fallback` is set (the OpenSCAD dialect): then the substitute is
-// returned and `substituted` names it.
+// returned and `substituted` names it. A pattern that names no family
+// (`":style=Bold"`) is Liberation Sans in that style, or with `fallback`
+// fontconfig's own best match, as OpenSCAD 2021.01 takes it. An
+// unparseable name throws FontNameError.
 Font find_font(std::string_view spec, bool fallback, std::string* substituted);
 
 // `use <f.ttf>` (or .otf): the font file's families join the fonts

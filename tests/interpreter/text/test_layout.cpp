@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "interpreter/interpreter.hpp"
+#include "tests/interpreter/eval_helpers.hpp"
 #include "interpreter/text/font.hpp"
 #include "interpreter/text/layout.hpp"
 
@@ -96,7 +97,7 @@ TEST_CASE("text() outlines agree with OpenSCAD's", "[text]") {
     // direction), fonts by fontconfig name, UTF-8, extreme sizes.
     const char* cases[] = {"plain",         "straight", "halign_center", "halign_right", "spacing",
                            "valign_top",    "valign_center", "valign_bottom", "ttb", "serif_bold",
-                           "utf8",          "rtl",      "huge"};
+                           "utf8",          "rtl",      "huge",     "no_family"};
     for (const char* name : cases) {
         INFO("case " << name);
         const Outline ref = read_dxf(kReference / (std::string(name) + ".dxf"));
@@ -254,4 +255,22 @@ TEST_CASE("the default font is the packaged Liberation Sans", "[text]") {
     CHECK(f.file.find("LiberationSans-Regular") != std::string::npos);
     const text::Font b = text::find_font("Liberation Serif:style=Bold", false, nullptr);
     CHECK(b.file.find("LiberationSerif-Bold") != std::string::npos);
+    // A pattern with no family: kerf's default family in its own dialect
+    // (OpenSCAD's, fontconfig's choice, is the case "no_family" above).
+    const text::Font n = text::find_font(":style=Bold", false, nullptr);
+    CHECK(n.file.find("LiberationSans-Bold") != std::string::npos);
+}
+
+TEST_CASE("a font name fontconfig cannot parse: an error in .sdl, a warning and no text in .scad", "[text]") {
+    CHECK_THROWS_AS(text::find_font(":charset=xxx", true, nullptr), text::FontNameError);
+    const std::string call = "text(\"Won't display\", font = \":charset=xxx\");\n";
+    EvalOptions opt;
+    opt.echo = [](const std::string&) {};
+    const EvalResult scad = evaluate_source(test::source(call, "charset.scad"), opt);
+    REQUIRE(scad.warnings.size() == 1);
+    CHECK(scad.warnings[0].message ==
+          "text: ':charset=xxx' is not a font name (expected 'Family' or 'Family:style=Style'); nothing drawn");
+    CHECK(scad.graph.polygons.empty());
+    CHECK_THROWS_WITH(evaluate_source(test::source(call, "charset.sdl"), opt),
+                      Catch::Contains("text: ':charset=xxx' is not a font name"));
 }
