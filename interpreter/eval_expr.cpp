@@ -477,12 +477,21 @@ Value Evaluator::eval(const ast::Expr& e, Scope& s) {
         }
         case K::Range: {
             double v[3];
+            bool finite = true;
             for (std::size_t i = 0; i < e.items.size() && i < 3; ++i) {
                 Value x = eval(*e.items[i], s);
-                if (lenient_ && (!x.is_number() || !std::isfinite(x.as_number()))) return Value();  // OpenSCAD: undef
+                if (lenient_ && !x.is_number()) return Value();  // OpenSCAD: undef
                 if (!x.is_number()) throw SourceError(e.items[i]->loc, std::string("range bound must be a number, got ") + x.type_name());
-                if (!std::isfinite(x.as_number())) throw SourceError(e.items[i]->loc, "range bound must be finite, got " + format_number(x.as_number()));
+                if (!lenient_ && !std::isfinite(x.as_number())) throw SourceError(e.items[i]->loc, "range bound must be finite, got " + format_number(x.as_number()));
                 v[i] = x.as_number();
+                finite = finite && std::isfinite(v[i]);
+            }
+            // OpenSCAD: undef for a bound that is not finite, but an infinite
+            // step makes a range of its begin alone (openscad_range_count:
+            // `[0:inf:0]` runs one pass, as OpenSCAD 2021.01, measured).
+            if (!finite) {
+                if (e.items.size() != 3 || !std::isinf(v[1]) || std::isnan(v[0]) || std::isnan(v[2])) return Value();
+                return Value::range(v[0], v[1], v[2]);
             }
             if (e.items.size() == 2) {
                 // OpenSCAD 2021 counts [5:1] down as [1:1:5] (docs/openscad.md, "Ranges").

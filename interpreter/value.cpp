@@ -12,6 +12,8 @@
 namespace kerf {
 
 std::uint64_t Range::size() const {
+    // An infinite step (only the OpenSCAD dialect makes one): its begin alone.
+    if (std::isinf(step) && !std::isnan(start) && !std::isnan(end)) return (step > 0 ? start <= end : start >= end);
     if (!std::isfinite(start) || !std::isfinite(step) || !std::isfinite(end) || step == 0) return 0;
     double span = end - start;
     if ((step > 0 && span < 0) || (step < 0 && span > 0)) return 0;

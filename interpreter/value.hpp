@@ -44,7 +44,7 @@ struct Range {
     // users expect. Saturates at UINT64_MAX/2 for huge ranges; callers
     // compare it against their limits before iterating.
     std::uint64_t size() const;
-    double at(std::uint64_t i) const { return start + static_cast<double>(i) * step; }
+    double at(std::uint64_t i) const { return i == 0 ? start : start + static_cast<double>(i) * step; }  // 0 * inf is NaN
     bool operator==(const Range&) const = default;
 };
 
