@@ -91,6 +91,10 @@ def openscad_outcome(openscad, path, timeout, scratch):
     # With -o F.echo, OpenSCAD writes its messages (ECHO, WARNING, ERROR)
     # into F.echo rather than to its standard error.
     if os.path.exists(echo):
+        # Its own output may end without a line break (misc/unicode-tests.scad
+        # prints a row of backslashes): the file's first line stays a line.
+        if text and not text.endswith("\n"):
+            text += "\n"
         with open(echo, encoding="utf-8", errors="replace") as f:
             text += f.read()
         os.unlink(echo)
