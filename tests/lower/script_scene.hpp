@@ -8,6 +8,7 @@
 #include <string>
 
 #include "interpreter/interpreter.hpp"
+#include "lower/geometry_ops.hpp"
 #include "lower/lower.hpp"
 #include "render/image/image.hpp"
 
@@ -18,7 +19,9 @@ inline EvalResult evaluated(const std::string& text, const std::string& path = "
     auto f = std::make_shared<SourceFile>();
     f->path = path;
     f->text = text;
-    return evaluate_source(f);
+    EvalOptions o;
+    o.resolve_geometry_ops = resolve_geometry_ops;  // as the CLI: projection() of a hull
+    return evaluate_source(f, o);
 }
 
 inline csg::Scene lowered(const std::string& text) { return lower_to_csg(evaluated(text).graph); }
