@@ -25,6 +25,9 @@ inline EvalResult evaluated(const std::string& text, const std::string& path = "
 }
 
 inline csg::Scene lowered(const std::string& text) { return lower_to_csg(evaluated(text).graph); }
+inline csg::Scene lowered_as(const std::string& text, const std::string& path) {
+    return lower_to_csg(evaluated(text, path).graph);
+}
 
 // Hit where `want` hits, at the same depth within `rel`; enough hits to mean something.
 inline void same_depth(const render::Image& got, const render::Image& want, double rel, std::size_t min_hits = 200) {
