@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "cli/report.hpp"
+#include "lower/geometry_ops.hpp"
 #include "lower/lower.hpp"
 #include "render/image/image.hpp"
 
@@ -27,7 +28,9 @@ csg::Scene evaluate_and_lower(const Options& o, const EvalOptions& eval, Progres
                               std::shared_ptr<const SourceFile> piped, std::vector<Diagnostic>* warnings) {
     bar.phase("evaluate");
     if (o.scene == "-" && !piped) piped = stdin_source(o.base);
-    EvalResult evaluated = o.scene == "-" ? evaluate_source(piped, eval) : evaluate_file(o.scene, eval);
+    EvalOptions with_ops = eval;  // projection() of a hull needs lowering's resolver (EvalOptions)
+    with_ops.resolve_geometry_ops = resolve_geometry_ops;
+    EvalResult evaluated = o.scene == "-" ? evaluate_source(piped, with_ops) : evaluate_file(o.scene, with_ops);
     if (!evaluated.warnings.empty()) bar.print_above([&] { print_warnings(evaluated.warnings); });
     if (warnings) *warnings = evaluated.warnings;
     bar.phase("lower");

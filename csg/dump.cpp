@@ -161,6 +161,45 @@ void tree(std::string& out, const Scene& s, Flush&& flush) {
     }
 }
 
+// The materials, meshes and tree of a scene (the solid's or a ghost's).
+template <typename Flush>
+void body(const Scene& s, std::string& out, Flush&& flush) {
+    for (std::size_t i = 0; i < s.materials.size(); ++i) {
+        const Material& m = s.materials[i];
+        out += "material " + std::to_string(i);
+        field(out, "color", m.color);
+        field(out, "interior", m.interior);
+        field(out, "diffuse", m.diffuse);
+        field(out, "specular", m.specular);
+        field(out, "shininess", m.shininess);
+        field(out, "reflect", m.reflect);
+        // The glass and glow fields only where they differ from an opaque material.
+        if (m.transparency != 0) field(out, "transparency", m.transparency);
+        if (m.ior != 1) field(out, "ior", m.ior);
+        if (m.absorption != glm::dvec3(0)) field(out, "absorption", m.absorption);
+        if (m.roughness != 0) field(out, "roughness", m.roughness);
+        if (m.emission != glm::dvec3(0)) field(out, "emission", m.emission);
+        if (m.pattern != Pattern::None) {
+            static const char* const kNames[] = {"none", "checker", "stripes", "gradient", "noise", "marble", "wood", "image"};
+            out += std::string(" pattern=") + kNames[static_cast<int>(m.pattern)];
+            if (m.texture) {
+                static const char* const kMappings[] = {"planar", "spherical", "cylindrical"};
+                out += " texture=" + m.texture->path + " mapping=" + kMappings[static_cast<int>(m.mapping)] +
+                       (m.bilinear ? " bilinear" : " nearest");
+            } else {
+                field(out, "color2", m.color2);
+            }
+        }
+        out += '\n';
+    }
+    for (std::size_t i = 0; i < s.meshes.size(); ++i) {
+        const Mesh& m = s.meshes[i];
+        out += "mesh " + std::to_string(i) + " points=" + std::to_string(m.points.size()) +
+               " triangles=" + std::to_string(m.triangles.size() / 3) + (m.solid ? " solid\n" : " shell\n");
+    }
+    tree(out, s, flush);
+}
+
 template <typename Flush>
 void dump(const Scene& s, std::string& out, Flush&& flush) {
     out += "kerf-dump 1\n";
@@ -222,40 +261,16 @@ void dump(const Scene& s, std::string& out, Flush&& flush) {
         field(out, "color", s.fog.color);
         out += '\n';
     }
-    for (std::size_t i = 0; i < s.materials.size(); ++i) {
-        const Material& m = s.materials[i];
-        out += "material " + std::to_string(i);
-        field(out, "color", m.color);
-        field(out, "interior", m.interior);
-        field(out, "diffuse", m.diffuse);
-        field(out, "specular", m.specular);
-        field(out, "shininess", m.shininess);
-        field(out, "reflect", m.reflect);
-        // The glass and glow fields only where they differ from an opaque material.
-        if (m.transparency != 0) field(out, "transparency", m.transparency);
-        if (m.ior != 1) field(out, "ior", m.ior);
-        if (m.absorption != glm::dvec3(0)) field(out, "absorption", m.absorption);
-        if (m.roughness != 0) field(out, "roughness", m.roughness);
-        if (m.emission != glm::dvec3(0)) field(out, "emission", m.emission);
-        if (m.pattern != Pattern::None) {
-            static const char* const kNames[] = {"none", "checker", "stripes", "gradient", "noise", "marble", "wood", "image"};
-            out += std::string(" pattern=") + kNames[static_cast<int>(m.pattern)];
-            if (m.texture) {
-                static const char* const kMappings[] = {"planar", "spherical", "cylindrical"};
-                out += " texture=" + m.texture->path + " mapping=" + kMappings[static_cast<int>(m.mapping)] +
-                       (m.bilinear ? " bilinear" : " nearest");
-            } else {
-                field(out, "color2", m.color2);
-            }
-        }
-        out += '\n';
+    body(s, out, flush);
+    // The ghosts after the solid, each marked by its own header line: what
+    // follows it, up to the next header, is that ghost's own materials,
+    // meshes and tree (their indices its own), as the renderer receives them.
+    for (const Scene& g : s.ghosts) {
+        out += g.ghost_kind == GhostKind::Highlight ? "ghost highlight" : "ghost background";
+        out += " leaves=" + std::to_string(g.leaves.size()) + " nodes=" + std::to_string(g.nodes.size()) +
+               " materials=" + std::to_string(g.materials.size()) + " meshes=" + std::to_string(g.meshes.size()) + '\n';
+        body(g, out, flush);
     }
-    for (std::size_t i = 0; i < s.meshes.size(); ++i) {
-        const Mesh& m = s.meshes[i];
-        out += "mesh " + std::to_string(i) + " points=" + std::to_string(m.points.size()) +
-               " triangles=" + std::to_string(m.triangles.size() / 3) + (m.solid ? " solid\n" : " shell\n");
-    }
-    tree(out, s, flush);
 }
 
 }  // namespace

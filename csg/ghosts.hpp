@@ -13,8 +13,6 @@
 
 namespace kerf::csg {
 
-enum class GhostKind : std::uint8_t { Background, Highlight };
-
 // OpenSCAD 2021.01's preview colours (its renderer.cc colour map):
 // background sRGB (180, 180, 180), highlight (255, 81, 81), both at alpha
 // 128/255. The ghost's opacity is 1 − transparency.

@@ -238,6 +238,9 @@ struct SourceRef {
     std::uint32_t col = 0;
 };
 
+// Of a ghost scene (Scene::ghosts, csg/ghosts.hpp): a `%` part or a `#` one.
+enum class GhostKind : std::uint8_t { Background, Highlight };
+
 struct Scene {
     std::vector<Leaf> leaves;
     std::vector<Node> nodes;              // pre-order: parents before children; root = nodes[0]
@@ -266,6 +269,7 @@ struct Scene {
     // materials give each surface's colour and, as 1 − transparency, its
     // opacity. Empty: none, or `--no-ghosts`.
     std::vector<Scene> ghosts;
+    GhostKind ghost_kind = GhostKind::Background;  // a ghost scene's kind (`kerf dump` names it)
 
     Aabb bounds() const { return root == kNone ? Aabb{} : nodes[root].bounds; }
 };

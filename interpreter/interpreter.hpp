@@ -60,6 +60,13 @@ struct EvalOptions {
     // Also for a run that stops at an error, up to the error: `kerf watch`
     // watches exactly these.
     std::function<void(const std::string& path)> on_dependency;
+    // Lowering's hull(), minkowski() and resize() (kerf::resolve_geometry_ops,
+    // lower/geometry_ops.hpp): projection() runs it on a subtree holding
+    // them and projects the ordinary nodes it gives back. Handed in by the
+    // caller (the CLI, the tests), as the interpreter does not include
+    // lowering (docs/architecture.md, "Layers"); unset, such a projection is
+    // an error.
+    std::function<bool(const graph::SceneGraph&, graph::SceneGraph&)> resolve_geometry_ops;
 };
 
 // A -D value that does not parse, evaluate or name a top-level binding: a

@@ -93,6 +93,7 @@ csg::Scene lower(const graph::SceneGraph& input, graph::SceneGraph* owned, const
     for (auto& [kind, ghost, ghost_tree] : ghosts) {
         lowering::emit_flat_tree(graph, ghost_tree, ghost);
         if (ghost.root == csg::kNone) continue;
+        ghost.ghost_kind = kind;
         // A `#` part is the highlight colour whatever colours it has inside.
         if (kind == csg::GhostKind::Highlight)
             for (csg::Material& m : ghost.materials) m = csg::ghost_material(kind);

@@ -7,6 +7,7 @@
 // services a module needs.
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <initializer_list>
 #include <span>
 #include <string_view>
@@ -36,6 +37,8 @@ public:
     FacetVars facet_vars() const;    // the $fn, $fa, $fs in force for this call
     FacetMode facet_mode() const;    // EvalOptions::facets
     bool path_integrator() const;    // EvalOptions::path_integrator
+    // EvalOptions::resolve_geometry_ops (may be empty).
+    const std::function<bool(const graph::SceneGraph&, graph::SceneGraph&)>& geometry_ops() const;
     // A primitive node at the statement, counted against the limit.
     void add_primitive(csg::PrimKind kind, std::initializer_list<double> p, std::uint32_t index = 0);
     // A warning at the statement (Evaluator::warn).

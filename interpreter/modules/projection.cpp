@@ -24,6 +24,7 @@
 #include "interpreter/modules/plane_map.hpp"
 #include "interpreter/modules/projection_leaf.hpp"
 #include "interpreter/modules/region2d.hpp"
+#include "interpreter/modules/subgraph.hpp"
 
 namespace kerf::eval {
 
@@ -128,7 +129,7 @@ public:
         case NK::Hull:
         case NK::Minkowski:
         case NK::Resize:
-            throw SourceError(n.loc, "projection() of hull(), minkowski() or resize() is not supported yet");
+            throw SourceError(n.loc, "projection(): hull(), minkowski() or resize() left unresolved");  // see projection_call
         default:
             break;
         }
@@ -160,9 +161,31 @@ private:
             if (!tapered_triangles(g_.graph, n, m, tris))
                 throw SourceError(n.loc, "projection(cut = true) of a twisted extrusion, or a tapered one of a "
                                          "polygon other than one convex path, across its axis is not supported yet");
-            return prism_node(g_, section_loops(tris), loc_);
+            return closed_section(std::move(tris));
         }
-        return prism_node(g_, section_loops(leaf_triangles(g_.graph, n, m, tol_)), loc_);
+        return closed_section(leaf_triangles(g_.graph, n, m, tol_));
+    }
+
+    // The section as a closed set: a face lying in z = 0 belongs to it, as in
+    // OpenSCAD 2021.01 (`projection(cut = true) cube(2)` is the 2 × 2 bottom
+    // face; a difference removes a subtrahend's face, a union keeps both:
+    // measured, docs/lowering.md "Projection"). section_loops counts a vertex
+    // at z = 0 as above, which keeps a face whose solid lies below; the
+    // triangles mirrored in z keep one whose solid lies above. When a vertex
+    // lies at 0, the union of both.
+    std::uint32_t closed_section(std::vector<Tri> tris) {
+        const std::uint32_t below = prism_node(g_, section_loops(tris), loc_);
+        bool on = false;
+        for (Tri& t : tris) {
+            on = on || t.a.z == 0 || t.b.z == 0 || t.c.z == 0;
+            t.a.z = -t.a.z, t.b.z = -t.b.z, t.c.z = -t.c.z;
+        }
+        return on ? either(below, prism_node(g_, section_loops(tris), loc_)) : below;
+    }
+
+    std::uint32_t either(std::uint32_t a, std::uint32_t b) {
+        if (a == kEmpty || b == kEmpty) return a == kEmpty ? b : a;
+        return op_node(g_, NK::Union, {a, b}, loc_);
     }
 
     // The ball's section is a disc in object space, an ellipse in the world.
@@ -189,7 +212,7 @@ private:
             const glm::dmat2 A(glm::dvec2(L * glm::dvec3(1, 0, f.x)), glm::dvec2(L * glm::dvec3(0, 1, f.y)));
             const glm::dvec2 t = xy(m, {0, 0, f.z});
             if (across(row)) {  // across the axis: the section at one height
-                if (f.z <= z0 || f.z >= z1) return kEmpty;
+                if (f.z < z0 || f.z > z1) return kEmpty;  // closed: an end face in the plane is kept
                 const double tau = (f.z - z0) / (z1 - z0);
                 if (circle) return ellipse_node(g_, n.p[2] + (n.p[3] - n.p[2]) * tau, A, t, loc_);
                 const double a = -n.p[4] * tau, sx = 1 + n.p[2] * tau, sy = 1 + (n.p[2] + n.p[3]) * tau;
@@ -211,19 +234,29 @@ private:
         const glm::dvec2 nxy(row.x, row.y);
         const double k = glm::length(nxy), c = -cz / k;
         const glm::dvec2 nu = nxy / k, d(-nu.y, nu.x), q0 = c * nu;
-        std::vector<double> s;
         if (circle) {
             if (std::abs(c) >= r) return kEmpty;
             const double h = std::sqrt(r * r - c * c);
-            s = {-h, h};
-        } else {
-            for (const glm::dvec4& e : g_.graph.polygons[n.index].edges) {
-                const glm::dvec2 a(e.x, e.y), b(e.z, e.w);
-                const double fa = glm::dot(nu, a) - c, fb = glm::dot(nu, b) - c;
-                if ((fa >= 0) != (fb >= 0)) s.push_back(glm::dot(a + (b - a) * (fa / (fa - fb)) - q0, d));
-            }
-            std::sort(s.begin(), s.end());
+            return rectangles(m, q0, d, {-h, h}, z0, z1);
         }
+        // A side lying on the line counts as in (closed_section's rule): the
+        // line's intervals with an end point on it counted on each side in turn.
+        std::vector<double> s[2];
+        for (const glm::dvec4& e : g_.graph.polygons[n.index].edges) {
+            const glm::dvec2 a(e.x, e.y), b(e.z, e.w);
+            const double fa = glm::dot(nu, a) - c, fb = glm::dot(nu, b) - c;
+            for (int side = 0; side < 2; ++side)
+                if (side == 0 ? (fa >= 0) != (fb >= 0) : (fa > 0) != (fb > 0))
+                    s[side].push_back(glm::dot(a + (b - a) * (fa / (fa - fb)) - q0, d));
+        }
+        for (auto& v : s) std::sort(v.begin(), v.end());
+        const std::uint32_t first = rectangles(m, q0, d, s[0], z0, z1);
+        return s[0] == s[1] ? first : either(first, rectangles(m, q0, d, s[1], z0, z1));
+    }
+
+    // The intervals s[0]..s[1], s[2]..s[3], ... of the line q0 + s·d, times z0 < z < z1.
+    std::uint32_t rectangles(const glm::dmat4& m, glm::dvec2 q0, glm::dvec2 d, const std::vector<double>& s, double z0,
+                             double z1) {
         Loops rects;
         auto w = [&](double si, double z) { return xy(m, glm::dvec3(q0 + si * d, z)); };
         for (std::size_t i = 0; i + 1 < s.size(); i += 2)
@@ -480,6 +513,16 @@ void projection_call(ModuleCall& c) {
     if (solids.size() > 1) {
         root = op_node(g, NK::Union, solids, c.st.loc);
         g.graph.nodes[root].flat = false;
+    }
+    if (has_geometry_ops(g.graph, root)) {
+        // Their results exist only once lowering has built them: a copy of
+        // the subtree goes through lowering's resolver and the ordinary nodes
+        // it gives back are projected (docs/lowering.md, "Projection").
+        if (!c.geometry_ops())
+            throw SourceError(c.st.loc, "projection() of hull(), minkowski() or resize() needs lowering's "
+                                        "resolver, which this caller did not give");
+        graph::SceneGraph resolved;
+        if (c.geometry_ops()(extract_subtree(g.graph, root), resolved)) root = append_graph(g, std::move(resolved));
     }
     try {
         const std::uint32_t out = cut ? Sectioner(g, c.curve_tolerance(), c.st.loc).walk(root, glm::dmat4(1.0))

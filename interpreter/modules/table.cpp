@@ -136,6 +136,9 @@ double ModuleCall::curve_tolerance() const { return ev_.opt_.curve_tolerance; }
 FacetVars ModuleCall::facet_vars() const { return ev_.facet_vars(); }
 FacetMode ModuleCall::facet_mode() const { return ev_.facet_mode(); }
 bool ModuleCall::path_integrator() const { return ev_.opt_.path_integrator; }
+const std::function<bool(const graph::SceneGraph&, graph::SceneGraph&)>& ModuleCall::geometry_ops() const {
+    return ev_.opt_.resolve_geometry_ops;
+}
 
 void ModuleCall::add_primitive(csg::PrimKind kind, std::initializer_list<double> p, std::uint32_t index) {
     const std::uint64_t limit = ev_.opt_.limits.primitives;

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "interpreter/interpreter.hpp"
+#include "lower/geometry_ops.hpp"
 #include "lower/lower.hpp"
 #include "render/image/image.hpp"
 
@@ -18,10 +19,15 @@ inline EvalResult evaluated(const std::string& text, const std::string& path = "
     auto f = std::make_shared<SourceFile>();
     f->path = path;
     f->text = text;
-    return evaluate_source(f);
+    EvalOptions o;
+    o.resolve_geometry_ops = resolve_geometry_ops;  // as the CLI: projection() of a hull
+    return evaluate_source(f, o);
 }
 
 inline csg::Scene lowered(const std::string& text) { return lower_to_csg(evaluated(text).graph); }
+inline csg::Scene lowered_as(const std::string& text, const std::string& path) {
+    return lower_to_csg(evaluated(text, path).graph);
+}
 
 // Hit where `want` hits, at the same depth within `rel`; enough hits to mean something.
 inline void same_depth(const render::Image& got, const render::Image& want, double rel, std::size_t min_hits = 200) {

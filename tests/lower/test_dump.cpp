@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include "tests/lower/graph_builder.hpp"
+#include "tests/lower/script_scene.hpp"
 #include "lower/lower.hpp"
 #include "csg/dump.hpp"
 
@@ -70,4 +71,39 @@ TEST_CASE("the streamed dump is the same text") {
     csg::dump_scene(s, os);
     CHECK(os.str() == csg::dump_scene(s));
     CHECK(os.str().size() > (1u << 17));  // long enough to be flushed in pieces
+}
+
+TEST_CASE("dump prints the ghosts of % and # after the solid, each under its own header") {
+    // A `%` cube is no solid; a `#` sphere is in the solid and drawn once more in pink (docs/openscad.md, "Modifiers").
+    const csg::Scene s = test::lowered_as("%translate([3, 0, 0]) cube(1);\n#sphere(1);\n", "test.scad");
+    const auto l = lines(csg::dump_scene(s));
+    const auto at = [&](const std::string& head) {
+        for (std::size_t i = 0; i < l.size(); ++i)
+            if (l[i] == head) return i;
+        return l.size();
+    };
+    const std::size_t tree = at("tree"), bg = at("ghost background leaves=1 nodes=1 materials=2 meshes=0"),
+                      hi = at("ghost highlight leaves=1 nodes=1 materials=1 meshes=0");
+    REQUIRE(tree < bg);
+    REQUIRE(bg < hi);
+    REQUIRE(hi + 3 < l.size());
+    CHECK(l[1] == "scene leaves=1 nodes=1 materials=1 meshes=0");  // the solid: the sphere alone
+    CHECK(l[tree + 1].rfind("sphere r=1 leaf=0 material=0 lo=[-1 -1 -1] hi=[1 1 1]", 0) == 0);
+    CHECK(bg == tree + 2);
+    // Each ghost: its materials (OpenSCAD's preview grey, translucent: transparency 1 − 128/255, after the
+    // default), its tree, its leaf where it is drawn.
+    CHECK(l[bg + 1].rfind("material 0 ", 0) == 0);
+    CHECK(l[bg + 2].rfind("material 1 color=[0.456411 0.456411 0.456411] ", 0) == 0);
+    CHECK(l[bg + 2].find(" transparency=0.498039") != std::string::npos);
+    CHECK(l[bg + 3] == "tree");
+    CHECK(l[bg + 4].rfind("box min=[0 0 0] max=[1 1 1] leaf=0 material=1 lo=[3 0 0] hi=[4 1 1] world=[1 0 0 3 | 0 1 0 0 | 0 0 1 0] at=test.scad:1:", 0) == 0);
+    CHECK(l[hi + 1].rfind("material 0 color=[1 ", 0) == 0);  // OpenSCAD's highlight pink: full red
+    CHECK(l[hi + 2] == "tree");
+    CHECK(l[hi + 3].rfind("sphere r=1 leaf=0 material=0 lo=[-1 -1 -1] hi=[1 1 1]", 0) == 0);
+    CHECK(hi + 4 == l.size());
+    // --no-ghosts (and kerf measure): none lowered, none printed.
+    LowerOptions none;
+    none.ghosts = false;
+    CHECK(csg::dump_scene(lower_to_csg(test::evaluated("%cube(1);\nsphere(1);\n", "test.scad").graph, none)).find("ghost") ==
+          std::string::npos);
 }

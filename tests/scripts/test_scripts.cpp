@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "interpreter/interpreter.hpp"
+#include "lower/geometry_ops.hpp"
 #include "lower/lower.hpp"
 #include "tests/fuzz/fuzz_limits.hpp"
 #include "tests/scripts/expectations.hpp"
@@ -49,6 +50,7 @@ TEST_CASE("golden scripts do what their comments say", "[scripts]") {
     const test::Expectations want = test::expectations_of(read_all(path));
 
     EvalOptions opt;
+    opt.resolve_geometry_ops = resolve_geometry_ops;  // as the CLI: projection() of a hull
     if (want.fuzz_limits) opt.limits = test::fuzz_limits();
     REQUIRE((want.facets == "auto" || want.facets == "exact" || want.facets == "openscad"));
     opt.facets = want.facets == "exact" ? FacetMode::Exact : want.facets == "openscad" ? FacetMode::OpenScad : FacetMode::Auto;
