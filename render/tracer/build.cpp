@@ -154,6 +154,7 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
         }
     }
     impl_->build_accel(impl_->top, units, true);
+    impl_->find_convex_units();
     impl_->ball_slack = use_float ? 1e-5 : 1e-12;  // float sphere tests round at ~1e-7 of |c - o|
     impl_->top.balls = unit_balls(scene, impl_->top.items, impl_->node_eps);
     if (!impl_->top.balls.empty())
