@@ -130,6 +130,7 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
         const glm::dmat3& m = leaf.object_from_world.linear;
         impl_->leaf_stretch.push_back(
             std::sqrt(glm::dot(m[0], m[0]) + glm::dot(m[1], m[1]) + glm::dot(m[2], m[2])));
+        impl_->leaf_shift_only.push_back(m == glm::dmat3(1.0) ? 1 : 0);
     }
     const std::vector<std::uint32_t> units =
         scene.root == csg::kNone ? std::vector<std::uint32_t>{} : root_units(scene);

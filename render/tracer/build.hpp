@@ -63,6 +63,7 @@ struct CsgTracer::Impl {
     std::vector<std::int32_t> accel_of_node;  // -1: children evaluated directly
     std::vector<std::unique_ptr<Accel>> node_accels;
     std::vector<double> leaf_stretch;         // per leaf: Frobenius norm of object_from_world.linear
+    std::vector<std::uint8_t> leaf_shift_only;  // per leaf: 1 if object_from_world.linear is the identity
     // Per leaf: the unit (top item index; unbounded units after the items)
     // that lies wholly inside it when the leaf is convex, else kNone: a
     // shadow ray leaving its surface outwards skips that unit (Departure).
