@@ -27,9 +27,18 @@ public:
         if (bytes) image.srgb8.resize(values); else image.pixels.resize(values);
     }
 
+    // The colour most pixels get (the background): its codes are found
+    // once, and a pixel of exactly that colour copies them.
+    void expect(const glm::dvec3& c) {
+        common_ = c;
+        for (int i = 0; i < 3; ++i) common_bytes_[i] = srgb_byte(srgb_, float(c[i]));
+    }
+
     void color(int x, int y, const glm::dvec3& c) {
         const std::size_t at = index(x, y);
-        if (bytes_) {
+        if (bytes_ && c == common_) {
+            std::copy(common_bytes_, common_bytes_ + 3, &image_.srgb8[at]);
+        } else if (bytes_) {
             image_.srgb8[at] = srgb_byte(srgb_, float(c.x));
             image_.srgb8[at + 1] = srgb_byte(srgb_, float(c.y));
             image_.srgb8[at + 2] = srgb_byte(srgb_, float(c.z));
@@ -60,6 +69,8 @@ private:
     int x0_, y0_;
     bool bytes_;
     const SrgbTable& srgb_;
+    glm::dvec3 common_{-1.0};  // before expect(): -1 gives code 0, as its bytes say
+    std::uint8_t common_bytes_[3] = {0, 0, 0};
 };
 
 }  // namespace kerf::render

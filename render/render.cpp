@@ -82,6 +82,7 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
     if (options.integrator == Integrator::Path && !options.preview)
         path.emplace(scene, tracer, options.max_path_depth, options.seed, options.path_lighting);
     PixelStore store(image, region, alpha ? 4 : aov_channels(aov), aov_content(aov), options.srgb8 && aov == Aov::None);
+    store.expect(shader.miss());
     // Coverage: the samples of the pixel being shaded that hit a solid (a
     // sample seeing a ghost over the background counts the ghost's
     // opacity). A pixel is shaded start to end on one thread, so a

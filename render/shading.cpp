@@ -48,9 +48,9 @@ Shader::Shader(const csg::Scene& scene, const CsgTracer& tracer, int max_depth, 
 
 const csg::Material& Shader::material_of(std::uint32_t leaf) const { return leaf_material(scene_, leaf); }
 
-glm::dvec3 Shader::transmitted(const TraceRay& ray, ThreadState& ts) const {
+glm::dvec3 Shader::transmitted(const TraceRay& ray, ThreadState& ts, const Departure* from) const {
     ++ts.rays.shadow;
-    if (!any_transparent_) return glm::dvec3(tracer_.occluded(ray, ts.scratch) ? 0.0 : 1.0);
+    if (!any_transparent_) return glm::dvec3(tracer_.occluded(ray, ts.scratch, from) ? 0.0 : 1.0);
     tracer_.inside_spans(ray, ts.scratch, ts.spans);
     glm::dvec3 k(1.0);
     const double len = glm::length(ray.d);
@@ -157,7 +157,8 @@ glm::dvec3 Shader::radiance(const TraceRay& ray, int depth, ThreadState& ts, std
 }
 
 template <class Ray>
-void Shader::light_rays(const glm::dvec3& origin, const glm::dvec3& n, ThreadState& ts, Ray&& ray) const {
+void Shader::light_rays(const glm::dvec3& origin, const glm::dvec3& n, const Departure* from, ThreadState& ts,
+                        Ray&& ray) const {
     for (std::size_t li = 0; li < lights_.size(); ++li) {
         const csg::Light& light = lights_[li];
         LightView view;
@@ -167,7 +168,7 @@ void Shader::light_rays(const glm::dvec3& origin, const glm::dvec3& n, ThreadSta
         if (light.radius <= 0 || dist <= light.radius) {
             const double ndl = glm::dot(n, l);
             if (ndl <= 0) continue;
-            ray(light, l, ndl, light.color * k, light.shadows ? transmitted(TraceRay{origin, l, 0, dist}, ts) : glm::dvec3(1.0));
+            ray(light, l, ndl, light.color * k, light.shadows ? transmitted(TraceRay{origin, l, 0, dist}, ts, from) : glm::dvec3(1.0));
             continue;
         }
         // A sphere: the mean response over stratified directions into the
@@ -177,7 +178,7 @@ void Shader::light_rays(const glm::dvec3& origin, const glm::dvec3& n, ThreadSta
         std::uint64_t rng = shading_rng(origin, li);
         const glm::dvec3 share = light.color * (k / double(pattern.count()));
         if (light.probe && light.shadows && !ts.refining) {
-            probed_rays(light, cone, pattern, rng, origin, n, share, ts, ray);
+            probed_rays(light, cone, pattern, rng, origin, n, share, from, ts, ray);
             continue;
         }
         for (int i = 0; i < pattern.count(); ++i) {
@@ -185,7 +186,7 @@ void Shader::light_rays(const glm::dvec3& origin, const glm::dvec3& n, ThreadSta
             const glm::dvec3 dir = cone.direction(pattern.offset(i, rng), reach);
             const double ndl = glm::dot(n, dir);
             if (ndl <= 0) continue;
-            ray(light, dir, ndl, share, light.shadows ? transmitted(TraceRay{origin, dir, 0, reach}, ts) : glm::dvec3(1.0));
+            ray(light, dir, ndl, share, light.shadows ? transmitted(TraceRay{origin, dir, 0, reach}, ts, from) : glm::dvec3(1.0));
         }
     }
 }
@@ -202,7 +203,7 @@ void Shader::light_rays(const glm::dvec3& origin, const glm::dvec3& n, ThreadSta
 template <class Ray>
 void Shader::probed_rays(const csg::Light& light, const ConeBasis& cone, const SamplePattern& pattern,
                          std::uint64_t& rng, const glm::dvec3& origin, const glm::dvec3& n, const glm::dvec3& share,
-                         ThreadState& ts, Ray&& ray) const {
+                         const Departure* from, ThreadState& ts, Ray&& ray) const {
     std::uint64_t turn_rng = rng ^ 0x70726F62;  // "prob"
     const double turn = uniform01(turn_rng);
     glm::dvec3 through[5];
@@ -211,7 +212,7 @@ void Shader::probed_rays(const csg::Light& light, const ConeBasis& cone, const S
         double reach;
         const glm::dvec3 dir = cone.direction({j < 4 ? 1.0 : 0.0, (j + turn) / 4}, reach);
         agree = glm::dot(n, dir) > 0;  // else the terminator: trace them all
-        if (agree) through[j] = transmitted(TraceRay{origin, dir, 0, reach}, ts);
+        if (agree) through[j] = transmitted(TraceRay{origin, dir, 0, reach}, ts, from);
         agree = agree && through[j] == through[0];
     }
     for (int i = 0; i < pattern.count(); ++i) {
@@ -219,7 +220,7 @@ void Shader::probed_rays(const csg::Light& light, const ConeBasis& cone, const S
         const glm::dvec3 dir = cone.direction(pattern.offset(i, rng), reach);
         const double ndl = glm::dot(n, dir);
         if (ndl <= 0) continue;
-        ray(light, dir, ndl, share, agree ? through[0] : transmitted(TraceRay{origin, dir, 0, reach}, ts));
+        ray(light, dir, ndl, share, agree ? through[0] : transmitted(TraceRay{origin, dir, 0, reach}, ts, from));
     }
 }
 
@@ -230,7 +231,7 @@ glm::dvec3 Shader::ground(const glm::dvec3& p, ThreadState& ts) const {
         return miss_;
     const glm::dvec3 up(0, 0, 1);
     double all = 0, blocked = 0;  // the shadow-casting lights' light reaching p: unblocked, blocked
-    light_rays(p + ground_lift_ * up, up, ts, [&](const csg::Light& light, const glm::dvec3&, double ndl, const glm::dvec3& k, const glm::dvec3& through) {
+    light_rays(p + ground_lift_ * up, up, nullptr, ts, [&](const csg::Light& light, const glm::dvec3&, double ndl, const glm::dvec3& k, const glm::dvec3& through) {
         if (!light.shadows) return;
         const double w = ndl * (k.r + k.g + k.b);
         all += w;
@@ -244,7 +245,8 @@ glm::dvec3 Shader::ground(const glm::dvec3& p, ThreadState& ts) const {
 glm::dvec3 Shader::shade(const TraceRay& ray, const TraceHit& hit, int depth, ThreadState& ts) const {
     const glm::dvec3 p = ray.o + hit.t * ray.d;
     glm::dvec3 n = tracer_.normal(hit, p);
-    if (glm::dot(n, ray.d) > 0) n = -n;  // grazing round-off: light the side we see
+    const bool facing = glm::dot(n, ray.d) <= 0;
+    if (!facing) n = -n;  // grazing round-off: light the side we see
     const csg::Material& m = material_of(hit.surface.mat_leaf);
     const glm::dvec3 albedo = surface_albedo(scene_, m, hit.surface.mat_leaf, hit.surface.cut, p);
     const double off = tracer_.surface_offset(hit, p);
@@ -258,7 +260,9 @@ glm::dvec3 Shader::shade(const TraceRay& ray, const TraceHit& hit, int depth, Th
         diffuse += k * (m.diffuse * ndl) * albedo;
         highlights += k * (m.specular * highlight(std::max(0.0, glm::dot(n, h)), m.shininess));
     };
-    light_rays(origin, n, ts, [&](const csg::Light&, const glm::dvec3& l, double ndl, const glm::dvec3& k, const glm::dvec3& through) {
+    // Shadow rays leave the surface outwards only where n was not turned.
+    const Departure from = facing ? tracer_.departure(hit, n) : Departure{};
+    light_rays(origin, n, &from, ts, [&](const csg::Light&, const glm::dvec3& l, double ndl, const glm::dvec3& k, const glm::dvec3& through) {
         if (through != glm::dvec3(0.0)) respond(l, ndl, k * through);
     });
     double open = 1;  // ambient occlusion: the ambient light's share that reaches p

@@ -66,7 +66,8 @@ public:
     // The share of a light's colour reaching the end of a shadow ray: 0
     // behind an opaque solid, transparency·exp(−absorption·length) per
     // transparent span crossed (straight: no refraction, no caustics).
-    glm::dvec3 transmitted(const TraceRay& ray, ThreadState& ts) const;
+    // `from`: the surface the ray leaves (Departure), or null.
+    glm::dvec3 transmitted(const TraceRay& ray, ThreadState& ts, const Departure* from = nullptr) const;
 
 private:
     // The colour of the surface `hit` seen along `ray`, before fog.
@@ -79,15 +80,17 @@ private:
     // surface of normal n) to a light that faces the surface (ndl > 0): one
     // per point light, `samples` per spherical one; k the colour arriving
     // (intensity, spot, fall-off, the sample's share), through what the
-    // solid lets pass (shadows; 1 for a shadowless light).
+    // solid lets pass (shadows; 1 for a shadowless light); `from` as in
+    // transmitted.
     template <class Ray>
-    void light_rays(const glm::dvec3& origin, const glm::dvec3& n, ThreadState& ts, Ray&& ray) const;
+    void light_rays(const glm::dvec3& origin, const glm::dvec3& n, const Departure* from, ThreadState& ts,
+                    Ray&& ray) const;
     // light_rays for a probing light (csg::Light::probe): 5 probe rays (its
     // rim and centre), its `samples` rays only where those disagree.
     template <class Ray>
     void probed_rays(const csg::Light& light, const ConeBasis& cone, const SamplePattern& pattern, std::uint64_t& rng,
-                     const glm::dvec3& origin, const glm::dvec3& n, const glm::dvec3& share, ThreadState& ts,
-                     Ray&& ray) const;
+                     const glm::dvec3& origin, const glm::dvec3& n, const glm::dvec3& share, const Departure* from,
+                     ThreadState& ts, Ray&& ray) const;
     glm::dvec3 mirror(const glm::dvec3& origin, const glm::dvec3& r, const glm::dvec3& n, double roughness, int depth,
                       ThreadState& ts) const;
 

@@ -130,6 +130,7 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
         const glm::dmat3& m = leaf.object_from_world.linear;
         impl_->leaf_stretch.push_back(
             std::sqrt(glm::dot(m[0], m[0]) + glm::dot(m[1], m[1]) + glm::dot(m[2], m[2])));
+        impl_->leaf_shift_only.push_back(m == glm::dmat3(1.0) ? 1 : 0);
     }
     const std::vector<std::uint32_t> units =
         scene.root == csg::kNone ? std::vector<std::uint32_t>{} : root_units(scene);
@@ -154,6 +155,7 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
         }
     }
     impl_->build_accel(impl_->top, units, true);
+    impl_->find_convex_units();
     impl_->ball_slack = use_float ? 1e-5 : 1e-12;  // float sphere tests round at ~1e-7 of |c - o|
     impl_->top.balls = unit_balls(scene, impl_->top.items, impl_->node_eps);
     if (!impl_->top.balls.empty())

@@ -63,6 +63,11 @@ struct CsgTracer::Impl {
     std::vector<std::int32_t> accel_of_node;  // -1: children evaluated directly
     std::vector<std::unique_ptr<Accel>> node_accels;
     std::vector<double> leaf_stretch;         // per leaf: Frobenius norm of object_from_world.linear
+    std::vector<std::uint8_t> leaf_shift_only;  // per leaf: 1 if object_from_world.linear is the identity
+    // Per leaf: the unit (top item index; unbounded units after the items)
+    // that lies wholly inside it when the leaf is convex, else kNone: a
+    // shadow ray leaving its surface outwards skips that unit (Departure).
+    std::vector<std::uint32_t> convex_unit;
     std::vector<RTCScene> mesh_bvhs;        // per csg::Mesh used by a leaf (object space)
     std::vector<csg::Aabb> mesh_boxes;        // object-space bounds of each mesh
     std::vector<csg::PrismGrid> prism_grids;  // per Scene::polygons entry used by a prism (prism_spans.cpp)
@@ -73,6 +78,7 @@ struct CsgTracer::Impl {
     void local_tolerances(const std::vector<std::uint32_t>& units);  // build.cpp
     void build_meshes();  // mesh_spans.cpp
     void build_prism_grids();  // prism_spans.cpp
+    void find_convex_units();  // shadow_rays.cpp
 };
 
 // Embree callbacks the build installs, each defined beside the query it serves.

@@ -51,8 +51,11 @@ std::uint32_t leaf_spans(RayState& es, const Node& n, double a, double b) {
     const csg::Leaf& leaf = es.impl->scene.leaves[n.first];
     if (leaf.kind == csg::PrimKind::Mesh) return es.mesh_spans(n.first, a, b);
     if (leaf.kind == csg::PrimKind::Prism || leaf.kind == csg::PrimKind::Lathe) return prism_spans(es, n.first, a, b);
-    const glm::dvec3 lo = leaf.object_from_world.point(es.o);
-    const glm::dvec3 ld = leaf.object_from_world.vector(es.d);
+    // A leaf only moved (most are: translate, or none) skips the matrix:
+    // 1·x + 0·y + 0·z is x, so the numbers are the same.
+    const bool shift = es.impl->leaf_shift_only[n.first];
+    const glm::dvec3 lo = shift ? es.o + leaf.object_from_world.offset : leaf.object_from_world.point(es.o);
+    const glm::dvec3 ld = shift ? es.d : leaf.object_from_world.vector(es.d);
     csg::Span<double> spans[csg::kMaxSpans];
     // Span ends outside the window (with room for the degenerate rule) may
     // be reported inexactly: nothing reads them (see spans' contract).

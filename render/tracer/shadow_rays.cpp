@@ -3,7 +3,8 @@
 // query and stops at the first unit that blocks (the callback sets
 // tfar = -inf); differences stop at their first piece that answers (Need::Any).
 // Sphere-minus-few units are first decided by the chords of their balls
-// (README.md, "Ball chords").
+// (README.md, "Ball chords"). A ray that departs outwards from a convex
+// leaf holding its whole unit skips that unit (README.md, "Departure").
 #include <algorithm>
 #include <limits>
 
@@ -12,6 +13,36 @@
 namespace kerf::render {
 
 namespace {
+
+// Solids that lie wholly behind the tangent plane at any point of their
+// surface. (A paraboloid with h < 0 and a hyperboloid's waist are not.)
+bool convex_leaf(csg::PrimKind kind) {
+    return kind == csg::PrimKind::Sphere || kind == csg::PrimKind::Box || kind == csg::PrimKind::Cylinder ||
+           kind == csg::PrimKind::Plane;
+}
+
+// Marks the leaves under `node` that hold all of it: the node itself if a
+// leaf, a difference's minuend, every operand of an intersection (a union's
+// operands each hold only a part of it).
+void mark_holders(const csg::Scene& scene, std::uint32_t node, std::uint32_t unit, std::vector<std::uint32_t>& out) {
+    const csg::Node& n = scene.nodes[node];
+    switch (n.op) {
+        case csg::Op::Leaf:
+            if (convex_leaf(scene.leaves[n.first].kind)) out[n.first] = unit;
+            return;
+        case csg::Op::Difference: return mark_holders(scene, scene.children[n.first], unit, out);
+        case csg::Op::Intersection:
+            for (std::uint32_t k = 0; k < n.count; ++k) mark_holders(scene, scene.children[n.first + k], unit, out);
+            return;
+        case csg::Op::Union: return;
+    }
+}
+
+// The cosine below which a departing ray is traced against its own unit
+// after all: far above the normal's round-off (~1e-15), so a ray that
+// leaves the tangent plane this steeply, from 100 degenerate rules outside
+// it (CsgTracer::surface_offset), provably stays outside the convex leaf.
+constexpr double kDepartureCos = 1e-6;
 
 // `item`: the unit's index in the top BVH (its ball), or kNone.
 bool unit_blocks(TopContext& ctx, std::uint32_t item, std::uint32_t node) {
@@ -44,6 +75,7 @@ int blocks_by_chords(TopContext& ctx, std::uint32_t item, std::uint32_t node) {
 void top_occluded_callback(const RTCOccludedFunctionNArguments* args) {
     if (!args->valid[0]) return;
     auto* ctx = reinterpret_cast<TopContext*>(args->context);
+    if (args->primID == ctx->skip) return;
     const std::vector<SphereMinus>& sm = ctx->accel->sphere_minus;
     int by_chords = -1;
     if (args->primID < sm.size() && sm[args->primID].r_in >= 0) {
@@ -56,15 +88,39 @@ void top_occluded_callback(const RTCOccludedFunctionNArguments* args) {
     }
 }
 
-bool CsgTracer::occluded(const TraceRay& ray, TraceScratch& scratch) const {
+void CsgTracer::Impl::find_convex_units() {
+    convex_unit.assign(scene.leaves.size(), csg::kNone);
+    // A leaf referenced by more than one node holds none: its hit does not
+    // say which unit it came from.
+    std::vector<std::uint32_t> refs(scene.leaves.size(), 0);
+    for (const csg::Node& n : scene.nodes)
+        if (n.op == csg::Op::Leaf) ++refs[n.first];
+    const std::uint32_t nitems = std::uint32_t(top.items.size());
+    for (std::uint32_t i = 0; i < nitems + top.always.size(); ++i)
+        mark_holders(scene, i < nitems ? top.items[i] : top.always[i - nitems], i, convex_unit);
+    for (std::size_t leaf = 0; leaf < refs.size(); ++leaf)
+        if (refs[leaf] != 1) convex_unit[leaf] = csg::kNone;
+}
+
+Departure CsgTracer::departure(const TraceHit& hit, const glm::dvec3& outward) const {
+    if (hit.surface.flip) return {};
+    return {impl_->convex_unit[hit.surface.leaf], outward};
+}
+
+bool CsgTracer::occluded(const TraceRay& ray, TraceScratch& scratch, const Departure* from) const {
     RayState st;
     if (!make_state(st, impl_.get(), ray, scratch)) return false;
     TopContext ctx(st, ray);
-    for (std::uint32_t node : impl_->top.always)
-        if (unit_blocks(ctx, csg::kNone, node)) return true;
+    // The unit the ray departs from, when it leaves steeply enough: it lies
+    // behind the convex leaf's tangent plane, the ray starts in front of it
+    // and moves away (t >= tnear >= 0), so that unit has no span here.
+    if (from && ray.tnear >= 0 && glm::dot(from->outward, ray.d) > kDepartureCos * st.len) ctx.skip = from->unit;
+    const std::uint32_t nitems = std::uint32_t(impl_->top.items.size());
+    for (std::uint32_t i = 0; i < impl_->top.always.size(); ++i)
+        if (nitems + i != ctx.skip && unit_blocks(ctx, csg::kNone, impl_->top.always[i])) return true;
     if (!impl_->top.bvh) {
-        for (std::uint32_t i = 0; i < impl_->top.items.size(); ++i)
-            if (unit_blocks(ctx, i, impl_->top.items[i])) return true;
+        for (std::uint32_t i = 0; i < nitems; ++i)
+            if (i != ctx.skip && unit_blocks(ctx, i, impl_->top.items[i])) return true;
         return false;
     }
     RTCRay r = make_rayhit(st, ray.tnear, ray.tfar).ray;
