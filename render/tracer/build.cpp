@@ -157,6 +157,7 @@ void CsgTracer::Impl::build_ball_bvh() {
                                 kBallFloatPad * (frame_radius + std::abs(c.x) + std::abs(c.y) + std::abs(c.z)));
     }
     rtcSetGeometryIntersectFilterFunction(geom, top_ball_filter);
+    rtcSetGeometryOccludedFilterFunction(geom, top_ball_occluded_filter);
     rtcCommitGeometry(geom);
     ball_bvh = rtcNewScene(device);
     if (!ball_bvh) {

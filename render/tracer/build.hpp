@@ -88,6 +88,7 @@ void top_intersect_callback(const RTCIntersectFunctionNArguments* args);  // fir
 void top_occluded_callback(const RTCOccludedFunctionNArguments* args);    // shadow_rays.cpp
 void collect_callback(const RTCIntersectFunctionNArguments* args);        // node_spans.cpp
 void top_ball_filter(const RTCFilterFunctionNArguments* args);            // first_hit.cpp
+void top_ball_occluded_filter(const RTCFilterFunctionNArguments* args);   // shadow_rays.cpp
 
 // Whether a box is bounded (half-spaces and what contains them are not):
 // solids lie within csg::kRenderableRange, so anything beyond is infinite.

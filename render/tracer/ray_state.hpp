@@ -46,7 +46,7 @@ struct RayState {
     double eps_ray;   // world part of eps from the origin's own magnitude
     double t_pad;     // t slack of float Embree windows
     double t_shift;   // the float Embree ray starts at o + t_shift·d (its t is t - t_shift)
-    double enter;     // where the line enters `reach` (-inf: reach is everything)
+    double enter, leave;  // where the line enters and leaves `reach` (±inf: reach is everything)
     TraceScratch* scratch;
 
     // Sets the degenerate rule for a query of `unit` (tolerances.cpp).
@@ -126,6 +126,7 @@ inline void start_float_ray(RayState& st, double t_shift) {
     st.o = ray.o;
     st.d = ray.d;
     st.enter = enter;
+    st.leave = leave;
     for (int i = 0; i < 3; ++i) st.dir[i] = float(ray.d[i]);
     st.len = glm::length(ray.d);
     st.inv_len = 1 / st.len;
@@ -137,23 +138,30 @@ inline void start_float_ray(RayState& st, double t_shift) {
     return true;
 }
 
-// Whether a first-hit query may go through the ball BVH (build.cpp,
-// build_ball_bvh): Embree reports a sphere only where its chord's front or
-// back end lies on the float ray, so a ray that starts inside a ball and
-// ends inside it would never see that unit. True, with the float ray
-// restarted a little before the line enters `reach` (1e-3 of the scene's
-// extent: every ball lies in `reach`, and this is far beyond the spheres'
-// pad), when the window starts that early too (camera rays from outside)
-// and the slack the double ball tests add for this ray fits in the pad.
-inline bool start_before_balls(RayState& st, double tnear) {
+// The ball BVH (build.cpp, build_ball_bvh) holds each unit's ball grown by
+// a pad; true when the slack the double ball tests add for this ray fits in
+// it. ball_margin: 1e-3 of the scene's extent in t, far beyond that pad
+// (every ball lies in `reach`, grown by the pad).
+inline bool ball_slack_fits(const RayState& st) {
     const CsgTracer::Impl& impl = *st.impl;
-    if (!impl.ball_bvh || !std::isfinite(st.enter)) return false;
-    const double start = st.enter - 1e-3 * impl.frame_radius * st.inv_len;
-    if (!(tnear <= start)) return false;
+    if (!impl.ball_bvh || !std::isfinite(st.enter) || !std::isfinite(st.leave)) return false;
     const glm::dvec3 w = st.o - impl.frame;
     const double w1 = std::abs(w.x) + std::abs(w.y) + std::abs(w.z) + 2 * impl.frame_radius;
     const double slack = 4 * st.eps_ray + impl.ball_slack * w1 + 1e-13 * w1 * w1 / impl.ball_r_min;
-    if (!(slack < impl.kBallFloatPad * impl.frame_radius)) return false;
+    return slack < impl.kBallFloatPad * impl.frame_radius;
+}
+inline double ball_margin(const RayState& st) { return 1e-3 * st.impl->frame_radius * st.inv_len; }
+
+// Whether a first-hit query may go through the ball BVH: Embree reports a
+// sphere only where its chord's front or back end lies on the float ray, so
+// a ray that starts inside a ball and ends inside it would never see that
+// unit, and the filter, which accepts every ball, needs the front ends.
+// True, with the float ray restarted a little before the line enters
+// `reach`, when the window starts that early too (camera rays from outside).
+inline bool start_before_balls(RayState& st, double tnear) {
+    if (!ball_slack_fits(st)) return false;
+    const double start = st.enter - ball_margin(st);
+    if (!(tnear <= start)) return false;
     start_float_ray(st, start);
     return true;
 }
@@ -221,6 +229,10 @@ struct TopContext {
     int ncandidates = 0;
     double ub = kInf;
     float tfar = 0;           // intersect through the ball BVH: the float ray's tfar so far
+    // occluded through the ball BVH: the last units found not blocking.
+    static constexpr std::uint32_t kRejected = 8;
+    std::uint32_t rejected[kRejected] = {~0u, ~0u, ~0u, ~0u, ~0u, ~0u, ~0u, ~0u};
+    std::uint32_t nrejected = 0;
 
     TopContext(RayState& st, const TraceRay& ray)
         : state(&st), accel(&st.impl->top), tnear(ray.tnear), best(ray.tfar), best_unit(0), found(false) {

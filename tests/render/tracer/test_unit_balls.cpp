@@ -148,6 +148,9 @@ int check_crowd(std::uint64_t seed, const glm::dvec3& at, double h, Crowd (*make
         const double tfar = glm::length(target - o) + g.uni(-0.3, 0.3);
         if (tfar > 0 && std::abs(t - tfar) > (use_float ? 100 * h : 1e-6))
             CHECK(tracer.occluded(render::TraceRay{o, d, 0, tfar}, scratch) == (t < tfar));
+        // And towards a light beyond the crowd (the ball BVH's shadow path,
+        // also from inside the balls): blocked exactly when there is an entry.
+        CHECK(tracer.occluded(render::TraceRay{o, d, 0, 100}, scratch) == std::isfinite(t));
     }
     return hits;
 }
