@@ -229,9 +229,10 @@ struct TopContext {
     int ncandidates = 0;
     double ub = kInf;
     float tfar = 0;           // intersect through the ball BVH: the float ray's tfar so far
-    // occluded through the ball BVH: the last units found not blocking.
+    // occluded through the ball BVH: the last units found not blocking (the
+    // first min(nrejected, kRejected) are set; no set-up for other queries).
     static constexpr std::uint32_t kRejected = 8;
-    std::uint32_t rejected[kRejected] = {~0u, ~0u, ~0u, ~0u, ~0u, ~0u, ~0u, ~0u};
+    std::uint32_t rejected[kRejected];
     std::uint32_t nrejected = 0;
 
     TopContext(RayState& st, const TraceRay& ray)

@@ -72,7 +72,7 @@ void top_ball_occluded_filter(const RTCFilterFunctionNArguments* args) {
     if (!args->valid[0]) return;
     auto* ctx = reinterpret_cast<TopContext*>(const_cast<RTCIntersectContext*>(args->context));
     const std::uint32_t item = RTCHitN_primID(args->hit, args->N, 0);
-    for (std::uint32_t k = 0; k < TopContext::kRejected; ++k)
+    for (std::uint32_t k = 0; k < std::min(ctx->nrejected, TopContext::kRejected); ++k)
         if (ctx->rejected[k] == item) {
             args->valid[0] = 0;
             return;
