@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -56,6 +57,7 @@ std::vector<std::uint32_t> root_units(const csg::Scene& scene) {
 
 CsgTracer::Impl::~Impl() {
     if (top.bvh) rtcReleaseScene(top.bvh);
+    if (ball_bvh) rtcReleaseScene(ball_bvh);
     for (auto& a : node_accels)
         if (a->bvh) rtcReleaseScene(a->bvh);
     for (RTCScene m : mesh_bvhs)
@@ -108,6 +110,67 @@ void CsgTracer::Impl::build_accel(Accel& accel, const std::vector<std::uint32_t>
     rtcCommitScene(accel.bvh);
     check_embree(device, "the scene");
     std::vector<RTCBounds>().swap(accel.boxes);
+}
+
+// The units' balls as Embree's native spheres (render/README.md, "Ball
+// BVH"): Embree tests them several to a BVH leaf with SIMD, so a ray that
+// crosses a unit's box but misses its ball costs no callback. Built only
+// when every bounded unit has a ball (otherwise the box BVH alone), on the
+// double path (the float path's ball slack is far larger than this pad).
+// Each sphere is the ball grown by kBallFloatPad of the scene's extent and
+// of its centre's distance from the frame: beyond the float round-off of
+// Embree's sphere test, of the rounded centre and of the per-ray slack the
+// double tests add (which the query checks per ray, ball_path_fits).
+void CsgTracer::Impl::build_ball_bvh() {
+    if (use_float || !top.bvh || top.balls.size() != top.items.size()) return;
+    for (const Ball& b : top.balls)
+        if (b.r < 0) return;
+    // Few boxes along a ray (cells_100: 2 on average) gain too little to pay
+    // for the sphere tests (measured 1.1-1.2x slower there, 0.66-0.8x at
+    // 20-60 crossings: docs/performance.md, "Ball BVH"). By Cauchy's formula
+    // the mean number of boxes a random line through `reach` crosses is the
+    // sum of their surface areas over reach's.
+    const auto area = [](const csg::Aabb& b) {
+        const glm::dvec3 e = b.hi - b.lo;
+        return e.x * e.y + e.y * e.z + e.z * e.x;
+    };
+    double crossings = 0;
+    for (std::uint32_t unit : top.items) crossings += area(scene.nodes[unit].bounds);
+    if (!(crossings >= kBallBvhCrossings * area(reach))) return;
+    ball_r_min = std::numeric_limits<double>::infinity();
+    RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_SPHERE_POINT);
+    if (!geom) embree_failed(device, "the scene");
+    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4,
+                                                          4 * sizeof(float), top.items.size()));
+    if (!v) {
+        rtcReleaseGeometry(geom);
+        embree_failed(device, "the scene");
+    }
+    for (std::size_t i = 0; i < top.items.size(); ++i) {
+        const glm::dvec3 c = top.balls[i].c - frame;
+        const double r = top.balls[i].r;
+        ball_r_min = std::min(ball_r_min, r);
+        v[4 * i + 0] = float(c.x);
+        v[4 * i + 1] = float(c.y);
+        v[4 * i + 2] = float(c.z);
+        v[4 * i + 3] = round_up(r * (1 + kBallFloatPad) +
+                                kBallFloatPad * (frame_radius + std::abs(c.x) + std::abs(c.y) + std::abs(c.z)));
+    }
+    rtcSetGeometryIntersectFilterFunction(geom, top_ball_filter);
+    rtcSetGeometryOccludedFilterFunction(geom, top_ball_occluded_filter);
+    rtcCommitGeometry(geom);
+    ball_bvh = rtcNewScene(device);
+    if (!ball_bvh) {
+        rtcReleaseGeometry(geom);
+        embree_failed(device, "the scene");
+    }
+    const bool huge = top.items.size() >= kHugeAccel;
+    rtcSetSceneFlags(ball_bvh, huge ? RTCSceneFlags(RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_COMPACT) : RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneBuildQuality(ball_bvh, huge ? RTC_BUILD_QUALITY_LOW : RTC_BUILD_QUALITY_HIGH);
+    rtcAttachGeometry(ball_bvh, geom);
+    rtcReleaseGeometry(geom);
+    rtcCommitScene(ball_bvh);
+    check_embree(device, "the scene");
 }
 
 void check_embree(RTCDevice device, const char* what) {
@@ -173,6 +236,7 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
         const double pad = 4e-6 * impl_->frame_radius + 4 * eps;
         if (!reach.empty()) reach = {reach.lo - glm::dvec3(pad), reach.hi + glm::dvec3(pad)};
         impl_->reach = reach;
+        impl_->build_ball_bvh();
     }
 }
 

@@ -59,6 +59,13 @@ struct CsgTracer::Impl {
     // origin keeps float precision. frame_radius: the largest |corner -
     // frame| of a bounded unit (float slack of boxes and t windows).
     glm::dvec3 frame{0.0};
+    // The top units' balls as Embree's native spheres, for rays whose window
+    // starts outside `reach` (first_hit.cpp; render/README.md, "Ball BVH");
+    // null unless every bounded unit has a ball. ball_r_min: the smallest.
+    RTCScene ball_bvh = nullptr;
+    double ball_r_min = 0;
+    static constexpr double kBallFloatPad = 4e-6;
+    static constexpr double kBallBvhCrossings = 8;  // built from this many boxes per line on
     double frame_radius = 1;
     std::vector<std::int32_t> accel_of_node;  // -1: children evaluated directly
     std::vector<std::unique_ptr<Accel>> node_accels;
@@ -79,12 +86,15 @@ struct CsgTracer::Impl {
     void build_meshes();  // mesh_spans.cpp
     void build_prism_grids();  // prism_spans.cpp
     void find_convex_units();  // shadow_rays.cpp
+    void build_ball_bvh();     // build.cpp, after the balls and `reach`
 };
 
 // Embree callbacks the build installs, each defined beside the query it serves.
 void top_intersect_callback(const RTCIntersectFunctionNArguments* args);  // first_hit.cpp
 void top_occluded_callback(const RTCOccludedFunctionNArguments* args);    // shadow_rays.cpp
 void collect_callback(const RTCIntersectFunctionNArguments* args);        // node_spans.cpp
+void top_ball_filter(const RTCFilterFunctionNArguments* args);            // first_hit.cpp
+void top_ball_occluded_filter(const RTCFilterFunctionNArguments* args);   // shadow_rays.cpp
 
 // Whether a box is bounded (half-spaces and what contains them are not):
 // solids lie within csg::kRenderableRange, so anything beyond is infinite.

@@ -75,23 +75,40 @@ void evaluate_queued(TopContext& ctx) {
     }
 }
 
+// One unit the traversal reached: queued by its chords or evaluated now;
+// `tfar` (the float ray's) shrinks to what it proves. True if its entry is
+// the new best.
+bool visit_unit(TopContext& ctx, std::uint32_t item, float& tfar) {
+    const std::vector<SphereMinus>& sm = ctx.accel->sphere_minus;
+    const std::uint32_t node = ctx.accel->items[item];
+    if (item < sm.size() && sm[item].r_in >= 0 && queue_by_chords(ctx, item, node, tfar)) return false;
+    if (!try_unit_entry(ctx, item, node)) return false;
+    tfar = std::min(tfar, embree_t(*ctx.state, ctx.best));
+    return true;
+}
+
 }  // namespace
 
 void top_intersect_callback(const RTCIntersectFunctionNArguments* args) {
     if (!args->valid[0]) return;
     auto* ctx = reinterpret_cast<TopContext*>(args->context);
     if (ctx->gather) return gather_unit(*ctx, ctx->accel->items[args->primID]);
-    const std::vector<SphereMinus>& sm = ctx->accel->sphere_minus;
-    if (args->primID < sm.size() && sm[args->primID].r_in >= 0 &&
-        queue_by_chords(*ctx, args->primID, ctx->accel->items[args->primID],
-                        reinterpret_cast<RTCRayHit*>(args->rayhit)->ray.tfar))
-        return;
-    if (try_unit_entry(*ctx, args->primID, ctx->accel->items[args->primID])) {
-        RTCRayHit* rh = reinterpret_cast<RTCRayHit*>(args->rayhit);
-        rh->ray.tfar = std::min(rh->ray.tfar, embree_t(*ctx->state, ctx->best));
+    RTCRayHit* rh = reinterpret_cast<RTCRayHit*>(args->rayhit);
+    if (visit_unit(*ctx, args->primID, rh->ray.tfar)) {
         rh->hit.geomID = args->geomID;
         rh->hit.primID = args->primID;
     }
+}
+
+// The ball BVH's filter: Embree met the unit's ball. The hit is always
+// accepted, with tfar set to what the unit proves (Embree keeps an accepted
+// filter's tfar and restores the old one on a rejection, which would lose a
+// shrink), so the sphere's own t never culls anything.
+void top_ball_filter(const RTCFilterFunctionNArguments* args) {
+    if (!args->valid[0]) return;
+    auto* ctx = reinterpret_cast<TopContext*>(const_cast<RTCIntersectContext*>(args->context));
+    visit_unit(*ctx, RTCHitN_primID(args->hit, args->N, 0), ctx->tfar);
+    RTCRayN_tfar(args->ray, args->N, 0) = ctx->tfar;
 }
 
 bool CsgTracer::intersect(const TraceRay& ray, TraceHit& hit, TraceScratch& scratch) const {
@@ -107,8 +124,12 @@ bool CsgTracer::intersect(const TraceRay& ray, TraceHit& hit, TraceScratch& scra
         for (std::size_t i = 0; i < impl_->top.items.size(); ++i)
             try_unit_entry(ctx, std::uint32_t(i), impl_->top.items[i]);
     } else {
+        // Camera rays from outside go through the units' balls as Embree
+        // spheres, the rest through their boxes (the same answer).
+        const bool balls = start_before_balls(st, ray.tnear);
         RTCRayHit rh = make_rayhit(st, ray.tnear, ctx.best);
-        rtcIntersect1(impl_->top.bvh, &ctx.rtc, &rh);
+        ctx.tfar = rh.ray.tfar;
+        rtcIntersect1(balls ? impl_->ball_bvh : impl_->top.bvh, &ctx.rtc, &rh);
         if (ctx.ncandidates > 0) evaluate_queued(ctx);
     }
     if (!ctx.found) return false;

@@ -46,6 +46,7 @@ struct RayState {
     double eps_ray;   // world part of eps from the origin's own magnitude
     double t_pad;     // t slack of float Embree windows
     double t_shift;   // the float Embree ray starts at o + t_shift·d (its t is t - t_shift)
+    double enter, leave;  // where the line enters and leaves `reach` (±inf: reach is everything)
     TraceScratch* scratch;
 
     // Sets the degenerate rule for a query of `unit` (tolerances.cpp).
@@ -101,6 +102,15 @@ inline bool slab_hit(const csg::Aabb& box, const glm::dvec3& o, const glm::dvec3
     return slab_clip(box, o, invd, t0, t1);
 }
 
+// The float Embree ray starts at o + t_shift·d, relative to the frame.
+inline void start_float_ray(RayState& st, double t_shift) {
+    st.t_shift = t_shift;
+    const glm::dvec3 start = st.o + t_shift * st.d - st.impl->frame;
+    for (int i = 0; i < 3; ++i) st.org[i] = float(start[i]);
+    // (|x|+|y|+|z| >= the length: no square root for a slack.)
+    st.t_pad = 1e-5 * (st.impl->frame_radius + std::abs(start.x) + std::abs(start.y) + std::abs(start.z)) * st.inv_len;
+}
+
 // Sets up `st` for a query along `ray`. Returns false, with the rest of the
 // set-up skipped, when the ray's line misses `reach` (the box around every
 // bounded unit): a slab test on the whole line (no t-window, so no tolerance
@@ -115,20 +125,44 @@ inline bool slab_hit(const csg::Aabb& box, const glm::dvec3& o, const glm::dvec3
     st.impl = impl;
     st.o = ray.o;
     st.d = ray.d;
-    st.t_shift = std::isfinite(enter) ? std::max(0.0, enter) : 0.0;
-    const glm::dvec3 start = ray.o + st.t_shift * ray.d - impl->frame;
-    for (int i = 0; i < 3; ++i) {
-        st.org[i] = float(start[i]);
-        st.dir[i] = float(ray.d[i]);
-    }
+    st.enter = enter;
+    st.leave = leave;
+    for (int i = 0; i < 3; ++i) st.dir[i] = float(ray.d[i]);
     st.len = glm::length(ray.d);
     st.inv_len = 1 / st.len;
+    start_float_ray(st, std::isfinite(enter) ? std::max(0.0, enter) : 0.0);
     // Round-off of t also grows with the origin's own magnitude (far cameras).
     st.eps_ray = impl->eps_per_distance * glm::length(ray.o);
     st.eps = st.eps_ray * st.inv_len;  // until enter_unit
-    // (|x|+|y|+|z| >= the length: no square root for a slack.)
-    st.t_pad = 1e-5 * (impl->frame_radius + std::abs(start.x) + std::abs(start.y) + std::abs(start.z)) * st.inv_len;
     st.scratch = &scratch;
+    return true;
+}
+
+// The ball BVH (build.cpp, build_ball_bvh) holds each unit's ball grown by
+// a pad; true when the slack the double ball tests add for this ray fits in
+// it. ball_margin: 1e-3 of the scene's extent in t, far beyond that pad
+// (every ball lies in `reach`, grown by the pad).
+inline bool ball_slack_fits(const RayState& st) {
+    const CsgTracer::Impl& impl = *st.impl;
+    if (!impl.ball_bvh || !std::isfinite(st.enter) || !std::isfinite(st.leave)) return false;
+    const glm::dvec3 w = st.o - impl.frame;
+    const double w1 = std::abs(w.x) + std::abs(w.y) + std::abs(w.z) + 2 * impl.frame_radius;
+    const double slack = 4 * st.eps_ray + impl.ball_slack * w1 + 1e-13 * w1 * w1 / impl.ball_r_min;
+    return slack < impl.kBallFloatPad * impl.frame_radius;
+}
+inline double ball_margin(const RayState& st) { return 1e-3 * st.impl->frame_radius * st.inv_len; }
+
+// Whether a first-hit query may go through the ball BVH: Embree reports a
+// sphere only where its chord's front or back end lies on the float ray, so
+// a ray that starts inside a ball and ends inside it would never see that
+// unit, and the filter, which accepts every ball, needs the front ends.
+// True, with the float ray restarted a little before the line enters
+// `reach`, when the window starts that early too (camera rays from outside).
+inline bool start_before_balls(RayState& st, double tnear) {
+    if (!ball_slack_fits(st)) return false;
+    const double start = st.enter - ball_margin(st);
+    if (!(tnear <= start)) return false;
+    start_float_ray(st, start);
     return true;
 }
 
@@ -195,6 +229,12 @@ struct TopContext {
     Candidate candidates[kMaxCandidates];
     int ncandidates = 0;
     double ub = kInf;
+    float tfar = 0;           // intersect through the ball BVH: the float ray's tfar so far
+    // occluded through the ball BVH: the last units found not blocking (the
+    // first min(nrejected, kRejected) are set; no set-up for other queries).
+    static constexpr std::uint32_t kRejected = 8;
+    std::uint32_t rejected[kRejected];
+    std::uint32_t nrejected = 0;
 
     TopContext(RayState& st, const TraceRay& ray)
         : state(&st), accel(&st.impl->top), tnear(ray.tnear), best(ray.tfar), best_unit(0), found(false) {

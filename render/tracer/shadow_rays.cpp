@@ -70,22 +70,54 @@ int blocks_by_chords(TopContext& ctx, std::uint32_t item, std::uint32_t node) {
     return chords_inside(u, ctx.tnear, ctx.best) < kInf ? 1 : -1;
 }
 
+// Whether unit `item` of the top BVH blocks the shadow ray.
+bool item_blocks(TopContext& ctx, std::uint32_t item) {
+    const std::vector<SphereMinus>& sm = ctx.accel->sphere_minus;
+    const std::uint32_t node = ctx.accel->items[item];
+    int by_chords = -1;
+    if (item < sm.size() && sm[item].r_in >= 0) {
+        by_chords = blocks_by_chords(ctx, item, node);
+        if (by_chords == 0) return false;
+    }
+    return by_chords == 1 || unit_blocks(ctx, item, node);
+}
+
 }  // namespace
 
 void top_occluded_callback(const RTCOccludedFunctionNArguments* args) {
     if (!args->valid[0]) return;
     auto* ctx = reinterpret_cast<TopContext*>(args->context);
-    if (args->primID == ctx->skip) return;
-    const std::vector<SphereMinus>& sm = ctx->accel->sphere_minus;
-    int by_chords = -1;
-    if (args->primID < sm.size() && sm[args->primID].r_in >= 0) {
-        by_chords = blocks_by_chords(*ctx, args->primID, ctx->accel->items[args->primID]);
-        if (by_chords == 0) return;
-    }
-    if (by_chords == 1 || unit_blocks(*ctx, args->primID, ctx->accel->items[args->primID])) {
+    if (args->primID != ctx->skip && item_blocks(*ctx, args->primID)) {
         ctx->found = true;
         reinterpret_cast<RTCRay*>(args->ray)->tfar = -std::numeric_limits<float>::infinity();
     }
+}
+
+// The ball BVH's shadow filter. The light lies beyond every ball
+// (occluded() checks), so each ball the segment meets is reported by its
+// front end or, when the ray starts inside it, its back end; a ball wholly
+// ahead is reported again by its back end after its front end is rejected:
+// the last few rejected units are remembered (Embree reports a leaf's back
+// ends right after its front ends) and dropped at once.
+void top_ball_occluded_filter(const RTCFilterFunctionNArguments* args) {
+    if (!args->valid[0]) return;
+    auto* ctx = reinterpret_cast<TopContext*>(const_cast<RTCIntersectContext*>(args->context));
+    const std::uint32_t item = RTCHitN_primID(args->hit, args->N, 0);
+    if (item == ctx->skip) {
+        args->valid[0] = 0;
+        return;
+    }
+    for (std::uint32_t k = 0; k < std::min(ctx->nrejected, TopContext::kRejected); ++k)
+        if (ctx->rejected[k] == item) {
+            args->valid[0] = 0;
+            return;
+        }
+    if (!item_blocks(*ctx, item)) {
+        ctx->rejected[ctx->nrejected++ % TopContext::kRejected] = item;
+        args->valid[0] = 0;
+        return;
+    }
+    ctx->found = true;
 }
 
 void CsgTracer::Impl::find_convex_units() {
@@ -123,8 +155,12 @@ bool CsgTracer::occluded(const TraceRay& ray, TraceScratch& scratch, const Depar
             if (i != ctx.skip && unit_blocks(ctx, i, impl_->top.items[i])) return true;
         return false;
     }
+    // Through the units' balls when they are Embree spheres and the segment
+    // ends outside every ball (a light beyond the crowd), else through their
+    // boxes.
+    const bool balls = ball_slack_fits(st) && st.leave + ball_margin(st) <= ray.tfar;
     RTCRay r = make_rayhit(st, ray.tnear, ray.tfar).ray;
-    rtcOccluded1(impl_->top.bvh, &ctx.rtc, &r);
+    rtcOccluded1(balls ? impl_->ball_bvh : impl_->top.bvh, &ctx.rtc, &r);
     return ctx.found;
 }
 
