@@ -129,7 +129,7 @@ const char* usage_text() {
            "         (OpenSCAD's rules, the default for .scad; docs/openscad.md)\n"
            "warnings: --werror makes every warning an error (exit 1)\n"
            "limits (docs/spec.md §8): --max-call-depth N --max-nesting N --max-iterations N\n"
-           "                  --max-list N --max-primitives N --max-steps N\n"
+           "                  --max-list N --max-primitives N --max-steps N --max-echo-bytes N\n"
            "exit status: 0 ok, 1 scene errors, 2 bad command line or unreadable file,\n"
            "             3 render failed (e.g. output not writable)\n";
 }
@@ -243,6 +243,7 @@ Options parse_options(const std::vector<std::string>& args) {
         else if (a == "--max-nesting") o.eval.limits.nesting = parse_int<std::uint64_t>(a, value(), 1, 100'000);
         else if (a == "--max-iterations") o.eval.limits.loop_iterations = parse_int<std::uint64_t>(a, value(), 1, big * 16);
         else if (a == "--max-list") o.eval.limits.list_elements = parse_int<std::uint64_t>(a, value(), 1, big);
+        else if (a == "--max-echo-bytes") o.eval.limits.echo_bytes = parse_int<std::uint64_t>(a, value(), 1, big * big);
         else if (a == "--max-primitives") o.eval.limits.primitives = parse_int<std::uint64_t>(a, value(), 1, big);
         else if (a == "--max-steps") o.eval.limits.steps = parse_int<std::uint64_t>(a, value(), 1, big * big);
         else if (a == "--help" || a == "-h") { o.command = Command::Help; return o; }

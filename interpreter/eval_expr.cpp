@@ -15,8 +15,8 @@ namespace kerf::eval {
 struct Evaluator::DepthGuard {
     Evaluator& ev;
     DepthGuard(Evaluator& e, const SourceLoc& loc) : ev(e) {
-        if (ev.depth_ + 1 > ev.opt_.limits.call_depth)
-            throw SourceError(loc, "call depth limit " + std::to_string(ev.opt_.limits.call_depth) + " exceeded");
+        if (ev.depth_ + 1 > ev.call_depth_)
+            throw SourceError(loc, "call depth limit " + std::to_string(ev.call_depth_) + " exceeded");
         ++ev.depth_;
         ev.count_step(loc);
     }
@@ -134,7 +134,7 @@ void Evaluator::bind_sequential(const std::vector<ast::Binding>& bindings, Scope
     }
 }
 
-void Evaluator::do_echo(const std::vector<ast::Binding>& args, Scope& s) {
+void Evaluator::do_echo(const std::vector<ast::Binding>& args, Scope& s, const SourceLoc& loc) {
     std::string line = "ECHO: ";
     bool first = true;
     for (const ast::Binding& a : args) {
@@ -151,6 +151,9 @@ void Evaluator::do_echo(const std::vector<ast::Binding>& args, Scope& s) {
                                          " characters");
         line += *text;
     }
+    echo_bytes_ += line.size() + 1;
+    if (echo_bytes_ > opt_.limits.echo_bytes)
+        throw SourceError(loc, "echo output limit " + std::to_string(opt_.limits.echo_bytes) + " bytes exceeded");
     if (opt_.echo) opt_.echo(line);
     else std::cerr << line << '\n';
 }
@@ -252,7 +255,7 @@ Value Evaluator::run_body(const ast::Stmt& def, Scope& def_scope, Scope& callee)
                 continue;
             case ast::ExprKind::Echo:
             case ast::ExprKind::Assert:
-                if (body->kind == ast::ExprKind::Echo) do_echo(body->args, *s);
+                if (body->kind == ast::ExprKind::Echo) do_echo(body->args, *s, body->loc);
                 else do_assert(body->args, *s, body->loc);
                 body = body->items.empty() ? nullptr : body->items[0].get();
                 continue;
@@ -562,7 +565,7 @@ Value Evaluator::eval(const ast::Expr& e, Scope& s) {
             return e.items.empty() ? Value() : eval(*e.items[0], ls);
         }
         case K::Echo:
-            do_echo(e.args, s);
+            do_echo(e.args, s, e.loc);
             return e.items.empty() || !e.items[0] ? Value() : eval(*e.items[0], s);
         case K::Assert:
             do_assert(e.args, s, e.loc);

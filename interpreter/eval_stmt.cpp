@@ -347,8 +347,8 @@ void Evaluator::bind_params(const std::vector<ast::Binding>& params, const std::
 }
 
 void Evaluator::call_module(const ast::Stmt& def, Scope& def_scope, const ast::Stmt& call, Scope& s) {
-    if (depth_ + 1 > opt_.limits.call_depth)
-        throw SourceError(call.loc, "call depth limit " + std::to_string(opt_.limits.call_depth) + " exceeded");
+    if (depth_ + 1 > call_depth_)
+        throw SourceError(call.loc, "call depth limit " + std::to_string(call_depth_) + " exceeded");
     ++depth_;
     struct Dec {
         std::uint64_t& d;
@@ -523,7 +523,7 @@ void Evaluator::instantiate(const ast::Stmt& st, Scope& s, bool top_level) {
     }
     if (name == "echo" || name == "assert") {
         count_step(st.loc);
-        if (name == "echo") do_echo(st.args, s);
+        if (name == "echo") do_echo(st.args, s, st.loc);
         else do_assert(st.args, s, st.loc);
         eval_block(st.body, s, false);
         out_.group(mark, st.loc);

@@ -134,7 +134,7 @@ private:
     void expand_for(const ast::Expr& e, std::size_t k, Scope& s, ValueList& out);
     void expand_for_c(const ast::Expr& e, Scope& s, ValueList& out);
     void push_element(ValueList& out, Value v, const SourceLoc& loc);
-    void do_echo(const std::vector<ast::Binding>& args, Scope& s);
+    void do_echo(const std::vector<ast::Binding>& args, Scope& s, const SourceLoc& loc);
     Value call_builtin(const ast::Expr& e, Scope& s);
     Value call_dxf_function(const ast::Expr& e, Scope& s);  // dxf_functions.cpp: dxf_dim, dxf_cross
     // function_values.cpp: function literals, their captures and calls.
@@ -218,12 +218,13 @@ private:
 
     const EvalOptions& opt_;
     const bool lenient_;     // the OpenSCAD dialect
+    const std::uint64_t call_depth_;  // call_depth_limit(): the deepest call nesting allowed
     std::string main_path_;  // the main file (OpenSCAD's overwrite warnings name others)
     GraphBuilder out_;
     Scope root_;  // PI and other constants; parent of every file's scope
     std::vector<DynVar> dyn_;
     std::vector<std::string_view> module_stack_;  // user module calls, outermost first (parent_module)
-    std::uint64_t depth_ = 0, steps_ = 0, iterations_ = 0;
+    std::uint64_t depth_ = 0, steps_ = 0, iterations_ = 0, echo_bytes_ = 0;
 
     std::unordered_map<const void*, BlockInfo> blocks_;
     // Per function literal: the names its body reads or calls (what a closure copies).

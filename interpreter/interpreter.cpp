@@ -19,7 +19,8 @@ namespace kerf {
 namespace eval {
 
 Evaluator::Evaluator(const EvalOptions& options)
-    : opt_(options), lenient_(options.dialect == Dialect::Lenient), files_(options) {
+    : opt_(options), lenient_(options.dialect == Dialect::Lenient),
+      call_depth_(call_depth_limit(options.limits, options.dialect == Dialect::Lenient)), files_(options) {
     static const SourceLoc builtin_loc{};
     root_.add(VarSlot{"PI", Value(M_PI), &builtin_loc, true});
     root_.file = true;

@@ -15,14 +15,25 @@ namespace kerf {
 // docs/spec.md §8 limits; every one is overridable from the command line and ends in
 // a located error when exceeded.
 struct EvalLimits {
-    std::uint64_t call_depth = 1000;
+    // 0: the dialect's (call_depth_limit): kerf's 1,000, or 10,000 in
+    // OpenSCAD's, whose functions recurse past 5,000 calls (2021.01 measured).
+    std::uint64_t call_depth = 0;
     std::uint64_t nesting = 256;             // source nesting (passed to the parser)
     std::uint64_t loop_iterations = 10'000'000;  // total over the run
     std::uint64_t list_elements = 10'000'000;    // per list
     std::uint64_t primitives = 1'000'000;
     std::uint64_t steps = 100'000'000;       // calls + instantiations + iterations
     std::uint64_t tail_calls = 1'000'000;    // a function calling itself in tail position, per chain (OpenSCAD's)
+    // Bytes of echo output over the run: a recursion that echoes a value
+    // growing with each call (OpenSCAD's issue4172 test) prints the square
+    // of its depth, 144 MB at 1,000 calls and 14 GB at 10,000.
+    std::uint64_t echo_bytes = 50'000'000;
 };
+
+// The call depth a run allows: the limit given, or the dialect's default.
+inline std::uint64_t call_depth_limit(const EvalLimits& limits, bool lenient) {
+    return limits.call_depth ? limits.call_depth : lenient ? 10'000 : 1'000;
+}
 
 // Which rules a run follows (docs/openscad.md): kerf's strict rules, or
 // OpenSCAD's lenient ones (a name bound twice takes the last value, an

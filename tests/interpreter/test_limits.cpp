@@ -63,6 +63,21 @@ TEST_CASE("a raised call depth limit still cannot overflow the stack", "[limits]
     CHECK(err.find("error: evaluation nested too deeply (stack exhausted; lower the call depth limit)") != std::string::npos);
 }
 
+TEST_CASE("echo output is bounded over the run", "[limits]") {
+    // The shape of OpenSCAD's test issues/issue4172-echo-vector-stack-exhaust.scad:
+    // a recursion echoing a value that grows with each call prints the square
+    // of its depth. Each line counts with its line break: "ECHO: 1" is 8 bytes.
+    kerf::EvalOptions small;
+    small.limits.echo_bytes = 24;
+    CHECK(kerf::test::echoes("for (i = [1:3]) echo(i);", small).size() == 3);
+    CHECK(error_of("for (i = [1:4]) echo(i);", small) == "test.sdl:1:17: error: echo output limit 24 bytes exceeded");
+    small.limits.echo_bytes = 1000;
+    CHECK(error_of("module rec(a = 1) { echo(a); rec([[[a]]]); }\nrec();", small) ==
+          "test.sdl:1:21: error: echo output limit 1000 bytes exceeded");
+    // The default lets 50 MB through: far more than a model prints.
+    CHECK(kerf::EvalLimits{}.echo_bytes == 50'000'000);
+}
+
 TEST_CASE("loops over huge ranges fail fast", "[limits]") {
     auto t0 = std::chrono::steady_clock::now();
     CHECK(error_of("for (i = [0:1e12]) cube();") == "test.sdl:1:6: error: loop iteration limit 10000000 exceeded");

@@ -1,6 +1,6 @@
 // A function calling itself in tail position (through ?:, let, echo and
 // assert) loops instead of nesting, as OpenSCAD 2021 does: far past the
-// call depth limit (1000). Expectations are OpenSCAD 2021.01's output:
+// call depth limit (10,000 in this dialect). Expectations are OpenSCAD 2021.01's output:
 // `openscad -o out.echo tail_calls.scad`.
 function sum(n, acc = 0) = n <= 0 ? acc : sum(n - 1, acc + n);
 echo(sum(100000));  // ECHO: 5.00005e+9
