@@ -1,5 +1,6 @@
 #include "cli/phase_memory.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -16,10 +17,14 @@ void PhaseMemory::enter(const char* name) {
             if (line.rfind("VmHWM:", 0) == 0) m.peak_kb = std::strtol(line.c_str() + 6, nullptr, 10);
             if (line.rfind("VmRSS:", 0) == 0) m.resident_kb = std::strtol(line.c_str() + 6, nullptr, 10);
         }
+        // The kernel's counters are per-thread caches summed lazily, so two
+        // reads can see VmHWM step back a little or VmRSS above it; "peak so
+        // far" is the running maximum of both.
+        if (!marks_.empty()) m.peak_kb = std::max(m.peak_kb, marks_.back().peak_kb);
+        m.peak_kb = std::max(m.peak_kb, m.resident_kb);
         if (m.peak_kb >= 0 && m.resident_kb >= 0) marks_.push_back(std::move(m));
     }
     current_ = name ? name : "";
-    if (std::getenv("KERF_RESET_HWM")) { std::FILE* f = std::fopen("/proc/self/clear_refs", "w"); std::fputs("5", f); std::fclose(f); }
 }
 
 std::string phase_memory_line(const PhaseMemory& m) {
