@@ -83,6 +83,7 @@ struct RenderStats {
     std::uint64_t union_ops = 0, difference_ops = 0, intersection_ops = 0;
     std::uint64_t interval_tests = 0;  // ray–primitive intersections computed
     std::uint64_t refined_pixels = 0;  // adaptive anti-aliasing: pixels given aa_samples
+    std::uint64_t edge_pixels = 0;     // adaptive anti-aliasing: pixels whose straight edge was located
     int paths_per_pixel = 0;           // the path integrator: paths in each pixel of the image
     std::uint64_t rays() const { return primary_rays + shadow_rays + reflect_rays + refract_rays; }
 };
