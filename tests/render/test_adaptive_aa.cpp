@@ -148,6 +148,47 @@ TEST_CASE("adaptive AA covers a straight edge as 16 uniform samples do, against 
     }
 }
 
+TEST_CASE("adaptive AA locates an edge between two looks of one surface, against the exact area", "[render][aa]") {
+    // Stripes 100 units wide on the box of Edge, their boundary along
+    // Edge's line: one surface, white on one side and 0.2 grey on the other
+    // (the side Edge covers), so the sides are bisected by their look.
+    for (const double angle : {7.0, 20.0, 71.0}) {
+        Edge e(angle);
+        csg::Material m;
+        m.color = m.interior = {1, 1, 1};
+        m.color2 = {0.2, 0.2, 0.2};
+        m.pattern = csg::Pattern::Stripes;
+        m.pattern_from_material.linear = glm::dmat3(rotate_deg(-angle, {0, 0, 1})) / 100.0;
+        m.specular = 0;
+        m.diffuse = 1;
+        csg::Scene s = make_scene(leaf(box({-100, -100, -1}, {100, 100, 0})), {m});
+        s.background = e.scene.background;
+        s.camera = e.scene.camera;
+        s.lights = e.scene.lights;
+        render::RenderStats st;
+        const render::Image adaptive = render::render(s, options(e.size, true, 1), &st);
+        const render::Image sixteen = render::render(s, options(e.size, false, 16));
+        double err = 0, err16 = 0;
+        int pixels = 0;
+        for (int y = 0; y < e.size; ++y)
+            for (int x = 0; x < e.size; ++x) {
+                const double c = e.coverage(x, y);
+                const double exact = e.shade * (c * 0.2 + (1 - c) * 1.0);
+                if (c > 0 && c < 1) {
+                    err += std::abs(adaptive.at(x, y, 0) - exact), err16 += std::abs(sixteen.at(x, y, 0) - exact);
+                    ++pixels;
+                } else if (!e.touches(x, y)) {
+                    CHECK(adaptive.at(x, y, 0) == Approx(exact).margin(1e-6));
+                }
+            }
+        INFO("angle " << angle << ": edge pixels " << pixels << ", mean error " << err / pixels << ", 16 spp "
+                      << err16 / pixels << ", located " << st.edge_pixels << ", refined " << st.refined_pixels);
+        REQUIRE(pixels >= e.size);
+        CHECK(st.edge_pixels >= std::uint64_t(pixels / 2));
+        CHECK(err <= err16 * 0.6);
+    }
+}
+
 TEST_CASE("adaptive AA does not take a corner of the solid inside a pixel for a straight edge", "[render][aa]") {
     // The quadrant x < u, y < v (world units = pixels, as Edge) whose corner
     // lies inside pixel (16, 15) at many places: its corners show one
