@@ -26,9 +26,10 @@ void print_stats(const render::RenderStats& s, const render::Image& img) {
                  static_cast<unsigned long long>(s.reflect_rays), static_cast<unsigned long long>(s.refract_rays), s.seconds,
                  s.seconds > 0 ? rays / s.seconds * 1e-6 : 0.0, s.union_ops * per,
                  s.difference_ops * per, s.intersection_ops * per, s.interval_tests * per);
-    if (s.refined_pixels > 0)
-        std::fprintf(stderr, "stats: anti-aliasing: %llu of %d pixels took the full samples\n",
-                     static_cast<unsigned long long>(s.refined_pixels), img.width * img.height);
+    if (s.refined_pixels > 0 || s.edge_pixels > 0)
+        std::fprintf(stderr, "stats: anti-aliasing: %llu of %d pixels took the full samples, %llu a located straight edge\n",
+                     static_cast<unsigned long long>(s.refined_pixels), img.width * img.height,
+                     static_cast<unsigned long long>(s.edge_pixels));
 }
 
 std::string describe_failure(const std::exception_ptr& error, int* status) {

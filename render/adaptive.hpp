@@ -5,18 +5,23 @@
 // silhouette, an edge between leaves, a cut) or differs from it by more
 // than the threshold in a display (sRGB) channel (shadow edges,
 // highlights). A candidate gets probe samples at its 4 corners; if they all
-// look like its centre it is their mean with the centre, else it gets the
-// uniform pattern of RenderOptions::aa_samples (the pixel `--spp 16`
-// gives). The decision reads only first-pass values of full-image
-// coordinates, so the thread count and a crop never change a pixel: the
+// look like its centre it is their mean with the centre; if they fall into
+// two runs round the pixel, one straight edge crosses it, located on its
+// sides (edge_coverage.hpp); else it gets the uniform pattern of
+// RenderOptions::aa_samples (the pixel `--spp 16` gives). The decision
+// reads only first-pass values of full-image coordinates and samples
+// without jitter, so the thread count and a crop never change a pixel: the
 // first pass covers the region plus a one-pixel ring.
 #pragma once
 #include <algorithm>
 #include <array>
 #include <cstdlib>
 #include <cstdint>
+#include <optional>
 
 #include <glm/glm.hpp>
+
+#include "csg/srgb.hpp"
 
 #include "render/image/big_buffer.hpp"
 #include "render/image/srgb_bytes.hpp"
@@ -35,7 +40,26 @@ public:
     std::array<int, 4> area() const { return {x0_, y0_, x1_, y1_}; }
 
     // `surface`: 0 for a miss, else an id of the surface hit (Shader::radiance).
-    void set(int x, int y, const glm::dvec3& c, std::uint32_t surface) { looks_[index(x, y)] = look(c, surface); }
+    // `stand_in`: c is not the sample's colour but what it is compared as
+    // (the ground as the background).
+    void set(int x, int y, const glm::dvec3& c, std::uint32_t surface, bool stand_in = false) {
+        looks_[index(x, y)] = look(c, surface) | std::uint64_t(stand_in) << 24;
+    }
+
+    // The centre sample's colour to 8-bit precision (linear, decoded from
+    // its display codes), when the look holds it: not a stand-in, and no
+    // channel at 255 (which may have been clipped).
+    std::optional<glm::dvec3> color(int x, int y) const {
+        const std::uint64_t l = looks_[index(x, y)];
+        if (l >> 24 & 1) return std::nullopt;
+        glm::dvec3 c;
+        for (int k = 0; k < 3; ++k) {
+            const int code = int(l >> (8 * k) & 0xFF);
+            if (code == 255) return std::nullopt;
+            c[k] = decoded()[code];
+        }
+        return c;
+    }
 
     // Whether pixel (x, y) of the region needs more samples. `threshold`:
     // in 8-bit display codes.
@@ -64,6 +88,12 @@ public:
         return alike(look(c, surface), looks_[index(x, y)], threshold);
     }
 
+    // Whether two samples look alike.
+    bool alike(const glm::dvec3& a, std::uint32_t a_surface, const glm::dvec3& b, std::uint32_t b_surface,
+               int threshold) const {
+        return alike(look(a, a_surface), look(b, b_surface), threshold);
+    }
+
 private:
     // What a sample looks like: surface << 32 | its 8-bit display codes.
     std::uint64_t look(const glm::dvec3& c, std::uint32_t surface) const {
@@ -75,6 +105,14 @@ private:
         for (int k = 0; k < 24; k += 8)
             if (std::abs(int((a >> k) & 0xFF) - int((b >> k) & 0xFF)) > threshold) return false;
         return true;
+    }
+    static const std::array<double, 256>& decoded() {
+        static const std::array<double, 256> table = [] {
+            std::array<double, 256> t{};
+            for (int k = 0; k < 256; ++k) t[k] = csg::srgb_to_linear(k / 255.0);
+            return t;
+        }();
+        return table;
     }
     std::size_t index(int x, int y) const { return std::size_t(y - y0_) * std::size_t(x1_ - x0_) + std::size_t(x - x0_); }
     int x0_, y0_, x1_, y1_;

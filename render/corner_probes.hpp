@@ -1,9 +1,11 @@
 // Adaptive anti-aliasing's corner probes (render.cpp): a candidate pixel
-// samples its 4 corners, and each corner is a corner of up to 4 pixels.
-// A corner sample has no jitter, so its value does not depend on which
-// pixel asks; a thread keeps the corners of the tile it is tracing (tiles
-// are traced start to end on one thread, tiles.hpp) and traces each once
-// per tile. Same bytes as tracing every corner for every pixel, fewer rays.
+// samples its 4 corners, and each corner is a corner of up to 4 pixels;
+// a pixel crossed by one straight edge bisects the 2 sides it crosses, and
+// each side is a side of 2 pixels. Neither corner nor side samples have
+// jitter, so their values do not depend on which pixel asks; a thread
+// keeps the corners and sides of the tile it is tracing (tiles are traced
+// start to end on one thread, tiles.hpp) and traces each once per tile.
+// Same bytes as tracing them for every pixel, fewer rays.
 #pragma once
 #include <array>
 #include <atomic>
@@ -23,6 +25,16 @@ struct CornerProbe {
     double cover = 0;        // what the sample added to the pixel's coverage (--alpha)
 };
 
+// Where the look changes along a side, from its first corner (left or
+// top) to its second, found by bisection (render.cpp).
+struct SideProbe {
+    bool traced = false;
+    bool clean = false;  // every sample looked like exactly one of the side's two corners
+    double at = 0;       // where the change is, 0..1 from the first corner
+    glm::dvec3 sum[2];   // the samples that looked like the first, the second corner
+    int count[2] = {0, 0};
+};
+
 class CornerProbes {
 public:
     // A number no earlier render used: a thread's probes from another
@@ -36,14 +48,24 @@ public:
         if (x0 == x0_ && y0 == y0_ && generation == generation_) return;
         x0_ = x0, y0_ = y0, generation_ = generation;
         for (CornerProbe& p : probes_) p.traced = false;
+        for (SideProbe& p : sides_) p.traced = false;
     }
     // The corner (cx, cy) of the current tile: x0 <= cx <= x0 + kTile, the same for y.
     CornerProbe& at(int cx, int cy) { return probes_[std::size_t((cy - y0_) * (kTile + 1) + (cx - x0_))]; }
 
+    // The side from corner (cx, cy) of the current tile to (cx + 1, cy)
+    // (horizontal) or to (cx, cy + 1): inside the tile or on its border.
+    SideProbe& side(int cx, int cy, bool vertical) {
+        const std::size_t at = std::size_t((cy - y0_) * (kTile + 1) + (cx - x0_));
+        return vertical ? sides_[kCorners + at] : sides_[at];
+    }
+
 private:
+    static constexpr std::size_t kCorners = (kTile + 1) * (kTile + 1);
     int x0_ = 0, y0_ = 0;
     std::uint64_t generation_ = 0;
-    std::array<CornerProbe, (kTile + 1) * (kTile + 1)> probes_{};
+    std::array<CornerProbe, kCorners> probes_{};
+    std::array<SideProbe, 2 * kCorners> sides_{};  // horizontal, then vertical (a few unused)
 };
 
 }  // namespace kerf::render

@@ -32,9 +32,11 @@ struct RenderOptions {
     int width = 800, height = 600;
     int spp = 1;                     // uniform: samples per pixel (stratified jitter when > 1)
     // Adaptive anti-aliasing (adaptive.hpp; the CLI's default): a sample at
-    // each pixel centre, then aa_samples stratified samples (the pattern of
-    // spp = aa_samples) where a neighbour hit another surface or differs by
-    // more than aa_threshold (0..1, a display channel). Replaces `spp`.
+    // each pixel centre, then, where a neighbour hit another surface or
+    // differs by more than aa_threshold (0..1, a display channel), corner
+    // probes, a straight edge located to 1/2^⌈log2 aa_samples⌉ of a side, or
+    // aa_samples stratified samples (the pattern of spp = aa_samples).
+    // Replaces `spp`.
     bool adaptive = false;
     int aa_samples = 16;
     double aa_threshold = 0.05;
@@ -83,6 +85,7 @@ struct RenderStats {
     std::uint64_t union_ops = 0, difference_ops = 0, intersection_ops = 0;
     std::uint64_t interval_tests = 0;  // ray–primitive intersections computed
     std::uint64_t refined_pixels = 0;  // adaptive anti-aliasing: pixels given aa_samples
+    std::uint64_t edge_pixels = 0;     // adaptive anti-aliasing: pixels whose straight edge was located
     int paths_per_pixel = 0;           // the path integrator: paths in each pixel of the image
     std::uint64_t rays() const { return primary_rays + shadow_rays + reflect_rays + refract_rays; }
 };

@@ -128,27 +128,42 @@ glm::dvec3 Shader::missed(const TraceRay& ray, ThreadState& ts) const {
     return miss_;
 }
 
+// In front of the solid, the ground: a miss that may be in shadow (the
+// same surface id as a miss: the shadow's edge is refined by its colour,
+// not a seam along the horizon).
+bool Shader::ground_first(const TraceRay& ray, bool solid, const TraceHit& hit, double& t) const {
+    if (!ground_) return false;
+    t = ground_distance(scene_.ground, ray);
+    return t < (solid ? hit.t : ray.tfar);
+}
+
+namespace {
+std::uint32_t surface_id(const TraceHit& hit) { return (hit.surface.leaf + 1) * 2 + hit.surface.cut; }
+}  // namespace
+
+std::uint32_t Shader::surface(const TraceRay& ray, ThreadState& ts) const {
+    TraceHit hit;
+    const bool solid = tracer_.intersect(ray, hit, ts.scratch);
+    double t;
+    return ground_first(ray, solid, hit, t) || !solid ? 0 : surface_id(hit);
+}
+
 glm::dvec3 Shader::radiance(const TraceRay& ray, int depth, ThreadState& ts, std::uint32_t* surface) const {
     TraceHit hit;
     const bool solid = tracer_.intersect(ray, hit, ts.scratch);
-    if (ground_) {
-        // In front of the solid, the ground: a miss that may be in shadow
-        // (the same surface id as a miss: the shadow's edge is refined by
-        // its colour, not a seam along the horizon).
-        const double t = ground_distance(scene_.ground, ray);
-        if (t < (solid ? hit.t : ray.tfar)) {
-            if (surface) {
-                *surface = 0;
-                ts.on_ground = true;
-            }
-            return ground(ray.o + t * ray.d, ts);
+    double t;
+    if (ground_first(ray, solid, hit, t)) {
+        if (surface) {
+            *surface = 0;
+            ts.on_ground = true;
         }
+        return ground(ray.o + t * ray.d, ts);
     }
     if (!solid) {
         if (surface) *surface = 0;
         return miss_;  // fog: as if at infinite distance, all fog
     }
-    if (surface) *surface = (hit.surface.leaf + 1) * 2 + hit.surface.cut;
+    if (surface) *surface = surface_id(hit);
     const glm::dvec3 c = shade(ray, hit, depth, ts);
     if (!scene_.fog.on()) return c;
     // ray.d need not be unit (primary rays): the distance is t·|d|.

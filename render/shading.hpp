@@ -25,7 +25,8 @@ struct ThreadState {
     TraceScratch scratch;
     std::vector<Span> spans;  // the spans of a refracted or shadow ray (reused, not reallocated)
     RayCounts rays;
-    std::uint64_t refined_pixels = 0;  // adaptive anti-aliasing
+    std::uint64_t refined_pixels = 0;  // adaptive anti-aliasing: pixels given aa_samples
+    std::uint64_t edge_pixels = 0;     // and pixels crossed by one straight edge, located
     // Tracing one of a refined pixel's many samples: a probing light
     // (csg::Light::probe) sends 4 stratified shadow rays, not 16; the
     // pixel's mean still has 4 × its sample count.
@@ -54,6 +55,8 @@ public:
     // ray hit (leaf and cut face), for adaptive anti-aliasing.
     // Fog (csg::Fog) dims every ray's colour by the distance it travels.
     glm::dvec3 radiance(const TraceRay& ray, int depth, ThreadState& ts, std::uint32_t* surface = nullptr) const;
+    // Only the `surface` radiance() would give, without shading.
+    std::uint32_t surface(const TraceRay& ray, ThreadState& ts) const;
     // What a ray that hits nothing sees: the background, or the fog's colour.
     const glm::dvec3& miss() const { return miss_; }
 
@@ -73,6 +76,9 @@ private:
     // The colour of the surface `hit` seen along `ray`, before fog.
     glm::dvec3 shade(const TraceRay& ray, const TraceHit& hit, int depth, ThreadState& ts) const;
     const csg::Material& material_of(std::uint32_t leaf) const;
+    // Whether the ground is in front of the solid (or of nothing) along the
+    // ray, at t.
+    bool ground_first(const TraceRay& ray, bool solid, const TraceHit& hit, double& t) const;
     // The ground at `p`: the miss colour darkened by the share of the
     // shadow-casting lights' light the solid blocks (csg::Ground).
     glm::dvec3 ground(const glm::dvec3& p, ThreadState& ts) const;

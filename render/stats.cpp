@@ -14,6 +14,7 @@ RenderStats sum_stats(const tbb::enumerable_thread_specific<ThreadState>& states
         s.intersection_ops += ts.scratch.counters.intersection_ops;
         s.interval_tests += ts.scratch.counters.interval_tests;
         s.refined_pixels += ts.refined_pixels;
+        s.edge_pixels += ts.edge_pixels;
     }
     s.seconds = seconds;
     return s;
