@@ -224,14 +224,21 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
             return centres.alike(a.on_ground ? shader.miss() : a.color, a.surface,
                                  b.on_ground ? shader.miss() : b.color, b.surface, threshold);
         };
+        // A sample through (px, py) with what the first pass compares: its
+        // look, surface and whether it saw the ground.
+        auto probe_at = [&](double px, double py, ThreadState& ts, bool traced) {
+            CornerProbe p;
+            ts.on_ground = false;
+            p.color = sample(px, py, ts, traced, &p.surface);
+            p.on_ground = ts.on_ground;
+            return p;
+        };
         // The corner (cx, cy) of the current tile, traced once.
         auto corner = [&](int cx, int cy, ThreadState& ts, bool traced) -> CornerProbe& {
             CornerProbe& p = probes.at(cx, cy);
             if (!p.traced) {
-                ts.on_ground = false;
                 last_cover = 0;  // a culled sample traces nothing and covers nothing
-                p.color = sample(cx, cy, ts, traced, &p.surface);
-                p.on_ground = ts.on_ground;
+                p = probe_at(cx, cy, ts, traced);
                 p.cover = last_cover;
                 p.traced = true;
             } else {
@@ -261,10 +268,7 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
                 const std::uint32_t seen = surface_sample(px, py, ts, traced);
                 return seen == p.surface ? 0 : seen == q.surface ? 1 : -1;
             }
-            CornerProbe probe;
-            ts.on_ground = false;
-            probe.color = sample(px, py, ts, traced, &probe.surface);
-            probe.on_ground = ts.on_ground;
+            const CornerProbe probe = probe_at(px, py, ts, traced);
             const bool like_p = alike(probe, p), like_q = alike(probe, q);
             if (like_p == like_q) return -1;
             color = probe.color;
