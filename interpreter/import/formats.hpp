@@ -44,7 +44,12 @@ graph::PolygonMesh read_ply(const MeshFile& file, std::uint64_t max_faces);
 graph::PolygonMesh read_off(const MeshFile& file, std::uint64_t max_faces);
 ImportedMesh read_amf(const MeshFile& file, const std::string& path, const MeshReading& how);
 // lib3mf reads the file itself (by its path, after MeshFile checked its size).
+// It and libzip live in the zip module, loaded on the first call of either
+// (zip_imports.cpp; a module that cannot be loaded is a MeshFormatError).
 ImportedMesh read_3mf(const std::string& path, const MeshReading& how);
+// The XML of a compressed AMF file (a zip archive): the entry named like the
+// file, or its only entry.
+std::string unzip_amf(const std::string& path);
 
 // Line number (1-based) of byte offset `at`, for text-format errors.
 std::size_t line_of(std::string_view bytes, std::size_t at);
