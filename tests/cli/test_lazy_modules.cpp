@@ -1,10 +1,12 @@
 // kerf's optional modules load only when a run needs them (csg/modules.hpp,
 // docs/performance.md "Start-up"): the dynamic loader's own record of every
 // file it loads (LD_DEBUG=files) of a real run says which libraries a plain
-// PNG render brings in, and that importing a compressed AMF brings in the
-// zip module and its libraries and still reads the file.
+// PNG render brings in, and that importing a compressed AMF or drawing
+// text() brings in the zip or the font module and its libraries and still
+// reads the file or draws the text.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <cstdlib>
 #include <string>
 
@@ -13,9 +15,10 @@
 namespace {
 
 // The libraries of the optional modules: each costs milliseconds at start.
-const char* kLazy[] = {"libkerf_zip.so", "libkerf_view.so", "libkerf_codecs.so", "libkerf_oiio.so", "lib3MF.so",
-                       "libzip.so",      "libcrypto.so",    "libssl.so",         "libcpp-httplib.so",
-                       "libOpenImageIO.so"};
+const char* kLazy[] = {"libkerf_zip.so",   "libkerf_view.so",  "libkerf_codecs.so", "libkerf_oiio.so",
+                       "libkerf_fonts.so", "lib3MF.so",        "libzip.so",         "libcrypto.so",
+                       "libssl.so",        "libcpp-httplib.so", "libOpenImageIO.so", "libharfbuzz.so",
+                       "libfontconfig.so", "libfreetype.so",   "libglib-2.0.so"};
 
 const char* kScene = "camera(position = [3, 3, 2], look_at = [0, 0, 0]);\nlight(position = [5, -5, 10]);\n";
 
@@ -61,4 +64,23 @@ TEST_CASE("a compressed AMF import loads the zip module and reads the file", "[m
     const Measured m = measure_file(dir, "import(\"tet.amf\");", "measure.sdl");
     REQUIRE(m.status == 0);
     CHECK(m.volume == Approx(1.0 / 6).epsilon(2e-3));
+}
+
+TEST_CASE("text() loads the font module and draws the glyphs", "[modules][text]") {
+    const auto dir = test_dir("lazy_modules_text");
+    const std::string scene = write_file(dir / "text.sdl", std::string(kScene) + "linear_extrude(1) text(\"I\", size = 10);\n");
+    const KerfRun r = run_kerf("render '" + scene + "' -o '" + (dir / "t.png").string() + "' -W 16 -H 16 --no-progress",
+                               dir, "LD_DEBUG=files ");
+    REQUIRE(r.status == 0);
+    CHECK(r.err.find("libkerf_fonts.so") != std::string::npos);
+    CHECK(r.err.find("file=libharfbuzz.so") != std::string::npos);
+    CHECK(r.err.find("libkerf_zip.so") == std::string::npos);  // the zip module stays out
+    // An "I" is a bar: its volume is positive and well under its box's
+    // (size 10: about 1.4 × 7.3 × 1 in Liberation Sans), so the module drew it.
+    const Measured m = measure_file(dir, "linear_extrude(1) text(\"I\", size = 10);", "measure.sdl");
+    REQUIRE(m.status == 0);
+    CHECK(m.volume > 5);
+    CHECK(m.volume < 15);
+    if (const double ref = openscad_volume(dir, "linear_extrude(1) text(\"I\", size = 10);"); std::isfinite(ref))
+        CHECK(m.volume == Approx(ref).epsilon(1e-3));
 }
