@@ -22,13 +22,19 @@ const char* kLazy[] = {"libkerf_zip.so",   "libkerf_view.so",  "libkerf_codecs.s
 
 const char* kScene = "camera(position = [3, 3, 2], look_at = [0, 0, 0]);\nlight(position = [5, -5, 10]);\n";
 
+// A 16×16 render of `scene` with the loader's record of every file loaded
+// on stderr.
+KerfRun traced_render(const std::filesystem::path& dir, const std::string& scene) {
+    return run_kerf("render '" + scene + "' -o '" + (dir / "t.png").string() + "' -W 16 -H 16 --no-progress", dir,
+                    "LD_DEBUG=files ");
+}
+
 }  // namespace
 
 TEST_CASE("a PNG render loads none of the optional modules' libraries", "[modules]") {
     const auto dir = test_dir("lazy_modules_png");
     const std::string scene = write_file(dir / "tiny.sdl", std::string(kScene) + "sphere(1);\n");
-    const KerfRun r = run_kerf("render '" + scene + "' -o '" + (dir / "t.png").string() + "' -W 16 -H 16 --no-progress",
-                               dir, "LD_DEBUG=files ");
+    const KerfRun r = traced_render(dir, scene);
     REQUIRE(r.status == 0);
     CHECK(r.err.find("file=libembree3.so") != std::string::npos);  // the record lists what is loaded
     for (const char* lib : kLazy) {
@@ -53,8 +59,7 @@ TEST_CASE("a compressed AMF import loads the zip module and reads the file", "[m
                          ".write('plain.amf', 'tet.amf')\"")
                             .c_str()) == 0);
     const std::string scene = write_file(dir / "tet.sdl", std::string(kScene) + "import(\"tet.amf\");\n");
-    const KerfRun r = run_kerf("render '" + scene + "' -o '" + (dir / "t.png").string() + "' -W 16 -H 16 --no-progress",
-                               dir, "LD_DEBUG=files ");
+    const KerfRun r = traced_render(dir, scene);
     INFO(r.err.substr(r.err.size() > 2000 ? r.err.size() - 2000 : 0));
     REQUIRE(r.status == 0);
     CHECK(r.err.find("libkerf_zip.so") != std::string::npos);
@@ -69,8 +74,7 @@ TEST_CASE("a compressed AMF import loads the zip module and reads the file", "[m
 TEST_CASE("text() loads the font module and draws the glyphs", "[modules][text]") {
     const auto dir = test_dir("lazy_modules_text");
     const std::string scene = write_file(dir / "text.sdl", std::string(kScene) + "linear_extrude(1) text(\"I\", size = 10);\n");
-    const KerfRun r = run_kerf("render '" + scene + "' -o '" + (dir / "t.png").string() + "' -W 16 -H 16 --no-progress",
-                               dir, "LD_DEBUG=files ");
+    const KerfRun r = traced_render(dir, scene);
     REQUIRE(r.status == 0);
     CHECK(r.err.find("libkerf_fonts.so") != std::string::npos);
     CHECK(r.err.find("file=libharfbuzz.so") != std::string::npos);
