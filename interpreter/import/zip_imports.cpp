@@ -8,6 +8,7 @@
 
 #include "csg/modules.hpp"
 #include "interpreter/import/formats.hpp"
+#include "interpreter/import/module_answer.hpp"
 #include "interpreter/import/zip_module/zip_module.hpp"
 
 namespace kerf::eval::mesh_format {
@@ -36,24 +37,18 @@ const ZipModule& zip_module() {
     throw MeshFormatError(csg::module_error("3MF and compressed AMF", KERF_ZIP_MODULE_NAME, why));
 }
 
-// The module's answer as the exception its reader threw.
-void rethrow(int status, const std::string& error) {
-    if (status == kZipLimitError) throw MeshLimitError(error);
-    if (status != kZipOk) throw MeshFormatError(error);
-}
-
 }  // namespace
 
 ImportedMesh read_3mf(const std::string& path, const MeshReading& how) {
     ImportedMesh out;
     std::string error;
-    rethrow(zip_module().read_3mf(path, how, out, error), error);
+    rethrow_import(zip_module().read_3mf(path, how, out, error), error);
     return out;
 }
 
 std::string unzip_amf(const std::string& path) {
     std::string out, error;
-    rethrow(zip_module().unzip_amf(path, out, error), error);
+    rethrow_import(zip_module().unzip_amf(path, out, error), error);
     return out;
 }
 

@@ -18,7 +18,8 @@ namespace {
 const char* kLazy[] = {"libkerf_zip.so",   "libkerf_view.so",  "libkerf_codecs.so", "libkerf_oiio.so",
                        "libkerf_fonts.so", "lib3MF.so",        "libzip.so",         "libcrypto.so",
                        "libssl.so",        "libcpp-httplib.so", "libOpenImageIO.so", "libharfbuzz.so",
-                       "libfontconfig.so", "libfreetype.so",   "libglib-2.0.so"};
+                       "libfontconfig.so", "libfreetype.so",   "libglib-2.0.so",    "libkerf_xml.so",
+                       "libxml2.so",       "libicuuc.so"};
 
 const char* kScene = "camera(position = [3, 3, 2], look_at = [0, 0, 0]);\nlight(position = [5, -5, 10]);\n";
 
@@ -43,7 +44,7 @@ TEST_CASE("a PNG render loads none of the optional modules' libraries", "[module
     }
 }
 
-TEST_CASE("a compressed AMF import loads the zip module and reads the file", "[modules][import]") {
+TEST_CASE("a compressed AMF import loads the zip and XML modules and reads the file", "[modules][import]") {
     const auto dir = test_dir("lazy_modules_amf");
     write_file(dir / "plain.amf",
                "<?xml version=\"1.0\"?>\n<amf><object id=\"0\"><mesh><vertices>"
@@ -64,6 +65,8 @@ TEST_CASE("a compressed AMF import loads the zip module and reads the file", "[m
     REQUIRE(r.status == 0);
     CHECK(r.err.find("libkerf_zip.so") != std::string::npos);
     CHECK(r.err.find("file=libzip.so") != std::string::npos);
+    CHECK(r.err.find("libkerf_xml.so") != std::string::npos);  // the unzipped XML
+    CHECK(r.err.find("file=libxml2.so") != std::string::npos);
     CHECK(r.err.find("libcpp-httplib.so") == std::string::npos);  // kerf view's module stays out
     // The unit tetrahedron's volume, 1/6: the module read the right bytes.
     const Measured m = measure_file(dir, "import(\"tet.amf\");", "measure.sdl");

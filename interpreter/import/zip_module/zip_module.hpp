@@ -6,8 +6,8 @@
 //
 // The entry points are C functions (found by dlsym) on C++ data: the
 // module is built with kerf, from the same headers, by the same compiler.
-// Each catches everything it throws and answers with a code and a message,
-// so no exception crosses the module's boundary.
+// Each answers with a status and a message (module_answer.hpp), so no
+// exception crosses the module's boundary.
 #pragma once
 #include <cstddef>
 #include <string>
@@ -15,9 +15,6 @@
 #include "interpreter/import/mesh_import.hpp"
 
 namespace kerf::eval::mesh_format {
-
-// What an entry point answers.
-enum ZipStatus : int { kZipOk = 0, kZipFormatError = 1, kZipLimitError = 2 };
 
 // kerf_zip_read_3mf: the meshes of a 3MF file into `out`.
 using Read3mf = int (*)(const std::string& path, const MeshReading& how, ImportedMesh& out, std::string& error);

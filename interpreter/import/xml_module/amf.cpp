@@ -5,7 +5,8 @@
 // define the solid and are skipped; curved triangles (<edge> tangents) are
 // read flat and <constellation>s not placed, each with a warning. The
 // root's unit scales to millimetres, except in OpenSCAD's reading (it
-// ignores the unit; a warning says so when it is not millimetres).
+// ignores the unit; a warning says so when it is not millimetres). In the
+// XML module (xml_module.hpp), on the file's bytes (unzipped by kerf).
 #include <cmath>
 #include <cstring>
 #include <map>
@@ -14,7 +15,7 @@
 #include <libxml/xmlreader.h>
 
 #include "interpreter/import/formats.hpp"
-#include "interpreter/import/mesh_import.hpp"
+#include "interpreter/import/xml_module/xml_module.hpp"
 
 namespace kerf::eval::mesh_format {
 
@@ -163,9 +164,7 @@ private:
 
 }  // namespace
 
-ImportedMesh read_amf(const MeshFile& file, const std::string& path, const MeshReading& how) {
-    std::string bytes = file.read_all();
-    if (bytes.substr(0, 4) == std::string_view("PK\x03\x04", 4)) bytes = unzip_amf(path);
+ImportedMesh module_read_amf(const std::string& bytes, const MeshReading& how) {
     // No network, no external entities or DTDs: only the file's own bytes.
     std::unique_ptr<xmlTextReader, void (*)(xmlTextReaderPtr)> reader(
         xmlReaderForMemory(bytes.data(), static_cast<int>(bytes.size()), nullptr, nullptr,
