@@ -58,7 +58,7 @@ public:
 
     int run() {
         try {
-            server_ = std::make_unique<view::Server>(
+            server_ = view::open_server(
                 o_.host, o_.port,
                 view::Handlers{[this](const csg::Camera& c) { ask([&](Work& w) { w.camera = c; }, Clock::now()); },
                                [this] { ask([](Work& w) { w.reset = true; w.camera.reset(); }, Clock::now()); }});

@@ -29,11 +29,20 @@ constexpr std::size_t kMaxBody = 1 << 16;  // the page sends only short queries
 // fetching while a script polls) would wait for SYN retransmits, seconds.
 constexpr int kBacklog = 1024;
 
-}  // namespace
+// The server of server.hpp, on cpp-httplib.
+class HttpServer final : public Server {
+public:
+    HttpServer(const std::string& address, int port, Handlers handlers);
+    ~HttpServer() override;
+    int port() const override { return port_; }
+    std::string url() const override;
+    void start() override;
+    void publish(const std::string& kind, const std::string& json) override { hub.publish(kind, json); }
+    std::uint64_t put_image(std::vector<unsigned char> png) override;
 
-struct Server::Impl {
+private:
     std::string address;
-    int port = 0;
+    int port_ = 0;
     Handlers handlers;
     httplib::Server http;
     EventHub hub{kMaxStreams};
@@ -45,12 +54,11 @@ struct Server::Impl {
     void routes();
 };
 
-Server::Server(const std::string& address, int port, Handlers handlers) : impl_(std::make_unique<Impl>()) {
+HttpServer::HttpServer(const std::string& address, int port, Handlers handlers) {
     if (!is_loopback_address(address))
         throw std::runtime_error("kerf view listens on a loopback address only (127.0.0.1 or ::1), not '" + address + "'");
-    impl_->address = address;
-    impl_->handlers = std::move(handlers);
-    httplib::Server& http = impl_->http;
+    this->address = address;
+    this->handlers = std::move(handlers);
     http.new_task_queue = [] { return new httplib::ThreadPool(kThreads); };
     // A client that stops sending frees its thread after this long.
     http.set_read_timeout(1, 0);
@@ -67,46 +75,42 @@ Server::Server(const std::string& address, int port, Handlers handlers) : impl_(
         ::setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
         listening = fd;
     });
-    impl_->routes();
+    routes();
     if (port == 0) {
-        impl_->port = http.bind_to_any_port(address);
-        if (impl_->port <= 0) throw std::runtime_error("cannot listen on " + address + ": no free port");
+        port_ = http.bind_to_any_port(address);
+        if (port_ <= 0) throw std::runtime_error("cannot listen on " + address + ": no free port");
     } else {
         if (!http.bind_to_port(address, port))
             throw std::runtime_error("cannot listen on " + address + " port " + std::to_string(port) +
                                      " (in use, or not permitted)");
-        impl_->port = port;
+        port_ = port;
     }
     if (listening >= 0) ::listen(listening, kBacklog);  // a listening socket takes a new backlog
 }
 
-Server::~Server() {
-    impl_->hub.close();
-    impl_->http.stop();
-    if (impl_->thread.joinable()) impl_->thread.join();
+HttpServer::~HttpServer() {
+    hub.close();
+    http.stop();
+    if (thread.joinable()) thread.join();
 }
 
-int Server::port() const { return impl_->port; }
-
-std::string Server::url() const {
-    const std::string& a = impl_->address;
-    return "http://" + (a.find(':') != std::string::npos ? "[" + a + "]" : a) + ":" + std::to_string(impl_->port) + "/";
+std::string HttpServer::url() const {
+    const std::string& a = address;
+    return "http://" + (a.find(':') != std::string::npos ? "[" + a + "]" : a) + ":" + std::to_string(port_) + "/";
 }
 
-void Server::start() {
-    impl_->thread = std::thread([this] { impl_->http.listen_after_bind(); });
+void HttpServer::start() {
+    thread = std::thread([this] { http.listen_after_bind(); });
 }
 
-void Server::publish(const std::string& kind, const std::string& json) { impl_->hub.publish(kind, json); }
-
-std::uint64_t Server::put_image(std::vector<unsigned char> png) {
-    std::lock_guard<std::mutex> lock(impl_->images_mutex);
-    impl_->images.emplace_back(++impl_->next_image, std::make_shared<const std::vector<unsigned char>>(std::move(png)));
-    while (impl_->images.size() > kKeptImages) impl_->images.pop_front();
-    return impl_->next_image;
+std::uint64_t HttpServer::put_image(std::vector<unsigned char> png) {
+    std::lock_guard<std::mutex> lock(images_mutex);
+    images.emplace_back(++next_image, std::make_shared<const std::vector<unsigned char>>(std::move(png)));
+    while (images.size() > kKeptImages) images.pop_front();
+    return next_image;
 }
 
-void Server::Impl::routes() {
+void HttpServer::routes() {
     using httplib::Request;
     using httplib::Response;
     // Every answer: not cached, not framed by another page, never sniffed
@@ -121,13 +125,13 @@ void Server::Impl::routes() {
          "frame-ancestors 'none'"},
     });
     http.set_pre_routing_handler([this](const Request& req, Response& res) {
-        if (host_allowed(req.get_header_value("Host"), address, port) &&
-            origin_allowed(req.get_header_value("Origin"), address, port) &&
+        if (host_allowed(req.get_header_value("Host"), address, port_) &&
+            origin_allowed(req.get_header_value("Origin"), address, port_) &&
             fetch_site_allowed(req.get_header_value("Sec-Fetch-Site")))
             return httplib::Server::HandlerResponse::Unhandled;
         res.status = 403;
         res.set_content("forbidden: this server answers only its own page at http://" + address + ":" +
-                            std::to_string(port) + "/\n",
+                            std::to_string(port_) + "/\n",
                         "text/plain");
         return httplib::Server::HandlerResponse::Handled;
     });
@@ -191,4 +195,16 @@ void Server::Impl::routes() {
     });
 }
 
+}  // namespace
+
 }  // namespace kerf::view
+
+extern "C" kerf::view::Server* kerf_view_open_server(const std::string& address, int port, kerf::view::Handlers& handlers,
+                                                     std::string& error) {
+    try {
+        return new kerf::view::HttpServer(address, port, std::move(handlers));
+    } catch (const std::exception& e) {
+        error = e.what();
+        return nullptr;
+    }
+}

@@ -25,27 +25,31 @@ struct Handlers {
     std::function<void()> reset;
 };
 
+// The server lives in a module, libkerf_view.so (server.cpp, with
+// cpp-httplib and the OpenSSL and Brotli libraries it links, ~3 ms of
+// every start when kerf linked them), opened by open_server() on the first
+// `kerf view` (open_server.cpp; docs/performance.md, "Start-up").
 class Server {
 public:
-    // Binds `address` (refused unless loopback) on `port` (0: a free one).
-    // Throws std::runtime_error saying why it cannot.
-    Server(const std::string& address, int port, Handlers handlers);
-    ~Server();  // stops serving and ends the event streams
-    Server(const Server&) = delete;
-    Server& operator=(const Server&) = delete;
+    virtual ~Server() = default;  // stops serving and ends the event streams
 
-    int port() const;
-    std::string url() const;  // http://ADDRESS:PORT/
+    virtual int port() const = 0;
+    virtual std::string url() const = 0;  // http://ADDRESS:PORT/
     // Starts answering on its own threads.
-    void start();
+    virtual void start() = 0;
     // A server-sent event (kind, one line of JSON) for every open page.
-    void publish(const std::string& kind, const std::string& json);
+    virtual void publish(const std::string& kind, const std::string& json) = 0;
     // Stores the bytes of a PNG as /image/ID.png; returns ID (from 1).
-    std::uint64_t put_image(std::vector<unsigned char> png);
-
-private:
-    struct Impl;
-    std::unique_ptr<Impl> impl_;
+    virtual std::uint64_t put_image(std::vector<unsigned char> png) = 0;
 };
+
+// Binds `address` (refused unless loopback) on `port` (0: a free one).
+// Throws std::runtime_error saying why it cannot, or that the module
+// cannot be loaded.
+std::unique_ptr<Server> open_server(const std::string& address, int port, Handlers handlers);
+
+// The module's entry point, kerf_view_open_server: the server, or nullptr
+// with `error` saying why (no exception crosses the module's boundary).
+using OpenServer = Server* (*)(const std::string& address, int port, Handlers& handlers, std::string& error);
 
 }  // namespace kerf::view

@@ -2,6 +2,7 @@
 // in the file's own (counter-clockwise) face order. mesh_import.cpp
 // validates and reorients the result.
 #pragma once
+#include <charconv>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -42,9 +43,16 @@ graph::PolygonMesh read_stl(const MeshFile& file, std::uint64_t max_faces);
 graph::PolygonMesh read_obj(std::string_view bytes, std::uint64_t max_faces);
 graph::PolygonMesh read_ply(const MeshFile& file, std::uint64_t max_faces);
 graph::PolygonMesh read_off(const MeshFile& file, std::uint64_t max_faces);
+// AMF's XML is read by the XML module (xml_imports.cpp), a zipped file's
+// first unzipped by the zip module.
 ImportedMesh read_amf(const MeshFile& file, const std::string& path, const MeshReading& how);
 // lib3mf reads the file itself (by its path, after MeshFile checked its size).
+// It and libzip live in the zip module, loaded on the first call of either
+// (zip_imports.cpp; a module that cannot be loaded is a MeshFormatError).
 ImportedMesh read_3mf(const std::string& path, const MeshReading& how);
+// The XML of a compressed AMF file (a zip archive): the entry named like the
+// file, or its only entry.
+std::string unzip_amf(const std::string& path);
 
 // Line number (1-based) of byte offset `at`, for text-format errors.
 std::size_t line_of(std::string_view bytes, std::size_t at);
@@ -93,7 +101,12 @@ private:
 
 // A number token: decimal or scientific, an optional leading '+'. Returns
 // false when the whole token is not a number.
-bool parse_number(std::string_view tok, double& out);
+inline bool parse_number(std::string_view tok, double& out) {
+    if (!tok.empty() && tok.front() == '+') tok.remove_prefix(1);
+    if (tok.empty()) return false;
+    auto [end, ec] = std::from_chars(tok.data(), tok.data() + tok.size(), out);
+    return ec == std::errc() && end == tok.data() + tok.size();
+}
 
 // Refuses a count of items that could not fit in the bytes left (each item
 // needs at least `min_bytes`; `slack` more bytes are allowed for, e.g. the

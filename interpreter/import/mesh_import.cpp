@@ -84,13 +84,6 @@ Tokens Lines::need(const char* what) {
     Tokens(s_, s_.size()).fail(std::string("expected ") + what + ", got the end of the file");
 }
 
-bool parse_number(std::string_view tok, double& out) {
-    if (!tok.empty() && tok.front() == '+') tok.remove_prefix(1);
-    if (tok.empty()) return false;
-    auto [end, ec] = std::from_chars(tok.data(), tok.data() + tok.size(), out);
-    return ec == std::errc() && end == tok.data() + tok.size();
-}
-
 void check_count(std::uint64_t count, std::uint64_t bytes_left, std::size_t min_bytes, const std::string& what,
                  std::uint64_t limit, std::uint64_t slack) {
     if (count > limit)

@@ -1,6 +1,8 @@
 // Fonts for text() (docs/language.md, "Text"): a font named the way
 // OpenSCAD names it ("Liberation Sans:style=Bold", a fontconfig pattern),
-// found through fontconfig and opened with FreeType once per run and file.
+// found through fontconfig and opened with FreeType once per run and file,
+// in the font module (font_module/font_module.hpp) that fonts.cpp opens on
+// the first call; without the module these throw FontError naming it.
 #pragma once
 #include <stdexcept>
 #include <string>

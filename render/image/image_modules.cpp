@@ -2,39 +2,28 @@
 
 #include <dlfcn.h>
 
-#include <filesystem>
 #include <string>
 
+#include "csg/modules.hpp"
 #include "render/image/image.hpp"
 
 namespace kerf::render {
 
 namespace {
 
-// `name` beside the running executable, else at `built` (the build tree);
-// its functions are `prefix`_can_write, _encode and _read.
+// The module `name` (csg/modules.hpp); its functions are `prefix`_can_write,
+// _encode and _read.
 ImageModule load(const char* name, const char* built, const std::string& prefix, const char* what) {
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
     std::string why;
-    for (const fs::path& p : {ec ? fs::path() : exe.parent_path() / name, fs::path(built)}) {
-        if (p.empty() || !fs::exists(p, ec)) continue;
-        void* h = ::dlopen(p.c_str(), RTLD_NOW | RTLD_LOCAL);
-        if (!h) {
-            const char* e = ::dlerror();
-            why = e ? e : "dlopen failed";
-            continue;
-        }
+    if (void* h = csg::open_module(name, built, &why)) {
         ImageModule m;
         m.can_write = reinterpret_cast<decltype(m.can_write)>(::dlsym(h, (prefix + "_can_write").c_str()));
         m.encode = reinterpret_cast<decltype(m.encode)>(::dlsym(h, (prefix + "_encode").c_str()));
         m.read = reinterpret_cast<decltype(m.read)>(::dlsym(h, (prefix + "_read").c_str()));
         if (m.can_write && m.encode && m.read) return m;
-        why = p.string() + " lacks " + prefix + "_encode";
+        why = "it lacks " + prefix + "_encode";
     }
-    throw ImageWriteError("cannot load the " + std::string(what) + " module " + name +
-                          (why.empty() ? " (not beside kerf nor at " + std::string(built) + ")" : ": " + why));
+    throw ImageWriteError(csg::module_error(what, name, why));
 }
 
 }  // namespace

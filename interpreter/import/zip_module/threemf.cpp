@@ -1,5 +1,6 @@
 // 3MF (3D Manufacturing Format: a zip of XML parts), read with Debian's
-// lib3mf 1.8 (the library OpenSCAD 2021.01 links). The format's meaning:
+// lib3mf 1.8 (the library OpenSCAD 2021.01 links), in the zip module
+// (zip_module.hpp). The format's meaning:
 // every build item is a part, its object's meshes placed by the item's
 // transform and, through components objects, by theirs; the model's unit
 // scales to millimetres. OpenSCAD 2021.01's reading (MeshReading::openscad)
@@ -7,13 +8,13 @@
 // is stored, the unit and the build ignored — with a warning when that
 // changes the model.
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <vector>
 
 #include <Model/COM/NMR_DLLInterfaces.h>
 
-#include "interpreter/import/formats.hpp"
-#include "interpreter/import/mesh_import.hpp"
+#include "interpreter/import/zip_module/zip_module.hpp"
 
 namespace kerf::eval::mesh_format {
 
@@ -147,7 +148,7 @@ bool next(PLib3MFBase* it, F movenext) {
 
 }  // namespace
 
-ImportedMesh read_3mf(const std::string& path, const MeshReading& how) {
+ImportedMesh lib3mf_read(const std::string& path, const MeshReading& how) {
     Handle model, reader;
     check(lib3mf_createmodel(&model.p), nullptr, "creating a model");
     check(lib3mf_model_queryreader(model.p, "3mf", &reader.p), model.p, "creating a reader");

@@ -1,5 +1,6 @@
 // layout_text: shaping (HarfBuzz over FreeType), OpenSCAD 2021.01's
-// placement rules, and the outlines flattened within the tolerance.
+// placement rules, and the outlines flattened within the tolerance
+// (chords.cpp), in the font module (font_module.hpp).
 #include "interpreter/text/layout.hpp"
 
 #include <algorithm>
@@ -15,6 +16,7 @@
 #include <hb.h>
 
 #include "interpreter/text/font.hpp"
+#include "interpreter/text/font_module/font_module.hpp"
 
 namespace kerf::text {
 
@@ -28,14 +30,6 @@ namespace {
 // 1000; docs/openscad.md).
 constexpr double kReferenceSize = 10;
 constexpr double kPositionScale = 1.0 / 1024.0;
-constexpr int kMaxChords = 1 << 12;  // per curve: a tolerance far below the font's own precision
-
-int chords_for(double second_derivative, double tol) {
-    if (!(second_derivative > 0)) return 1;
-    const double n = std::ceil(std::sqrt(second_derivative / (8 * tol)));
-    return static_cast<int>(std::clamp(n, 1.0, static_cast<double>(kMaxChords)));
-}
-
 struct Outliner {
     glm::dvec2 origin{0};
     double scale = 1;  // font units -> kerf units
@@ -105,18 +99,7 @@ struct Shaped {
 
 }  // namespace
 
-int quadratic_chords(const glm::dvec2& p0, const glm::dvec2& p1, const glm::dvec2& p2, double tol) {
-    return chords_for(2 * glm::length(p0 - 2.0 * p1 + p2), tol);  // B'' = 2 (p0 - 2 p1 + p2)
-}
-
-int cubic_chords(const glm::dvec2& p0, const glm::dvec2& p1, const glm::dvec2& p2, const glm::dvec2& p3,
-                 double tol) {
-    // B''(t) = 6 ((1 - t) (p0 - 2 p1 + p2) + t (p1 - 2 p2 + p3)): its length
-    // is at most the larger of the two ends'.
-    return chords_for(6 * std::max(glm::length(p0 - 2.0 * p1 + p2), glm::length(p1 - 2.0 * p2 + p3)), tol);
-}
-
-TextShape layout_text(const TextParams& p) {
+TextShape module_layout_text(const TextParams& p) {
     if (!(p.size > 0) || !std::isfinite(p.size))
         throw std::invalid_argument("size must be a positive number, got " + std::to_string(p.size));
     if (!std::isfinite(p.spacing)) throw std::invalid_argument("spacing must be a finite number");
@@ -127,7 +110,7 @@ TextShape layout_text(const TextParams& p) {
 
     TextShape out;
     std::string substitute;
-    Font font = find_font(p.font, p.fallback_font, &substitute);
+    Font font = module_find_font(p.font, p.fallback_font, &substitute);
     if (!substitute.empty())
         out.warnings.push_back("font '" + p.font + "' is not installed; using '" + substitute + "'");
     if (p.text.empty()) return out;

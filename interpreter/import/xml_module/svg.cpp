@@ -1,6 +1,7 @@
 // SVG drawings (svg.hpp): libxml2 builds the tree; this file walks it with
 // the current transform, turns each shape element into outlines and maps
-// the page to millimetres the way OpenSCAD 2021.01 does.
+// the page to millimetres the way OpenSCAD 2021.01 does. In the XML module
+// (xml_module.hpp), on the file's bytes.
 #include "interpreter/import/svg.hpp"
 
 #include <algorithm>
@@ -17,6 +18,7 @@
 #include "interpreter/import/formats.hpp"
 #include "interpreter/import/mesh_import.hpp"
 #include "interpreter/import/svg_path.hpp"
+#include "interpreter/import/xml_module/xml_module.hpp"
 
 namespace kerf::eval {
 
@@ -348,8 +350,7 @@ void keep_first_fatal(void*, xmlErrorPtr e) {
 
 }  // namespace
 
-SvgDrawing import_svg(const std::string& path, const SvgOptions& options) {
-    const std::string bytes = mesh_format::MeshFile(path).read_all();
+SvgDrawing module_import_svg(const std::string& bytes, const SvgOptions& options) {
     std::unique_ptr<xmlParserCtxt, void (*)(xmlParserCtxtPtr)> ctxt(xmlNewParserCtxt(), xmlFreeParserCtxt);
     if (!ctxt) throw MeshFormatError("out of memory reading the XML");
     first_fatal.clear();

@@ -5,19 +5,17 @@
 // define the solid and are skipped; curved triangles (<edge> tangents) are
 // read flat and <constellation>s not placed, each with a warning. The
 // root's unit scales to millimetres, except in OpenSCAD's reading (it
-// ignores the unit; a warning says so when it is not millimetres).
+// ignores the unit; a warning says so when it is not millimetres). In the
+// XML module (xml_module.hpp), on the file's bytes (unzipped by kerf).
 #include <cmath>
 #include <cstring>
 #include <map>
 #include <memory>
 
-#include <filesystem>
-
 #include <libxml/xmlreader.h>
-#include <zip.h>
 
 #include "interpreter/import/formats.hpp"
-#include "interpreter/import/mesh_import.hpp"
+#include "interpreter/import/xml_module/xml_module.hpp"
 
 namespace kerf::eval::mesh_format {
 
@@ -164,43 +162,9 @@ private:
     std::map<std::string, int> ignored_;  // element → first line
 };
 
-// A compressed AMF file is a zip archive holding the XML: the entry named
-// like the file, or its only entry (as OpenSCAD 2021.01 looks for it).
-std::string unzip_amf(const std::string& path) {
-    int code = 0;
-    std::unique_ptr<zip_t, void (*)(zip_t*)> z(zip_open(path.c_str(), ZIP_RDONLY, &code), zip_discard);
-    if (!z) {
-        zip_error_t e;
-        zip_error_init_with_code(&e, code);
-        const std::string why = zip_error_strerror(&e);
-        zip_error_fini(&e);
-        throw MeshFormatError("not a readable compressed AMF file: " + why);
-    }
-    const std::string name = std::filesystem::path(path).filename().string();
-    zip_int64_t at = zip_name_locate(z.get(), name.c_str(), ZIP_FL_NOCASE | ZIP_FL_NODIR);
-    if (at < 0 && zip_get_num_entries(z.get(), 0) == 1) at = 0;
-    if (at < 0)
-        throw MeshFormatError("a compressed AMF file must hold one file or one named '" + name + "', this one holds " +
-                              std::to_string(zip_get_num_entries(z.get(), 0)));
-    zip_stat_t st;
-    if (zip_stat_index(z.get(), static_cast<zip_uint64_t>(at), 0, &st) != 0 || !(st.valid & ZIP_STAT_SIZE))
-        throw MeshFormatError(std::string("not a readable compressed AMF file: ") + zip_strerror(z.get()));
-    if (st.size > kMaxImportBytes)  // a zip bomb is refused before it is inflated
-        throw MeshLimitError("the compressed AMF file unpacks to " + std::to_string(st.size) + " bytes, more than " +
-                             std::to_string(kMaxImportBytes >> 20) + " MiB, too large to import");
-    std::unique_ptr<zip_file_t, int (*)(zip_file_t*)> f(zip_fopen_index(z.get(), static_cast<zip_uint64_t>(at), 0),
-                                                        zip_fclose);
-    std::string bytes(static_cast<std::size_t>(st.size), '\0');
-    if (!f || zip_fread(f.get(), bytes.data(), st.size) != static_cast<zip_int64_t>(st.size))
-        throw MeshFormatError(std::string("not a readable compressed AMF file: ") + zip_strerror(z.get()));
-    return bytes;
-}
-
 }  // namespace
 
-ImportedMesh read_amf(const MeshFile& file, const std::string& path, const MeshReading& how) {
-    std::string bytes = file.read_all();
-    if (bytes.substr(0, 4) == std::string_view("PK\x03\x04", 4)) bytes = unzip_amf(path);
+ImportedMesh module_read_amf(const std::string& bytes, const MeshReading& how) {
     // No network, no external entities or DTDs: only the file's own bytes.
     std::unique_ptr<xmlTextReader, void (*)(xmlTextReaderPtr)> reader(
         xmlReaderForMemory(bytes.data(), static_cast<int>(bytes.size()), nullptr, nullptr,

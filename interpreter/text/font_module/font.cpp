@@ -1,5 +1,7 @@
-// fontconfig lookup and the FreeType face cache behind find_font.
+// fontconfig lookup and the FreeType face cache behind find_font, in the
+// font module (font_module.hpp).
 #include "interpreter/text/font.hpp"
+#include "interpreter/text/font_module/font_module.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -59,11 +61,11 @@ bool fontconfig_ready() {
     return fc_ok;
 }
 
-bool register_font_file(const std::string& path) {
+bool module_register_font_file(const std::string& path) {
     return fontconfig_ready() && FcConfigAppFontAddFile(nullptr, reinterpret_cast<const FcChar8*>(path.c_str())) == FcTrue;
 }
 
-Font find_font(std::string_view spec, bool fallback, std::string* substituted) {
+Font module_find_font(std::string_view spec, bool fallback, std::string* substituted) {
     struct stat st {};
     if (spec.empty() && ::stat(kDefaultFile, &st) == 0) return open_face(kDefaultFile, 0);
     const std::string name(spec.empty() ? kDefaultFont : spec);
@@ -101,7 +103,7 @@ Font find_font(std::string_view spec, bool fallback, std::string* substituted) {
         // The default font, not fontconfig's best guess, so
         // that the substitute is the same on every machine.
         if (substituted) *substituted = std::string(kDefaultFont);
-        return find_font("", false, nullptr);
+        return module_find_font("", false, nullptr);
     }
     return open_face(reinterpret_cast<const char*>(file), index);
 }

@@ -1,0 +1,55 @@
+// read_3mf and unzip_amf through the zip module (zip_module/zip_module.hpp),
+// opened on the first call, so that kerf starts without lib3mf, libzip and
+// the libcrypto they bring (docs/performance.md, "Start-up").
+#include <dlfcn.h>
+
+#include <mutex>
+#include <string>
+
+#include "csg/modules.hpp"
+#include "interpreter/import/formats.hpp"
+#include "interpreter/import/module_answer.hpp"
+#include "interpreter/import/zip_module/zip_module.hpp"
+
+namespace kerf::eval::mesh_format {
+
+namespace {
+
+struct ZipModule {
+    Read3mf read_3mf = nullptr;
+    UnzipAmf unzip_amf = nullptr;
+};
+
+// The module, loaded once; a failed load is tried again on the next import.
+const ZipModule& zip_module() {
+    static std::mutex mutex;
+    static ZipModule m;
+    std::lock_guard<std::mutex> lock(mutex);
+    if (m.read_3mf) return m;
+    std::string why;
+    if (void* h = csg::open_module(KERF_ZIP_MODULE_NAME, KERF_ZIP_MODULE_PATH, &why)) {
+        ZipModule got;
+        got.read_3mf = reinterpret_cast<Read3mf>(::dlsym(h, "kerf_zip_read_3mf"));
+        got.unzip_amf = reinterpret_cast<UnzipAmf>(::dlsym(h, "kerf_zip_unzip_amf"));
+        if (got.read_3mf && got.unzip_amf) return m = got;
+        why = "it lacks kerf_zip_read_3mf";
+    }
+    throw MeshFormatError(csg::module_error("3MF and compressed AMF", KERF_ZIP_MODULE_NAME, why));
+}
+
+}  // namespace
+
+ImportedMesh read_3mf(const std::string& path, const MeshReading& how) {
+    ImportedMesh out;
+    std::string error;
+    rethrow_import(zip_module().read_3mf(path, how, out, error), error);
+    return out;
+}
+
+std::string unzip_amf(const std::string& path) {
+    std::string out, error;
+    rethrow_import(zip_module().unzip_amf(path, out, error), error);
+    return out;
+}
+
+}  // namespace kerf::eval::mesh_format
