@@ -72,9 +72,11 @@ inline bool ball_misses(const Ball& ball, const glm::dvec3& o, const glm::dvec3&
     const double h2 = (r * r - glm::dot(c0, c0)) * inv_len2;
     // The chord [tc - h, tc + h] misses [a, b] when the window's gap to tc
     // (positive on at most one side) exceeds h: squared, so no square root
-    // (the pad above dwarfs the rounding either form has).
-    const double gap = std::max(std::max(a - tc, tc - b), 0.0);
-    return !(h2 > 0) | (gap * gap > h2);
+    // (the pad above dwarfs the rounding either form has), and by one
+    // comparison (gap·|gap| is negative when tc lies in the window; NaN
+    // and h² <= 0 miss).
+    const double gap = std::max(a - tc, tc - b);
+    return !(std::min(h2, h2 - gap * std::abs(gap)) > 0);
 }
 
 }  // namespace kerf::render
