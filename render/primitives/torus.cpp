@@ -37,8 +37,8 @@ struct TorusLine {
 };
 
 // The crossing in the piece [a, b] of the chord, where F changes sign once;
-// the inside end t (F(t) < 0) is at or near a minimum of P. Three stages,
-// each cheaper than the sqrt of an F evaluation:
+// the inside end t (F(t) < 0) is at or near a minimum of P, or an end of the
+// window. Three stages, each cheaper than the sqrt of an F evaluation:
 //  1. a quadratic model P(t + δ) ≈ P(t) + P'(t)·δ + A·δ² (A: P''(t)/2, or the
 //     curvature of the chord to the outside end if larger, which keeps the
 //     model's root inside the piece); for a thin tube F is nearly quadratic
@@ -63,8 +63,12 @@ T crossing(const TorusLine<T>& line, const T c[5], T a, T b, bool a_inside, T rr
     const T coarse = std::sqrt(std::numeric_limits<T>::epsilon()) * T(0.01);
     T prev = b - a;
     for (int it = 0; it < 8; ++it) {
-        T dpx;
-        const T step = poly_eval<T, 4>(c, x, dpx) / dpx;
+        // P and P' by Estrin's scheme: half the dependent chain of Horner's,
+        // and this loop is one chain.
+        const T x2 = x * x;
+        const T px = (c[0] + c[1] * x) + x2 * ((c[2] + c[3] * x) + c[4] * x2);
+        const T dpx = (c[1] + T(2) * c[2] * x) + x2 * (T(3) * c[3] + T(4) * c[4] * x);
+        const T step = px / dpx;
         const T next = x - step;
         if (!(next > a && next < b)) break;  // P's rounding or a far start: F takes over
         x = next;
@@ -77,29 +81,6 @@ T crossing(const TorusLine<T>& line, const T c[5], T a, T b, bool a_inside, T rr
     // (ρ'' <= 1/ρ) and the returned derivative is F'·ρ with ρ <= 1.5, so 4
     // bounds |F''|/2·ρ for newton_in_bracket.
     return newton_in_bracket<T>(line, a, b, a_inside, x, tol, 80, rr <= T(0.5) ? T(4) : T(0));
-}
-
-// The crossing in [a, b] (inside at a if a_inside), when only the window
-// [wlo, whi] needs exact roots: a crossing outside it is reported at a point
-// between it and the window (still outside), so rays that start inside a
-// tube or leave the window inside one skip a solve. One F evaluation at a
-// window end inside the piece decides on which side the crossing lies.
-template <typename T>
-T windowed_crossing(const TorusLine<T>& line, const T c[5], T a, T b, bool a_inside, T wlo, T whi, T rr, T tol) {
-    if (b <= wlo) return b;
-    if (a >= whi) return a;
-    T dummy;
-    if (a < wlo) {
-        const bool w_inside = line(wlo, dummy) < T(0);
-        if (w_inside != a_inside) return wlo;  // already crossed before the window
-        a = wlo;
-    }
-    if (b > whi) {
-        const bool w_inside = line(whi, dummy) < T(0);
-        if (w_inside == a_inside) return whi;  // crosses only after the window
-        b = whi;
-    }
-    return crossing(line, c, a, b, a_inside, rr, tol);
 }
 
 }  // namespace
@@ -151,6 +132,27 @@ int intersect_torus(const double* p, const Vec3<T>& o, const Vec3<T>& d, Span<T>
     hi += margin;
 
     const TorusLine<T> line{q, u, rr * rr};
+    const T scale = R / len;  // λ -> t
+    // Only the window [wlo, whi] needs exact roots (spans' contract): the
+    // chord is clipped to it before any turn or root is looked for, so
+    // rays that start inside a tube or leave the window inside one (most
+    // rays into a groove) solve only what they see. A cut end takes its
+    // sign from F; a span through it is reported from or to the window end
+    // (outside the part the caller reads: it padded the window).
+    const T wlo = (wa - tc) / scale, whi = (wb - tc) / scale;
+    T f_lo = T(1), f_hi = T(1);  // the chord's own ends are outside: any positive value does
+    T dummy;
+    if (wlo > lo) {
+        if (!(wlo < hi)) return 0;
+        lo = wlo;
+        f_lo = line(lo, dummy);
+    }
+    if (whi < hi) {
+        if (!(whi > lo)) return 0;
+        hi = whi;
+        f_hi = line(hi, dummy);
+    }
+
     const T uu = glm::dot(u, u), b = glm::dot(q, u);
     const T k = q2 + T(1) - rr * rr;
     const T c[5] = {k * k - T(4) * gamma, T(4) * b * k - T(8) * beta,
@@ -158,19 +160,16 @@ int intersect_torus(const double* p, const Vec3<T>& o, const Vec3<T>& d, Span<T>
     Turn<T> turns[3];
     const int nturn = quartic_turns(c, lo, hi, turns);
 
-    // Walk the monotone pieces; the ends are outside, each sign change of F
-    // is one crossing. F == 0 counts as outside (the surface is not inside).
-    const T scale = R / len;  // λ -> t
+    // Walk the monotone pieces; each sign change of F is one crossing.
+    // F == 0 counts as outside (the surface is not inside).
     const T tol = T(2) * eps;
-    // The window in λ (see windowed_crossing).
-    const T wlo = (wa - tc) / scale, whi = (wb - tc) / scale;
-    bool inside = false;
-    T enter = T(0);
-    T f_prev = T(1);  // the ends are outside: any positive value does
+    bool inside = f_lo < T(0);
+    T enter = lo;
+    T f_prev = f_lo;
     T x_prev = lo;
     int n = 0;
     for (int i = 0; i <= nturn; ++i) {
-        T x = hi, f = T(1);
+        T x = hi, f = f_hi;
         if (i < nturn) {
             // A turn's first point separates the pieces if P there has the
             // sign of the extremum; F has P's sign (P = F·((ρ + 1)² + z² - rr²)
@@ -179,7 +178,6 @@ int intersect_torus(const double* p, const Vec3<T>& o, const Vec3<T>& d, Span<T>
             // grazes are still decided at the extremum. Otherwise (a near
             // miss or a graze) only the extremum itself can tell.
             Turn<T>& turn = turns[i];
-            T dummy;
             f = line(turn.x, dummy);
             const T clear = T(16) * eps * rr;
             if (!(rr < T(1)) || (turn.min ? !(f < -clear) : !(f > clear))) {
@@ -190,7 +188,7 @@ int intersect_torus(const double* p, const Vec3<T>& o, const Vec3<T>& d, Span<T>
         }
         const bool in_b = f < T(0);
         if (in_b != inside) {
-            const T root = windowed_crossing(line, c, x_prev, x, f_prev < T(0), wlo, whi, rr, tol);
+            const T root = crossing(line, c, x_prev, x, f_prev < T(0), rr, tol);
             if (in_b) {
                 enter = root;
             } else if (n < kMaxSpans) {
@@ -201,6 +199,8 @@ int intersect_torus(const double* p, const Vec3<T>& o, const Vec3<T>& d, Span<T>
         f_prev = f;
         x_prev = x;
     }
+    // Still inside at the window's far end: the span runs on beyond it.
+    if (inside && n < kMaxSpans) emit_span(out, n, tc, enter * scale, hi * scale, kPartSide, kPartSide);
     return n;
 }
 

@@ -92,12 +92,15 @@ inline bool unit_chords(const RayState& st, std::uint32_t item, std::uint32_t no
     {
         // Most units the ray's box test lets through miss here: decided
         // without the square root (h < a - tc, h < tc - b), whose latency
-        // was most of their cost.
+        // was most of their cost, and by one branch, whose outcome no
+        // predictor can guess: the window's gap to tc is positive on at
+        // most one side; gap·|gap| is its square there and negative when tc
+        // lies in the window, so min(h², h² - gap·|gap|) > 0 says "the
+        // chord reaches the window" (NaN and h² <= 0 miss).
         const double rr = ball.r + slack_abs + rel * m.w1;
         const double h2 = (rr * rr - m.q2 + 1e-13 * (m.w1 * m.w1 + rr * rr)) * inv_len2;
-        if (!(h2 > 0)) return false;
-        if (m.tc < a && (a - m.tc) * (a - m.tc) > h2) return false;
-        if (m.tc > b && (m.tc - b) * (m.tc - b) > h2) return false;
+        const double gap = std::max(a - m.tc, m.tc - b);
+        if (!(std::min(h2, h2 - gap * std::abs(gap)) > 0)) return false;
     }
     u.m_out = chord(m, ball.r, 1, slack_abs, rel, inv_len2);
     if (!(u.m_out.t0 <= b && u.m_out.t1 >= a)) return false;

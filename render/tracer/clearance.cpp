@@ -24,44 +24,49 @@ double box_distance2(const csg::Aabb& box, const glm::dvec3& x) {
     return glm::dot(out, out);
 }
 
-// Lower bound on the object-space distance from q to the primitive when q
-// is outside it; <= 0 when inside or not known (meshes, quadrics without a
-// simple bound: their box is all we use). Solids of revolution use the
-// meridian plane: for points P, Q at (ρ, z) coordinates, |P - Q| is at least
-// the 2D distance of their (ρ, z), so a 2D bound of the meridian section is
-// a 3D bound.
-double object_clearance(const csg::Leaf& leaf, const glm::dvec3& q) {
+// Whether the object-space distance from q to the primitive is provably
+// more than m >= 0 (q outside it); false when inside or not known (meshes,
+// quadrics without a simple bound: their box is all we use). Where the
+// distance is a square root minus a radius, the squares are compared
+// instead: one square root less on the fast path of every ray that meets a
+// grooved solid. Solids of revolution use the meridian plane: for points
+// P, Q at (ρ, z) coordinates, |P - Q| is at least the 2D distance of their
+// (ρ, z), so a 2D bound of the meridian section is a 3D bound.
+bool object_clear(const csg::Leaf& leaf, const glm::dvec3& q, double m) {
     const double* c = leaf.p;
     switch (leaf.kind) {
-        case PrimKind::Sphere: return std::sqrt(glm::dot(q, q)) - c[0];
+        case PrimKind::Sphere: {
+            const double r = c[0] + m;
+            return glm::dot(q, q) > r * r;
+        }
         case PrimKind::Box: {
             const glm::dvec3 lo(c[0], c[1], c[2]), hi(c[3], c[4], c[5]);
             const glm::dvec3 out = glm::max(glm::max(lo - q, q - hi), glm::dvec3(0.0));
-            return std::sqrt(glm::dot(out, out));
+            return glm::dot(out, out) > m * m;
         }
         case PrimKind::Cylinder: {  // frustum: radius c[2] at z = c[0], c[3] at z = c[1]
             const double h = c[1] - c[0], dr = c[3] - c[2];
-            if (!(h > 0)) return 0;
+            if (!(h > 0)) return false;
             const double rho = std::sqrt(q.x * q.x + q.y * q.y);
             // Signed distance to the side line's outer half-plane, and to the slab.
             const double side = ((rho - c[2]) * h - (q.z - c[0]) * dr) / std::sqrt(h * h + dr * dr);
-            return std::max({side, c[0] - q.z, q.z - c[1]});
+            return std::max({side, c[0] - q.z, q.z - c[1]}) > m;
         }
         case PrimKind::Torus: {
-            const double e = std::sqrt(q.x * q.x + q.y * q.y) - c[0];
-            return std::sqrt(e * e + q.z * q.z) - c[1];
+            const double e = std::sqrt(q.x * q.x + q.y * q.y) - c[0], r = c[1] + m;
+            return e * e + q.z * q.z > r * r;
         }
         case PrimKind::Plane: {
             const double nn = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
-            return (c[0] * q.x + c[1] * q.y + c[2] * q.z - c[3]) / nn;
+            return (c[0] * q.x + c[1] * q.y + c[2] * q.z - c[3]) / nn > m;
         }
         case PrimKind::Paraboloid:
         case PrimKind::Hyperboloid:
         case PrimKind::Mesh:
         case PrimKind::Prism:
-        case PrimKind::Lathe: return 0;
+        case PrimKind::Lathe: return false;
     }
-    return 0;
+    return false;
 }
 
 }  // namespace
@@ -75,7 +80,7 @@ bool RayState::clear_of(std::uint32_t node, const glm::dvec3& x, double margin) 
             // World distance >= object distance / |object_from_world| (the
             // Frobenius norm bounds the spectral one), precomputed per leaf.
             const csg::Leaf& leaf = impl->scene.leaves[n.first];
-            return object_clearance(leaf, leaf.object_from_world.point(x)) > margin * impl->leaf_stretch[n.first];
+            return object_clear(leaf, leaf.object_from_world.point(x), margin * impl->leaf_stretch[n.first]);
         }
         case Op::Union:
             // A big union is left to its BVH: checking every child would cost

@@ -12,6 +12,7 @@
 // would all lie outside the window: the answer, and so the image, is the
 // same; only the work (and the --stats counts) shrink.
 #pragma once
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -69,9 +70,13 @@ inline bool ball_misses(const Ball& ball, const glm::dvec3& o, const glm::dvec3&
     const glm::dvec3 c0 = w - tc * d;  // from the line's closest point to the centre
     const double r = ball.r + slack_abs + slack_rel * (std::abs(w.x) + std::abs(w.y) + std::abs(w.z));
     const double h2 = (r * r - glm::dot(c0, c0)) * inv_len2;
-    if (!(h2 > 0)) return true;
-    const double h = std::sqrt(h2);
-    return tc + h < a || tc - h > b;
+    // The chord [tc - h, tc + h] misses [a, b] when the window's gap to tc
+    // (positive on at most one side) exceeds h: squared, so no square root
+    // (the pad above dwarfs the rounding either form has), and by one
+    // comparison (gap·|gap| is negative when tc lies in the window; NaN
+    // and h² <= 0 miss).
+    const double gap = std::max(a - tc, tc - b);
+    return !(std::min(h2, h2 - gap * std::abs(gap)) > 0);
 }
 
 }  // namespace kerf::render

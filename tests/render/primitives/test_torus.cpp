@@ -280,3 +280,113 @@ TEMPLATE_TEST_CASE("torus: a window gives the same spans inside it", "[prim][tor
         CHECK(moved_ends > windows / 4);  // the window must actually save solves
     }
 }
+
+namespace {
+
+// A windowed torus solve checked against the point-membership oracle on the
+// window alone: span ends inside [wa, wb] lie on the surface (within the
+// K = 16 band of docs/accuracy.md) and every sample of the window farther
+// than the band from the surface is inside exactly when a span covers it.
+// Ends outside the window are free (intersect_leaf's contract), so only
+// the window is sampled. Returns "" or the first failure.
+std::string check_window(const kerf::csg::Leaf& leaf, const dvec3& o, const dvec3& d, double wa, double wb,
+                         int& ends_checked) {
+    using kerf::csg::Span;
+    Span<double> s[kerf::csg::kMaxSpans];
+    const int n = kerf::csg::intersect_leaf<double>(leaf, o, d, s, wa, wb);
+    const double eps = std::numeric_limits<double>::epsilon(), L = extent(leaf), ol = glm::length(o),
+                 dl = glm::length(d);
+    const auto band = [&](double t) { return 16 * eps * (L + ol + std::abs(t) * dl); };
+    char buf[256];
+    const auto where = [&](const char* what, double t) {
+        std::snprintf(buf, sizeof buf, "%s at t=%.17g, window %.17g .. %.17g | ", what, t, wa, wb);
+        return buf + describe(leaf, o, d);
+    };
+    for (int i = 0; i < n; ++i) {
+        if (!(s[i].t0 < s[i].t1)) return where("empty span", s[i].t0);
+        if (i > 0 && !(s[i - 1].t1 < s[i].t0)) return where("spans overlap", s[i].t0);
+        for (const double t : {s[i].t0, s[i].t1}) {
+            if (!(t > wa && t < wb)) continue;
+            ++ends_checked;
+            if (!(std::abs(kerf::csg::surface_distance(leaf, o + t * d)) <= band(t))) return where("end off the surface", t);
+        }
+    }
+    // Inside the window only: a span through an end is reported from or to
+    // (the rounding of) that end.
+    for (int k = 1; k < 64; ++k) {
+        const double t = wa + (wb - wa) * k / 64.0;
+        const dvec3 x = o + t * d;
+        if (std::abs(kerf::csg::surface_distance(leaf, x)) <= band(t)) continue;
+        bool in = false;
+        for (int i = 0; i < n; ++i) in = in || (s[i].t0 < t && t < s[i].t1);
+        if (in != kerf::csg::contains(leaf, x)) return where("membership wrong", t);
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST_CASE("torus: windowed solves at extreme scales, grazing the tube, through the hole, from 1e6 away",
+          "[prim][torus][window][accuracy]") {
+    // The solver clips the chord to the window before looking for turns or
+    // roots; these windows start and end inside the tube, inside the hole,
+    // before and after it, on rays that graze the tube along its length
+    // (tangent to the surface, 1e-9 of r inside or outside), pass through
+    // the hole, or start 1e6 (absolute) from the torus.
+    for (const double s : {1e-3, 1.0, 1e4}) {
+        for (const double ratio : {0.1, 1e-3}) {
+            const double R = s, r = ratio * s;
+            const auto leaf = make_leaf(PrimKind::Torus, {R, r});
+            RayGen gen(907);
+            int rays = 0, hits = 0, ends = 0;
+            for (int i = 0; i < 3000; ++i) {
+                const double phi = gen.uniform(0, 6.283185307179586), psi = gen.uniform(0, 6.283185307179586);
+                const dvec3 radial(std::cos(phi), std::sin(phi), 0), along(-std::sin(phi), std::cos(phi), 0);
+                const dvec3 normal = std::cos(psi) * radial + std::sin(psi) * dvec3(0, 0, 1);
+                const dvec3 surface = R * radial + r * normal;
+                dvec3 aim, u;
+                switch (i % 3) {
+                    case 0: {  // grazing: tangent to the tube at a surface point, just inside or outside
+                        const dvec3 side = glm::cross(normal, along);
+                        const double a = gen.uniform(0, 3.141592653589793);
+                        u = std::cos(a) * along + std::sin(a) * side;
+                        aim = surface + (i % 2 ? 1e-9 : -1e-9) * r * normal;
+                        break;
+                    }
+                    case 1: {  // through the hole, steep or slanted enough to touch the inner wall
+                        aim = (R - r) * gen.uniform(0, 1.05) * radial;
+                        u = glm::normalize(dvec3(0, 0, 1) + gen.uniform(0, 2) * gen.unit());
+                        break;
+                    }
+                    default: {  // aimed inside the tube
+                        aim = R * radial + 0.9 * r * gen.uniform(0, 1) * gen.unit();
+                        u = gen.unit();
+                    }
+                }
+                const double back = i % 5 == 0 ? 1e6 : 3 * (R + r);
+                const dvec3 o = aim - back * u, d = u * gen.uniform(0.5, 2);
+                kerf::csg::Span<double> full[kerf::csg::kMaxSpans];
+                const int nf = kerf::csg::intersect_leaf<double>(leaf, o, d, full);
+                ++rays;
+                if (nf == 0) continue;
+                ++hits;
+                // Windows from the spans' own ends: starting inside a span,
+                // ending inside one, inside a gap (the hole), around all.
+                const double t_aim = back / glm::length(d);
+                const double lo = full[0].t0, hi = full[nf - 1].t1, mid = full[i % nf].t0 + 0.5 * (full[i % nf].t1 - full[i % nf].t0);
+                const double windows[][2] = {{mid, hi + (hi - lo)}, {lo - (hi - lo), mid},
+                                             {mid, mid + 0.25 * (hi - lo)}, {t_aim - 0.5 * (hi - lo), t_aim + 0.5 * (hi - lo)},
+                                             {nf > 1 ? 0.5 * (full[0].t1 + full[1].t0) : mid, hi}};
+                for (const auto& w : windows) {
+                    INFO("scale " << s << " r/R " << ratio << " ray " << i);
+                    const std::string fail = check_window(leaf, o, d, w[0], w[1], ends);
+                    REQUIRE(fail == "");
+                }
+            }
+            INFO("scale " << s << " r/R " << ratio << ": " << hits << " of " << rays << " rays hit, " << ends
+                          << " ends inside windows");
+            CHECK(hits > rays / 2);
+            CHECK(ends > hits);
+        }
+    }
+}

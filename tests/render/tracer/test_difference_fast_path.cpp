@@ -30,10 +30,11 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // inside just after (t = kInf: outside at every sample). Samples are 2.5e-3
 // apart, so a slab thinner than that could hide in front of t; the rays here
 // cross the minuend face at t > 4 and the cuts are far thicker.
-bool is_first_entry(const csg::Scene& s, const glm::dvec3& o, const glm::dvec3& d, double t) {
+// (k: the scene's scale; lengths along the ray scale with it.)
+bool is_first_entry(const csg::Scene& s, const glm::dvec3& o, const glm::dvec3& d, double t, double k = 1) {
     constexpr int kSamples = 4000;
-    constexpr double h = 1e-7;
-    const double t_end = 10, step = t_end / kSamples;
+    const double h = 1e-7 * k;
+    const double t_end = 10 * k, step = t_end / kSamples;
     for (int i = 1; i <= kSamples && step * i < t - h; ++i)
         if (csg_contains(s, o + step * i * d)) return false;
     if (std::isinf(t)) return true;
@@ -43,26 +44,28 @@ bool is_first_entry(const csg::Scene& s, const glm::dvec3& o, const glm::dvec3& 
 // Rays from above onto random points of the box minuend's top face (z = 1),
 // slightly tilted: every answer of intersect() must be the first entry, and
 // occluded() must agree with it. Counts rays whose entry is the face itself
-// (clear) and rays cut deeper (covered).
-void check_rays(const csg::Scene& s, const char* name, std::mt19937_64& rng, int& covered, int& clear) {
+// (clear) and rays cut deeper (covered). The scene may be the unit one
+// moved to c and scaled by k (world = c + k·local).
+void check_rays(const csg::Scene& s, const char* name, std::mt19937_64& rng, int& covered, int& clear, double k = 1,
+                glm::dvec3 c = glm::dvec3(0)) {
     std::uniform_real_distribution<double> u(-1, 1);
     const render::CsgTracer tracer(s, false);
     render::TraceScratch scratch;
     for (int i = 0; i < 1500; ++i) {
-        const glm::dvec3 target(u(rng), u(rng), 1.0);
-        const glm::dvec3 o = target + glm::dvec3(0.3 * u(rng), 0.3 * u(rng), 4.0);
+        const glm::dvec3 target = c + k * glm::dvec3(u(rng), u(rng), 1.0);
+        const glm::dvec3 o = target + k * glm::dvec3(0.3 * u(rng), 0.3 * u(rng), 4.0);
         const glm::dvec3 d = glm::normalize(target - o);
         render::TraceHit hit;
         const bool found = tracer.intersect(render::TraceRay{o, d, 0, kInf}, hit, scratch);
         const double t = found ? hit.t : kInf;
         const double t_face = glm::length(target - o);
-        (t > t_face + 1e-6 ? covered : clear)++;
+        (t > t_face + 1e-6 * k ? covered : clear)++;
         INFO(name << " ray " << i << " first entry " << t << " (the face at " << t_face << ")");
-        CHECK(is_first_entry(s, o, d, t));
+        CHECK(is_first_entry(s, o, d, t, k));
         // Shadow-style query on (0, tfar): blocked exactly when the first
         // entry comes before tfar (the ray starts outside everything).
-        const double tfar = t_face + 0.05 + 0.5 * (u(rng) + 1);
-        if (std::abs(t - tfar) > 1e-6)
+        const double tfar = t_face + k * (0.05 + 0.5 * (u(rng) + 1));
+        if (std::abs(t - tfar) > 1e-6 * k)
             CHECK(tracer.occluded(render::TraceRay{o, d, 0, tfar}, scratch) == (t < tfar));
     }
 }
@@ -123,5 +126,31 @@ TEST_CASE("difference fast path: overlapping and composite subtrahends", "[rende
         INFO(name << ": " << covered << " covered, " << clear << " clear");
         CHECK(covered > 100);
         CHECK(clear > 100);
+    }
+}
+
+TEST_CASE("difference fast path: tiny and huge solids away from the origin", "[render][difference]") {
+    // The clearance proofs compare squared distances (clearance.cpp) in
+    // object space, against the world margin divided by the transform's
+    // stretch: the same sphere, box and torus cuts at 1e-3 and 1e4, 100
+    // sizes from the origin, so that margin is 1e-3 or 1e4 times the unit
+    // scene's and the ray origins are far from the leaves' own origins.
+    for (const double k : {1e-3, 1e4}) {
+        const glm::dvec3 c(100 * k, -60 * k, 30 * k);
+        const glm::dmat4 w = translate(c.x, c.y, c.z) * scale(k, k, k);
+        const std::pair<const char*, csg::Leaf> cuts[] = {
+            {"sphere", sphere(0.5, w * near_top * twist * scale(1.8, 0.6, 1.0))},
+            {"box", box({-0.5, -0.3, -0.4}, {0.4, 0.5, 0.3}, w * near_top * twist * scale(0.4, 1.5, 1.0))},
+            {"torus", make_leaf(PrimKind::Torus, {0.6, 0.3}, w * near_top * twist * scale(1.5, 1.4, 1.0))},
+        };
+        std::mt19937_64 rng(20261205);
+        for (const auto& [name, cut] : cuts) {
+            int covered = 0, clear = 0;
+            const Tree box_minuend = leaf(box({-1, -1, -1}, {1, 1, 1}, w));
+            check_rays(make_scene(op(Op::Difference, {box_minuend, leaf(cut)})), name, rng, covered, clear, k, c);
+            INFO(name << " at scale " << k << ": " << covered << " covered, " << clear << " clear");
+            CHECK(covered > 100);
+            CHECK(clear > 100);
+        }
     }
 }
