@@ -11,7 +11,8 @@ images are byte-identical.
 
 A/B (--against KERF_B): the same scenes rendered at --threads 2 by two
 binaries alternately (a tile size or TBB grain built into each); the median
-of the per-pair ratios B/A of the render time, and whether their images are
+of the per-pair ratios B/A of the render time and of the CPU time, the
+medians of both binaries' CPU times, and whether their images are
 byte-identical.
 
   python3 bench/threads.py [--kerf build/kerf] [--against OTHER_KERF] [--sizes 1024,2048] [--runs 5] [--only REGEX]
@@ -68,8 +69,8 @@ def main():
         print(f"load average at the start: {f.read().split()[0]}\n")
     if a.against:
         print("| scene | size² | A render ms | B render ms | **B / A** (min–max) | A wall ms | B wall ms | "
-              "B / A CPU | same bytes |")
-        print("|---|---:|---:|---:|---:|---:|---:|---:|---|")
+              "A CPU ms | B CPU ms | B / A CPU (min–max) | same bytes |")
+        print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|")
     else:
         print("| scene | size² | 1 thread render ms | 2 threads render ms | **render efficiency** (min–max) | "
               "1 thread wall ms | 2 threads wall ms | wall efficiency | CPU 2 threads / 1 thread | same bytes |")
@@ -95,9 +96,11 @@ def main():
                 cpu = [y[2] / x[2] for x, y in zip(times[0], times[1])]
                 if a.against:
                     ratios = [y / x for x, y in zip(ra, rb)]
+                    ca, cb = [t[2] for t in times[0]], [t[2] for t in times[1]]
                     print(f"| {s.name} | {size} | {med(ra)*1000:.0f} | {med(rb)*1000:.0f} | **{med(ratios):.3f}** "
                           f"({min(ratios):.3f}–{max(ratios):.3f}) | {med(wa)*1000:.0f} | {med(wb)*1000:.0f} | "
-                          f"{med(cpu):.3f} | {'yes' if same else '**no**'} |", flush=True)
+                          f"{med(ca)*1000:.0f} | {med(cb)*1000:.0f} | {med(cpu):.3f} ({min(cpu):.3f}–{max(cpu):.3f}) | "
+                          f"{'yes' if same else '**no**'} |", flush=True)
                 else:
                     eff = [x / (2 * y) for x, y in zip(ra, rb)]
                     weff = [x / (2 * y) for x, y in zip(wa, wb)]

@@ -7,7 +7,8 @@ namespace kerf::render {
 
 CameraModel::CameraModel(const csg::Camera& c, int width, int height)
     : position_(c.position), width_(width), height_(height), orthographic_(c.orthographic),
-      projection_(c.orthographic ? csg::Projection::Planar : c.projection) {
+      projection_(c.orthographic ? csg::Projection::Planar : c.projection),
+      pinhole_(projection_ == csg::Projection::Planar && !c.orthographic) {
     forward_ = c.look_at - c.position;
     if (glm::length(forward_) == 0) forward_ = glm::dvec3(0, 1, 0);  // lowering rejects this; stay finite
     forward_ = glm::normalize(forward_);
@@ -38,7 +39,7 @@ CameraModel::CameraModel(const csg::Camera& c, int width, int height)
     }
 }
 
-bool CameraModel::ray_unnormalised(double px, double py, glm::dvec3& origin, glm::dvec3& direction) const {
+bool CameraModel::ray_other(double px, double py, glm::dvec3& origin, glm::dvec3& direction) const {
     origin = position_;
     switch (projection_) {
         case csg::Projection::Planar: {

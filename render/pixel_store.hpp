@@ -34,10 +34,12 @@ public:
         for (int i = 0; i < 3; ++i) common_bytes_[i] = srgb_byte(srgb_, float(c[i]));
     }
 
-    void color(int x, int y, const glm::dvec3& c) {
+    [[gnu::always_inline]] void color(int x, int y, const glm::dvec3& c) {
         const std::size_t at = index(x, y);
         if (bytes_ && c == common_) {
-            std::copy(common_bytes_, common_bytes_ + 3, &image_.srgb8[at]);
+            // Three stores, not std::copy: that became a memmove call per pixel.
+            std::uint8_t* to = &image_.srgb8[at];
+            to[0] = common_bytes_[0], to[1] = common_bytes_[1], to[2] = common_bytes_[2];
         } else if (bytes_) {
             image_.srgb8[at] = srgb_byte(srgb_, float(c.x));
             image_.srgb8[at + 1] = srgb_byte(srgb_, float(c.y));

@@ -440,6 +440,19 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
                 break;
         }
         paths_done = done;
+    } else if (samples.count() == 1 && !alpha && !ghosts) {
+        // The plain render (1 spp, no alpha, no ghosts): the pixel centre's
+        // ray straight to the shader and the store, the same calls `sample`
+        // and `put` make without their per-pixel branches and counters.
+        complete &= for_each_tile(arena, region, camera, tracer, shadow, states, progress, stack_need, options.cancel, [&](int x, int y, ThreadState& ts, bool traced) {
+            ++ts.rays.primary;
+            glm::dvec3 o, d;
+            if (!traced || !camera.ray_unnormalised(x + 0.5, y + 0.5, o, d)) {
+                store.color(x, y, shader.miss());
+                return;
+            }
+            store.color(x, y, shader.radiance(TraceRay{o, d, 0, std::numeric_limits<double>::infinity()}, 0, ts));
+        });
     } else {
         complete &= for_each_tile(arena, region, camera, tracer, shadow, states, progress, stack_need, options.cancel, [&](int x, int y, ThreadState& ts, bool traced) {
             hits = 0;

@@ -1,6 +1,7 @@
 // The image region in 32×32 tiles over a TBB arena's threads. Each tile
-// first asks whether all its rays miss the scene (tracer/tile_cull.cpp);
-// its pixels are then taken as misses without tracing (`traced` false), and
+// first asks whether all its rays miss the scene (tracer/tile_cull.cpp),
+// and a tile that does not asks again of its 8×8 blocks; the pixels of a
+// tile or block that does are taken as misses without tracing (`traced` false), and
 // get what tracing would give, so a pixel's value never depends on which
 // tile it falls in (crops move tile borders).
 #pragma once
@@ -26,6 +27,49 @@
 namespace kerf::render {
 
 constexpr int kTile = 32;
+// A traced tile is culled again in blocks of 8×8: near the solid's outline
+// a tile is mostly background, and a block's test (its corner rays shared
+// with its neighbours) costs about as much as two background pixels.
+constexpr int kBlock = 8, kBlocks = kTile / kBlock;
+
+// Whether every ray through the rectangle whose corner rays are (o, d), in
+// order round it, misses both the solid and the box `also`.
+inline bool hull_misses(const CsgTracer& tracer, const csg::Aabb& also, const glm::dvec3 (&o)[4],
+                        const glm::dvec3 (&d)[4]) {
+    return tracer.misses_all(o, d) && tile_misses_box(also, o, d);
+}
+
+// traced[j][i]: whether block (i, j) of the tile [x0, x1) × [y0, y1) has a
+// ray that may meet the solid or `also` (else its pixels are background).
+// Only pinhole and orthographic cameras' corners bound the rays between
+// them; other cameras trace everything.
+inline void cull_blocks(const CameraModel& camera, const CsgTracer& tracer, const csg::Aabb& also, int x0, int y0,
+                        int x1, int y1, bool (&traced)[kBlocks][kBlocks]) {
+    const int nx = (x1 - x0 + kBlock - 1) / kBlock, ny = (y1 - y0 + kBlock - 1) / kBlock;
+    bool all = true;
+    if (camera.corners_bound_tiles()) {
+        glm::dvec3 co[4], cd[4];  // the tile's corner rays, in order round it
+        camera.ray(x0, y0, co[0], cd[0]);
+        camera.ray(x1, y0, co[1], cd[1]);
+        camera.ray(x1, y1, co[2], cd[2]);
+        camera.ray(x0, y1, co[3], cd[3]);
+        all = !hull_misses(tracer, also, co, cd);
+    }
+    for (int j = 0; j < kBlocks; ++j)
+        for (int i = 0; i < kBlocks; ++i) traced[j][i] = all;
+    if (!all || !camera.corners_bound_tiles() || (nx == 1 && ny == 1)) return;
+    // The grid of block corners' rays, each found once.
+    glm::dvec3 go[kBlocks + 1][kBlocks + 1], gd[kBlocks + 1][kBlocks + 1];
+    for (int j = 0; j <= ny; ++j)
+        for (int i = 0; i <= nx; ++i)
+            camera.ray(std::min(x0 + i * kBlock, x1), std::min(y0 + j * kBlock, y1), go[j][i], gd[j][i]);
+    for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i) {
+            const glm::dvec3 o[4] = {go[j][i], go[j][i + 1], go[j + 1][i + 1], go[j + 1][i]};
+            const glm::dvec3 d[4] = {gd[j][i], gd[j][i + 1], gd[j + 1][i + 1], gd[j + 1][i]};
+            traced[j][i] = !hull_misses(tracer, also, o, d);
+        }
+}
 
 // Calls pixel(x, y, thread_state, traced) for every pixel of `region`, and
 // progress(fraction) after each tile, serialised; once `*cancel` is set the
@@ -62,17 +106,13 @@ bool for_each_tile(tbb::task_arena& arena, const std::array<int, 4>& region, con
                 if (cancel && cancel->load(std::memory_order_relaxed)) break;
                 const int tx0 = region[0] + (tile % tiles_x) * kTile, ty0 = region[1] + (tile / tiles_x) * kTile;
                 const int tx1 = std::min(tx0 + kTile, region[2]), ty1 = std::min(ty0 + kTile, region[3]);
-                bool traced = true;
-                if (camera.corners_bound_tiles()) {  // else (a lens, a fisheye) the corners bound nothing
-                    glm::dvec3 co[4], cd[4];  // the tile's corner rays, in order round it
-                    camera.ray(tx0, ty0, co[0], cd[0]);
-                    camera.ray(tx1, ty0, co[1], cd[1]);
-                    camera.ray(tx1, ty1, co[2], cd[2]);
-                    camera.ray(tx0, ty1, co[3], cd[3]);
-                    traced = !tracer.misses_all(co, cd) || !tile_misses_box(also, co, cd);
+                // Whether the block's pixels are traced, block by block.
+                bool traced[kBlocks][kBlocks];
+                cull_blocks(camera, tracer, also, tx0, ty0, tx1, ty1, traced);
+                for (int y = ty0; y < ty1; ++y) {
+                    const bool* row = traced[(y - ty0) / kBlock];
+                    for (int x = tx0; x < tx1; ++x) pixel(x, y, ts, row[(x - tx0) / kBlock]);
                 }
-                for (int y = ty0; y < ty1; ++y)
-                    for (int x = tx0; x < tx1; ++x) pixel(x, y, ts, traced);
                 if (progress) {
                     std::lock_guard<std::mutex> lock(progress_mutex);
                     progress(double(++tiles_done) / tiles);

@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cstdio>
 
+#include <emmintrin.h>
 #include <zlib.h>
 
 namespace kerf::render {
@@ -11,6 +12,29 @@ namespace kerf::render {
 namespace {
 
 constexpr unsigned char kSub = 1, kUp = 2;  // PNG filter types
+
+// One deflate stream and one filter buffer per thread, reset for each
+// piece: a fresh deflateInit2 allocates and clears ~260 KB, a fresh buffer
+// is cleared too, and a 2048-row image has 128 pieces. deflateReset leaves
+// the stream as deflateInit2 made it, so the bytes are the same.
+struct Deflater {
+    z_stream zs{};
+    bool ready = false;
+    std::vector<unsigned char> filtered;
+    Deflater() = default;
+    Deflater(const Deflater&) = delete;
+    Deflater& operator=(const Deflater&) = delete;
+    ~Deflater() {
+        if (ready) deflateEnd(&zs);
+    }
+    bool reset() {
+        if (ready) return deflateReset(&zs) == Z_OK;
+        // Level 1 with run-length matching: as fast as level 1 and, on renders
+        // (flat backgrounds, smooth shading), files ~40 % smaller.
+        ready = deflateInit2(&zs, 1, Z_DEFLATED, -15, 8, Z_RLE) == Z_OK;
+        return ready;
+    }
+};
 
 }  // namespace
 
@@ -28,8 +52,11 @@ std::vector<std::array<int, 2>> piece_rows(int first_row, int height) {
 bool deflate_piece(const std::uint8_t* rows, int width, int channels, int count, std::vector<unsigned char>& out,
                    PieceData& piece) {
     const std::size_t stride = std::size_t(width) * std::size_t(channels);
-    std::vector<unsigned char> filtered((stride + 1) * std::size_t(count));
-    unsigned char* f = filtered.data();
+    static thread_local Deflater deflater;
+    const std::size_t length = (stride + 1) * std::size_t(count);
+    if (deflater.filtered.size() < length) deflater.filtered.resize(length);
+    unsigned char* const filtered = deflater.filtered.data();
+    unsigned char* f = filtered;
     for (int y = 0; y < count; ++y) {
         const std::uint8_t* row = rows + stride * std::size_t(y);
         if (y == 0) {
@@ -40,25 +67,29 @@ bool deflate_piece(const std::uint8_t* rows, int width, int channels, int count,
         } else {
             *f++ = kUp;
             const std::uint8_t* above = row - stride;
-            for (std::size_t i = 0; i < stride; ++i) f[i] = std::uint8_t(row[i] - above[i]);
+            // 16 bytes at a time (the compiler's -O2 leaves this loop scalar).
+            std::size_t i = 0;
+            for (; i + 16 <= stride; i += 16) {
+                const __m128i a = _mm_loadu_si128(reinterpret_cast<const __m128i*>(row + i));
+                const __m128i b = _mm_loadu_si128(reinterpret_cast<const __m128i*>(above + i));
+                _mm_storeu_si128(reinterpret_cast<__m128i*>(f + i), _mm_sub_epi8(a, b));
+            }
+            for (; i < stride; ++i) f[i] = std::uint8_t(row[i] - above[i]);
         }
         f += stride;
     }
-    piece.length = filtered.size();
-    piece.adler = std::uint32_t(adler32(1, filtered.data(), uInt(filtered.size())));
-    z_stream zs{};
-    // Level 1 with run-length matching: as fast as level 1 and, on renders
-    // (flat backgrounds, smooth shading), files ~40 % smaller.
-    if (deflateInit2(&zs, 1, Z_DEFLATED, -15, 8, Z_RLE) != Z_OK) return false;
-    out.resize(deflateBound(&zs, uLong(filtered.size())) + 16);
-    zs.next_in = filtered.data();
-    zs.avail_in = uInt(filtered.size());
+    piece.length = length;
+    piece.adler = std::uint32_t(adler32(1, filtered, uInt(length)));
+    if (!deflater.reset()) return false;
+    z_stream& zs = deflater.zs;
+    out.resize(deflateBound(&zs, uLong(length)) + 16);
+    zs.next_in = filtered;
+    zs.avail_in = uInt(length);
     zs.next_out = out.data();
     zs.avail_out = uInt(out.size());
     const int rc = deflate(&zs, Z_SYNC_FLUSH);
     const bool ok = rc == Z_OK && zs.avail_in == 0 && zs.avail_out > 0;
     out.resize(out.size() - zs.avail_out);
-    deflateEnd(&zs);
     piece.data = out.data();
     piece.size = out.size();
     return ok;

@@ -18,12 +18,6 @@ using csg::Node;
 using csg::Op;
 using csg::PrimKind;
 
-double box_distance2(const csg::Aabb& box, const glm::dvec3& x) {
-    // Empty boxes (lo = +inf) give +inf: an empty solid is far from everything.
-    const glm::dvec3 out = glm::max(glm::max(box.lo - x, x - box.hi), glm::dvec3(0.0));
-    return glm::dot(out, out);
-}
-
 // Whether the object-space distance from q to the primitive is provably
 // more than m >= 0 (q outside it); false when inside or not known (meshes,
 // quadrics without a simple bound: their box is all we use). Where the
@@ -71,9 +65,8 @@ bool object_clear(const csg::Leaf& leaf, const glm::dvec3& q, double m) {
 
 }  // namespace
 
-bool RayState::clear_of(std::uint32_t node, const glm::dvec3& x, double margin) const {
+bool RayState::clear_of_within_box(std::uint32_t node, const glm::dvec3& x, double margin) const {
     const Node& n = impl->scene.nodes[node];
-    if (box_distance2(n.bounds, x) > margin * margin) return true;
     const std::uint32_t* kids = n.op == Op::Leaf ? nullptr : impl->scene.children.data() + n.first;
     switch (n.op) {
         case Op::Leaf: {

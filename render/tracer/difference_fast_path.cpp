@@ -38,9 +38,10 @@ FastPath RayState::first_piece_if_clear(const csg::Node& n, std::uint32_t base, 
     std::uint32_t near[kMaxNear], nnear = 0;
     for (std::uint32_t k = 0; k < nsub; ++k) {
         if (clear_of(subs[k], o + probe * d, margin)) continue;
-        if (need != Need::First || nnear == kMaxNear) return FastPath::Unknown;
+        if (nnear == kMaxNear) return FastPath::Unknown;
         near[nnear++] = k;
     }
+    if (nnear > 0 && need != Need::First) return any_piece_if_clear(n, base, sbase, i, a, b, near, nnear);
     if (nnear > 0) {
         // Span i minus the near subtrahends, on the span's part in the window.
         const double wb = std::min(b, piece.t1);
@@ -62,6 +63,48 @@ FastPath RayState::first_piece_if_clear(const csg::Node& n, std::uint32_t base, 
     *st.at(base) = piece;
     st.resize(base + 1);
     return FastPath::Found;
+}
+
+// Any (a shadow ray), with one or two subtrahends near the probe (a ray
+// leaving a groove): span i minus only those, on the window; a piece that
+// overlaps the window by more than 2·eps and whose middle is clear of all
+// the other subtrahends answers (the sliver of eps round it survives them
+// all, as in first_piece_if_clear); no piece overlapping it by more than
+// eps: none can (more subtrahends only shrink the pieces); else not proven.
+FastPath RayState::any_piece_if_clear(const csg::Node& n, std::uint32_t base, std::uint32_t sbase, std::uint32_t i,
+                                      double a, double b, const std::uint32_t* near, std::uint32_t nnear) {
+    SpanStack& st = scratch->stack;
+    const double p0 = std::max(a, st.at(base + i)->t0), p1 = std::min(b, st.at(base + i)->t1);
+    const double margin = 2 * eps * len;
+    const std::uint32_t* subs = &impl->scene.children[n.first + 1];
+    const std::uint32_t nsub = n.count - 1;
+    st.resize(sbase);
+    for (std::uint32_t j = 0; j < nnear; ++j) spans(subs[near[j]], p0, p1, Need::All);
+    int r = 0;
+    const std::uint32_t rbase = subtract_gathered(base + i, 1, sbase, r);
+    bool unsure = false;
+    for (int k = 0; k < r; ++k) {
+        const Span& piece = *st.at(rbase + std::uint32_t(k));
+        const double q0 = std::max(a, piece.t0), q1 = std::min(b, piece.t1);
+        if (!(q1 - q0 > eps)) continue;
+        if (!(q1 - q0 > 2 * eps)) {
+            unsure = true;
+            continue;
+        }
+        const double probe = 0.5 * (q0 + q1);
+        const glm::dvec3 x = o + probe * d;
+        for (std::uint32_t m = 0, j = 0; m < nsub; ++m) {
+            if (j < nnear && near[j] == m) { ++j; continue; }
+            if (!clear_of(subs[m], x, margin)) return FastPath::Unknown;
+        }
+        Span sliver = piece;
+        sliver.t0 = probe - eps;
+        sliver.t1 = probe + eps;
+        *st.at(base) = sliver;
+        st.resize(base + 1);
+        return FastPath::Found;
+    }
+    return unsure ? FastPath::Unknown : FastPath::None;
 }
 
 }  // namespace kerf::render

@@ -36,6 +36,17 @@ enum class FastPath : std::uint8_t {
     None,     // this minuend span has no answer
 };
 
+// The squared distance from x to the box (0 inside). Empty boxes (lo =
+// +inf) give +inf: an empty solid is far from everything.
+inline double box_distance2(const csg::Aabb& box, const glm::dvec3& x) {
+    double sum = 0;
+    for (int i = 0; i < 3; ++i) {
+        const double out = std::max(std::max(box.lo[i] - x[i], x[i] - box.hi[i]), 0.0);
+        sum += out * out;
+    }
+    return sum;
+}
+
 struct RayState {
     const CsgTracer::Impl* impl;
     glm::dvec3 o, d, invd;
@@ -57,12 +68,21 @@ struct RayState {
     // node_spans.cpp: pushes the spans of every node of `accel` the ray
     // crosses on [a, b] (unsorted, possibly overlapping).
     void collect(const Accel& accel, double a, double b);
-    // clearance.cpp: true if x is provably outside the node and farther than
-    // `margin` (world) from it; false if inside, near, or not known.
-    bool clear_of(std::uint32_t node, const glm::dvec3& x, double margin) const;
+    // True if x is provably outside the node and farther than `margin`
+    // (world) from it; false if inside, near, or not known. The node's box
+    // first, here, inline: most calls end there (a groove far from the
+    // entry point), and the full test's call costs more than the box.
+    bool clear_of(std::uint32_t node, const glm::dvec3& x, double margin) const {
+        if (box_distance2(impl->scene.nodes[node].bounds, x) > margin * margin) return true;
+        return clear_of_within_box(node, x, margin);
+    }
+    // clearance.cpp: clear_of for a point within `margin` of the node's box.
+    bool clear_of_within_box(std::uint32_t node, const glm::dvec3& x, double margin) const;
     // difference_fast_path.cpp
     FastPath first_piece_if_clear(const csg::Node& n, std::uint32_t base, std::uint32_t sbase, std::uint32_t i,
                                   double a, double b, Need need);
+    FastPath any_piece_if_clear(const csg::Node& n, std::uint32_t base, std::uint32_t sbase, std::uint32_t i,
+                                double a, double b, const std::uint32_t* near, std::uint32_t nnear);
     // mesh_spans.cpp
     std::uint32_t mesh_spans(std::uint32_t leaf_id, double a, double b);
     // difference_first_entry.cpp

@@ -140,14 +140,18 @@ Departure CsgTracer::departure(const TraceHit& hit, const glm::dvec3& outward) c
 }
 
 bool CsgTracer::occluded(const TraceRay& ray, TraceScratch& scratch, const Departure* from) const {
-    RayState st;
-    if (!make_state(st, impl_.get(), ray, scratch)) return false;
-    TopContext ctx(st, ray);
     // The unit the ray departs from, when it leaves steeply enough: it lies
     // behind the convex leaf's tangent plane, the ray starts in front of it
     // and moves away (t >= tnear >= 0), so that unit has no span here.
-    if (from && ray.tnear >= 0 && glm::dot(from->outward, ray.d) > kDepartureCos * st.len) ctx.skip = from->unit;
+    const bool departs = from && ray.tnear >= 0 && glm::dot(from->outward, ray.d) > kDepartureCos * glm::length(ray.d);
     const std::uint32_t nitems = std::uint32_t(impl_->top.items.size());
+    // A one-unit scene (a grooved sphere, a lens) whose unit the ray departs
+    // from: nothing is left to block it, so no set-up at all.
+    if (departs && nitems == 1 && from->unit == 0 && impl_->top.always.empty()) return false;
+    RayState st;
+    if (!make_state(st, impl_.get(), ray, scratch)) return false;
+    TopContext ctx(st, ray);
+    if (departs) ctx.skip = from->unit;
     for (std::uint32_t i = 0; i < impl_->top.always.size(); ++i)
         if (nitems + i != ctx.skip && unit_blocks(ctx, csg::kNone, impl_->top.always[i])) return true;
     if (!impl_->top.bvh) {

@@ -31,6 +31,29 @@ void sphere_radii(const csg::Scene& scene, std::uint32_t id, double& r_out, doub
     r_in = leaf.p[0] / stretch_bound(leaf.object_from_world.linear);
 }
 
+// The ball around the intersection of balls p and q, when smaller than
+// both: the plane of their circle of intersection cuts the lens into two
+// caps; a cap no more than a hemisphere (its ball's centre on the other
+// side of the plane, or on it) lies in the ball on that circle (points of
+// the cap at height z above the plane are at most a² − z² from its axis).
+// A lens of two spheres (1.2 apart, radii 1) lies in a ball of 0.8, not 1:
+// rays between the two miss the unit without evaluating it.
+Ball lens_ball(const Ball& p, const Ball& q) {
+    const Ball& small = p.r <= q.r ? p : q;
+    const glm::dvec3 axis = q.c - p.c;
+    const double d = glm::length(axis), big = std::max(p.r, q.r);
+    // Nearly concentric: the plane's place would be lost to round-off.
+    if (!(d > 1e-3 * big)) return small;
+    // From p's centre to the plane (round-off ~1e3 ulps of the radii at most).
+    const double x = (d * d + p.r * p.r - q.r * q.r) / (2 * d);
+    if (!(x >= 0 && d - x >= 0)) return small;
+    // a² grown by 1e-12 of the radius², beyond the round-off of x² (a
+    // near-tangent pair's tiny lens keeps a ball of 1e-6 of it at least).
+    const double a = std::sqrt(std::max(0.0, p.r * p.r - x * x) + 1e-12 * big * big);
+    if (!(a < small.r)) return small;
+    return {p.c + (x / d) * axis, a};
+}
+
 Ball node_ball(const csg::Scene& scene, std::uint32_t id, int depth) {
     const csg::Node& n = scene.nodes[id];
     if (depth > 64) return {};  // deep chains: not worth following
@@ -42,10 +65,18 @@ Ball node_ball(const csg::Scene& scene, std::uint32_t id, int depth) {
         }
         case csg::Op::Difference: return node_ball(scene, scene.children[n.first], depth + 1);
         case csg::Op::Intersection: {
+            // The smallest operand ball, or the lens of two of them.
+            std::vector<Ball> balls;
             Ball best;
             for (std::uint32_t k = 0; k < n.count; ++k) {
                 const Ball b = node_ball(scene, scene.children[n.first + k], depth + 1);
-                if (b.r >= 0 && (best.r < 0 || b.r < best.r)) best = b;
+                if (b.r < 0) continue;
+                for (const Ball& other : balls) {
+                    const Ball l = lens_ball(b, other);
+                    if (best.r < 0 || l.r < best.r) best = l;
+                }
+                if (best.r < 0 || b.r < best.r) best = b;
+                if (balls.size() < 8) balls.push_back(b);
             }
             return best;
         }

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "render/camera.hpp"
 #include "render/render.hpp"
 #include "tests/render/same_bytes.hpp"
 #include "tests/render/scene_builder.hpp"
@@ -168,5 +169,56 @@ TEST_CASE("rendering straight to 8-bit sRGB gives the bytes the float image enco
         CHECK(render::is_8bit_output("x.png"));
         CHECK_FALSE(render::is_8bit_output("x.EXR"));
         CHECK_THROWS_AS(render::write_image(bytes, "/tmp/never.exr"), render::ImageWriteError);
+    }
+}
+
+// A plain render (1 spp, no adaptive AA, 8-bit) culls whole tiles and then
+// 8×8 blocks of traced tiles whose rays all miss (render/tiles.hpp). A small
+// sphere off-centre in a wide frame: a pixel shows the background exactly
+// when its centre ray misses the sphere by the closed form (pixels within
+// 1e-9 of its outline are skipped), and crops whose corners are not on
+// any block border give the same bytes as the whole image.
+TEST_CASE("culled blocks are background exactly where the centre rays miss", "[render][cull]") {
+    csg::Scene s = make_scene(leaf(sphere(0.6, translate(0.9, 0.2, 0.4))));
+    s.background = {0.2, 0.3, 0.4};
+    s.camera.position = {2, -7, 3};
+    s.lights.push_back(csg::Light{true, {}, {-1, 1, -2}, {1, 1, 1}, 1});
+    render::RenderOptions o;
+    o.width = 150;
+    o.height = 110;
+    o.srgb8 = true;
+    const render::Image whole = render::render(s, o);
+    REQUIRE(whole.srgb8.size() == std::size_t(150 * 110 * 3));
+    const std::uint8_t* bg = &whole.srgb8[0];  // the corner: background
+    const render::CameraModel camera(s.camera, o.width, o.height);
+    const glm::dvec3 c(0.9, 0.2, 0.4);
+    int hits = 0, misses = 0;
+    for (int y = 0; y < o.height; ++y)
+        for (int x = 0; x < o.width; ++x) {
+            glm::dvec3 ro, rd;
+            REQUIRE(camera.ray(x + 0.5, y + 0.5, ro, rd));
+            // The line's distance from the centre, against the radius.
+            const glm::dvec3 w = c - ro;
+            const double along = glm::dot(w, rd), miss = glm::length(w - along * rd) - 0.6;
+            if (std::abs(miss) < 1e-9 || along <= 0) continue;
+            const std::uint8_t* px = &whole.srgb8[(std::size_t(y) * o.width + x) * 3];
+            const bool background = std::equal(px, px + 3, bg);
+            INFO("pixel " << x << ", " << y << " passes " << miss << " from the sphere");
+            CHECK(background == (miss > 0));
+            (miss > 0 ? misses : hits)++;
+        }
+    CHECK(hits > 300);
+    CHECK(misses > 10000);
+    const std::array<int, 4> crops[] = {{3, 5, 77, 110}, {77, 0, 150, 61}, {77, 61, 150, 110}, {0, 0, 3, 110}, {3, 0, 77, 5}};
+    for (const auto& cr : crops) {
+        o.crop = cr;
+        const render::Image part = render::render(s, o);
+        for (int y = cr[1]; y < cr[3]; ++y)
+            for (int x = cr[0]; x < cr[2]; ++x)
+                for (int ch = 0; ch < 3; ++ch) {
+                    INFO("crop pixel " << x << ", " << y);
+                    REQUIRE(part.srgb8[(std::size_t(y - cr[1]) * part.width + (x - cr[0])) * 3 + ch] ==
+                            whole.srgb8[(std::size_t(y) * o.width + x) * 3 + ch]);
+                }
     }
 }

@@ -77,6 +77,17 @@ Tree minuend() { return leaf(box({-1, -1, -1}, {1, 1, 1})); }
 const glm::dmat4 twist = rotate_deg(27, glm::normalize(glm::dvec3(1, 2, 0.5)));
 const glm::dmat4 near_top = translate(0.1, -0.2, 1.0);
 
+// A groove along the top face: a torus stretched deep, tilted by `deg`.
+Tree groove(double x, double deg) {
+    return leaf(make_leaf(PrimKind::Torus, {0.8, 0.12},
+                          translate(x, 0, 1.0) * rotate_deg(deg, {1, 0, 0}) * scale(1.0, 1.0, 2.5)));
+}
+
+// Two overlapping balls breaking through the top face.
+Tree lumps() {
+    return op(Op::Union, {leaf(sphere(0.3, translate(-0.4, 0.5, 1.1))), leaf(sphere(0.25, translate(-0.1, 0.6, 0.95)))});
+}
+
 }  // namespace
 
 TEST_CASE("difference fast path: first entry and occlusion match point membership for every subtrahend kind",
@@ -104,12 +115,7 @@ TEST_CASE("difference fast path: overlapping and composite subtrahends", "[rende
     // Grooves that cross each other (a ray leaving one groove may land in
     // the next), and subtrahends that are unions, intersections and
     // differences themselves.
-    const auto groove = [](double x, double deg) {
-        return leaf(make_leaf(PrimKind::Torus, {0.8, 0.12},
-                              translate(x, 0, 1.0) * rotate_deg(deg, {1, 0, 0}) * scale(1.0, 1.0, 2.5)));
-    };
-    const Tree lump = op(Op::Union, {leaf(sphere(0.3, translate(-0.4, 0.5, 1.1))),
-                                     leaf(sphere(0.25, translate(-0.1, 0.6, 0.95)))});
+    const Tree lump = lumps();
     const Tree lens = op(Op::Intersection, {leaf(sphere(0.6, translate(0.5, -0.5, 1.3))),
                                             leaf(sphere(0.6, translate(0.5, -0.5, 0.5)))});
     const Tree ring = op(Op::Difference, {leaf(make_leaf(PrimKind::Cylinder, {0.8, 1.2, 0.5, 0.5})),
@@ -153,4 +159,35 @@ TEST_CASE("difference fast path: tiny and huge solids away from the origin", "[r
             CHECK(clear > 100);
         }
     }
+}
+
+// Shadow rays that start inside the cuts (a point of a groove, off the
+// solid) in every direction: the Any query with one or two subtrahends near
+// its probe subtracts only those (difference_fast_path.cpp,
+// any_piece_if_clear). occluded() on (0, tfar) must be blocked exactly when
+// the first entry, checked by point membership, comes before tfar.
+TEST_CASE("difference fast path: shadow rays leaving grooves and lumps", "[render][difference]") {
+    const csg::Scene s = make_scene(op(Op::Difference, {minuend(), groove(-0.3, 0), groove(0.3, 90), lumps()}));
+    const render::CsgTracer tracer(s, false);
+    render::TraceScratch scratch;
+    std::mt19937_64 rng(1301);
+    std::uniform_real_distribution<double> u(-1, 1);
+    int blocked = 0, open = 0;
+    for (int i = 0; i < 8000; ++i) {
+        const glm::dvec3 o(u(rng), u(rng), 0.8 + 0.2 * u(rng));
+        const glm::dvec3 d = glm::normalize(glm::dvec3(u(rng), u(rng), u(rng)) + 1e-3);
+        if (csg_contains(s, o)) continue;
+        render::TraceHit hit;
+        const double t = tracer.intersect(render::TraceRay{o, d, 0, kInf}, hit, scratch) ? hit.t : kInf;
+        INFO("ray " << i << " first entry " << t);
+        CHECK(is_first_entry(s, o, d, t));
+        const double tfar = 0.05 + 1.5 * (u(rng) + 1);
+        if (std::abs(t - tfar) < 1e-6) continue;
+        const bool shadow = tracer.occluded(render::TraceRay{o, d, 0, tfar}, scratch);
+        CHECK(shadow == (t < tfar));
+        (shadow ? blocked : open)++;
+    }
+    INFO(blocked << " blocked, " << open << " open");
+    CHECK(blocked > 800);
+    CHECK(open > 300);
 }

@@ -18,6 +18,7 @@
 // not grown, shows as a missed or late entry or a wrong shadow.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -107,6 +108,29 @@ Crowd cells(RandomCsg& g, const glm::dvec3& at) {
     return c;
 }
 
+// 40 lenses around `at`: two spheres intersected (thin and fat lenses,
+// unequal radii, caps more and less than a hemisphere), under
+// similarities (mirrors too). A lens of two balls lies in the ball on their
+// circle of intersection (unit_balls.cpp, lens_ball), which the solid
+// touches along its rim: ball_from_unit maps the unit sphere onto it, its
+// equator onto the rim.
+Crowd lenses(RandomCsg& g, const glm::dvec3& at) {
+    Crowd c;
+    for (int k = 0; k < 40; ++k) {
+        double r;
+        const glm::dmat4 m = placement(g, at, 0.6, [](RandomCsg&) { return true; }, r);
+        // Centres apart by more than the radii's difference (a rim circle
+        // exists) and less than their sum, a tenth of the smaller radius
+        // from either.
+        const double r2 = r * g.uni(0.7, 1.3), e = 0.1 * std::min(r, r2);
+        const double d = g.uni(std::abs(r - r2) + e, r + r2 - e);
+        c.tree.kids.push_back(op(Op::Intersection, {leaf(sphere(r, m)), leaf(sphere(r2, m * translate(0, 0, d)))}));
+        const double x = (d * d + r * r - r2 * r2) / (2 * d), a = std::sqrt(std::max(0.0, r * r - x * x));
+        c.ball_from_unit.push_back(m * translate(0, 0, x) * scale(a, a, a));
+    }
+    return c;
+}
+
 // Whether t is the solid's first entry along o + t·d on (0, t_end), by point
 // membership alone: outside at every sample before t and just before it,
 // inside just after (t = kInf: outside at every sample).
@@ -119,11 +143,31 @@ bool is_first_entry(const csg::Scene& s, const glm::dvec3& o, const glm::dvec3& 
     return !csg_contains(s, o + (t - h) * d) && csg_contains(s, o + (t + h) * d);
 }
 
-// Rays onto points within ±band (2 %) of a unit sphere's surface, from 6 units
-// away (plus `at`) or, with `from_inside`, every other one from a point in
-// the crowd outside the solid; returns how many of them hit.
-int check_crowd(std::uint64_t seed, const glm::dvec3& at, double h, Crowd (*make)(RandomCsg&, const glm::dvec3&),
-                bool from_inside, bool use_float = false, double band = 0.02) {
+// One ray along o + t·d (unit d) checked against point membership: its
+// first entry, a shadow-style query on (0, tfar) and one towards a light
+// beyond the crowd. Returns 1 if it hits.
+int check_ray(const csg::Scene& s, const render::CsgTracer& tracer, render::TraceScratch& scratch, const glm::dvec3& o,
+              const glm::dvec3& d, double tfar, double h, bool use_float) {
+    render::TraceHit hit;
+    const double t = tracer.intersect(render::TraceRay{o, d, 0, kInf}, hit, scratch) ? hit.t : kInf;
+    INFO("first entry " << t);
+    CHECK(is_first_entry(s, o, d, t, 14, h));
+    // Shadow-style query on (0, tfar): blocked exactly when the first
+    // entry comes before tfar (the ray starts outside the solid).
+    if (tfar > 0 && std::abs(t - tfar) > (use_float ? 100 * h : 1e-6))
+        CHECK(tracer.occluded(render::TraceRay{o, d, 0, tfar}, scratch) == (t < tfar));
+    // And towards a light beyond the crowd (the ball BVH's shadow path,
+    // also from inside the balls): blocked exactly when there is an entry.
+    CHECK(tracer.occluded(render::TraceRay{o, d, 0, 100}, scratch) == std::isfinite(t));
+    return std::isfinite(t) ? 1 : 0;
+}
+
+// Shoots 400 rays at the crowd `make` builds: aim(g, crowd, scene, i, o,
+// d, tfar) gives ray i (false: none) and checks it (check_ray); returns how
+// many of them hit.
+template <class Aim>
+int shoot(std::uint64_t seed, const glm::dvec3& at, double h, Crowd (*make)(RandomCsg&, const glm::dvec3&),
+          bool use_float, Aim&& aim) {
     RandomCsg g(seed);
     const Crowd c = make(g, at);
     const csg::Scene s = make_scene(c.tree);
@@ -131,28 +175,49 @@ int check_crowd(std::uint64_t seed, const glm::dvec3& at, double h, Crowd (*make
     render::TraceScratch scratch;
     int hits = 0;
     for (int i = 0; i < 400; ++i) {
+        glm::dvec3 o, d;
+        double tfar;
+        if (!aim(g, c, s, i, o, d, tfar)) continue;
+        INFO("seed " << seed << " ray " << i);
+        hits += check_ray(s, tracer, scratch, o, d, tfar, h, use_float);
+    }
+    return hits;
+}
+
+// Rays onto points within ±band (2 %) of a unit sphere's surface, from 6 units
+// away (plus `at`) or, with `from_inside`, every other one from a point in
+// the crowd outside the solid; returns how many of them hit.
+int check_crowd(std::uint64_t seed, const glm::dvec3& at, double h, Crowd (*make)(RandomCsg&, const glm::dvec3&),
+                bool from_inside, bool use_float = false, double band = 0.02) {
+    return shoot(seed, at, h, make, use_float, [&](RandomCsg& g, const Crowd& c, const csg::Scene& s, int i,
+                                                   glm::dvec3& o, glm::dvec3& d, double& tfar) {
         const glm::dvec3 u = glm::normalize(glm::dvec3(g.uni(-1, 1), g.uni(-1, 1), g.uni(-1, 1)) + 1e-3);
         const glm::dmat4& m = c.ball_from_unit[std::size_t(g.pick(int(c.ball_from_unit.size())))];
         const glm::dvec3 target = glm::dvec3(m * glm::dvec4(g.uni(1 - band, 1 + band) * u, 1.0));
         const glm::dvec3 dir = glm::normalize(glm::dvec3(g.uni(-1, 1), g.uni(-1, 1), g.uni(-1, 1)) + 1e-3);
-        const glm::dvec3 o = from_inside && i % 2 == 1 ? at + g.uni(0, 1.5) * dir : at + 6.0 * dir;
-        if (csg_contains(s, o) || glm::length(target - o) < 1e-3) continue;
-        const glm::dvec3 d = glm::normalize(target - o);
-        render::TraceHit hit;
-        const double t = tracer.intersect(render::TraceRay{o, d, 0, kInf}, hit, scratch) ? hit.t : kInf;
-        hits += std::isfinite(t) ? 1 : 0;
-        INFO("seed " << seed << " ray " << i << " first entry " << t);
-        CHECK(is_first_entry(s, o, d, t, 14, h));
-        // Shadow-style query on (0, tfar): blocked exactly when the first
-        // entry comes before tfar (the ray starts outside the solid).
-        const double tfar = glm::length(target - o) + g.uni(-0.3, 0.3);
-        if (tfar > 0 && std::abs(t - tfar) > (use_float ? 100 * h : 1e-6))
-            CHECK(tracer.occluded(render::TraceRay{o, d, 0, tfar}, scratch) == (t < tfar));
-        // And towards a light beyond the crowd (the ball BVH's shadow path,
-        // also from inside the balls): blocked exactly when there is an entry.
-        CHECK(tracer.occluded(render::TraceRay{o, d, 0, 100}, scratch) == std::isfinite(t));
-    }
-    return hits;
+        o = from_inside && i % 2 == 1 ? at + g.uni(0, 1.5) * dir : at + 6.0 * dir;
+        if (csg_contains(s, o) || glm::length(target - o) < 1e-3) return false;
+        d = glm::normalize(target - o);
+        tfar = glm::length(target - o) + g.uni(-0.3, 0.3);
+        return true;
+    });
+}
+
+// Rays that graze the rims of a crowd of lenses: in the plane of a lens's
+// rim (tilted by up to 1e-3), passing within 0.2 % of its radius inside the
+// rim circle, so they meet the lens in its thin edge and pass within 0.2 %
+// of its ball's surface; returns how many of them hit.
+int check_lens_rims(std::uint64_t seed, const glm::dvec3& at, double h) {
+    return shoot(seed, at, h, lenses, false, [](RandomCsg& g, const Crowd& c, const csg::Scene& s, int,
+                                                glm::dvec3& o, glm::dvec3& d, double& tfar) {
+        const glm::dmat4& m = c.ball_from_unit[std::size_t(g.pick(int(c.ball_from_unit.size())))];
+        const double th = g.uni(0, 2 * M_PI), inside = 1 - g.uni(0, 2e-3);
+        const glm::dvec3 p(m * glm::dvec4(inside * std::cos(th), inside * std::sin(th), 0, 1));
+        d = glm::normalize(glm::dvec3(m * glm::dvec4(-std::sin(th), std::cos(th), g.uni(-1e-3, 1e-3), 0)));
+        o = p - 6.0 * d;
+        tfar = 6.0 + g.uni(-0.3, 0.3);
+        return !csg_contains(s, o);
+    });
 }
 
 }  // namespace
@@ -201,4 +266,26 @@ TEST_CASE("ball BVH: camera rays grazing a crowd of cells keep every entry", "[r
     for (std::uint64_t seed = 51; seed <= 54; ++seed)
         hits += check_crowd(seed, glm::dvec3(0.0), 1e-7, cells, false, false, 1e-4);
     CHECK(hits > 500);
+}
+
+// Lens-shaped units (sphere ∩ sphere) are rejected by the smaller ball on
+// their rim (unit_balls.cpp, lens_ball): rays at points within ±2 % of that
+// ball, and rays that graze the rims inside it by up to 0.2 %, keep every
+// entry and every shadow (a lens ball 0.1 % too small fails here).
+TEST_CASE("unit balls: rays grazing the rims of a crowd of lenses keep every entry and every shadow",
+          "[render][oracle]") {
+    int hits = 0, rims = 0;
+    for (std::uint64_t seed = 61; seed <= 63; ++seed) {
+        hits += check_crowd(seed, glm::dvec3(0.0), 1e-7, lenses, true);
+        rims += check_lens_rims(seed + 10, glm::dvec3(0.0), 1e-7);
+    }
+    CHECK(hits > 300);
+    CHECK(rims > 600);
+}
+
+TEST_CASE("lens balls far from the origin keep every entry too", "[render][oracle]") {
+    const glm::dvec3 at = 1e6 * glm::normalize(glm::dvec3(0.3, 0.8, -0.5));
+    int rims = 0;
+    for (std::uint64_t seed = 81; seed <= 82; ++seed) rims += check_lens_rims(seed, at, 1e-6);
+    CHECK(rims > 400);
 }
