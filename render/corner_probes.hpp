@@ -1,4 +1,4 @@
-// Adaptive anti-aliasing's corner probes (render.cpp): a candidate pixel
+// Adaptive anti-aliasing's corner probes (adaptive_aa.cpp): a candidate pixel
 // samples its 4 corners, and each corner is a corner of up to 4 pixels;
 // a pixel crossed by one straight edge bisects the 2 sides it crosses, and
 // each side is a side of 2 pixels. Neither corner nor side samples have
@@ -26,7 +26,7 @@ struct CornerProbe {
 };
 
 // Where the look changes along a side, from its first corner (left or
-// top) to its second, found by bisection (render.cpp).
+// top) to its second, found by bisection (adaptive_aa.cpp).
 struct SideProbe {
     bool traced = false;
     bool clean = false;  // every sample looked like exactly one of the side's two corners
