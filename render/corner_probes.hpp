@@ -22,6 +22,7 @@ struct CornerProbe {
     std::uint32_t surface = 0;
     bool on_ground = false;  // ThreadState::on_ground after the sample
     bool traced = false;
+    bool shaded = false;     // `color` and `on_ground` hold the sample's; else only `surface` does
     double cover = 0;        // what the sample added to the pixel's coverage (--alpha)
 };
 
@@ -47,7 +48,7 @@ public:
     void enter(int x0, int y0, std::uint64_t generation) {
         if (x0 == x0_ && y0 == y0_ && generation == generation_) return;
         x0_ = x0, y0_ = y0, generation_ = generation;
-        for (CornerProbe& p : probes_) p.traced = false;
+        for (CornerProbe& p : probes_) p.traced = p.shaded = false;
         for (SideProbe& p : sides_) p.traced = false;
     }
     // The corner (cx, cy) of the current tile: x0 <= cx <= x0 + kTile, the same for y.
