@@ -8,7 +8,12 @@
 // look like its centre it is their mean with the centre; if they fall into
 // two runs round the pixel, one straight edge crosses it, located on its
 // sides (edge_coverage.hpp); else it gets the uniform pattern of
-// RenderOptions::aa_samples (the pixel `--spp 16` gives). The decision
+// RenderOptions::aa_samples (the pixel `--spp 16` gives). A candidate
+// only by surfaces (each neighbour hit another surface or looks like it)
+// compares surfaces alone: its corners and sides are traced unshaded,
+// corners its centre and two side neighbours share a surface with are not
+// traced (a straight edge cannot reach them), and a located edge's far
+// side takes the colour of one shaded corner (adaptive_aa.cpp). The decision
 // reads only first-pass values of full-image coordinates and samples
 // without jitter, so the thread count and a crop never change a pixel: the
 // first pass covers the region plus a one-pixel ring.
@@ -73,6 +78,10 @@ public:
             if (((up[0] ^ l) | (up[1] ^ l) | (up[2] ^ l) | (c[-1] ^ l) | (c[1] ^ l) | (down[0] ^ l) | (down[1] ^ l) |
                  (down[2] ^ l)) == 0)
                 return false;
+            // A gradient: each neighbour within the threshold.
+            for (const std::uint64_t d : {up[0], up[1], up[2], c[-1], c[1], down[0], down[1], down[2]})
+                if (d != l && !alike(d, l, threshold)) return true;
+            return false;
         }
         for (int ny = std::max(y0_, y - 1); ny <= std::min(y1_ - 1, y + 1); ++ny)
             for (int nx = std::max(x0_, x - 1); nx <= std::min(x1_ - 1, x + 1); ++nx) {
@@ -82,6 +91,27 @@ public:
             }
         return false;
     }
+
+    // Whether pixel (x, y), a candidate, is one only by surfaces: each of
+    // its 8 neighbours hit another surface than its centre or looks like
+    // it. Then no shading edge runs next to it that the centres can see.
+    bool by_surface(int x, int y, int threshold) const {
+        const std::uint64_t l = looks_[index(x, y)];
+        for (int ny = std::max(y0_, y - 1); ny <= std::min(y1_ - 1, y + 1); ++ny)
+            for (int nx = std::max(x0_, x - 1); nx <= std::min(x1_ - 1, x + 1); ++nx) {
+                const std::uint64_t d = looks_[index(nx, ny)];
+                if (d >> 32 == l >> 32 && !alike(d, l, threshold)) return false;
+            }
+        return true;
+    }
+    // Whether the centres of pixels (x, y) and (nx, ny) saw one surface
+    // (false when (nx, ny) lies outside the first pass).
+    bool same_surface(int x, int y, int nx, int ny) const {
+        if (nx < x0_ || nx >= x1_ || ny < y0_ || ny >= y1_) return false;
+        return looks_[index(x, y)] >> 32 == looks_[index(nx, ny)] >> 32;
+    }
+    // The surface pixel (x, y)'s centre sample hit (0: none).
+    std::uint32_t surface(int x, int y) const { return std::uint32_t(looks_[index(x, y)] >> 32); }
 
     // Whether a sample (colour c, surface) looks like pixel (x, y)'s centre.
     bool looks_alike(int x, int y, const glm::dvec3& c, std::uint32_t surface, int threshold) const {

@@ -1,4 +1,4 @@
-// Adaptive anti-aliasing's corner probes (render.cpp): a candidate pixel
+// Adaptive anti-aliasing's corner probes (adaptive_aa.cpp): a candidate pixel
 // samples its 4 corners, and each corner is a corner of up to 4 pixels;
 // a pixel crossed by one straight edge bisects the 2 sides it crosses, and
 // each side is a side of 2 pixels. Neither corner nor side samples have
@@ -22,11 +22,12 @@ struct CornerProbe {
     std::uint32_t surface = 0;
     bool on_ground = false;  // ThreadState::on_ground after the sample
     bool traced = false;
+    bool shaded = false;     // `color` and `on_ground` hold the sample's; else only `surface` does
     double cover = 0;        // what the sample added to the pixel's coverage (--alpha)
 };
 
 // Where the look changes along a side, from its first corner (left or
-// top) to its second, found by bisection (render.cpp).
+// top) to its second, found by bisection (adaptive_aa.cpp).
 struct SideProbe {
     bool traced = false;
     bool clean = false;  // every sample looked like exactly one of the side's two corners
@@ -47,7 +48,7 @@ public:
     void enter(int x0, int y0, std::uint64_t generation) {
         if (x0 == x0_ && y0 == y0_ && generation == generation_) return;
         x0_ = x0, y0_ = y0, generation_ = generation;
-        for (CornerProbe& p : probes_) p.traced = false;
+        for (CornerProbe& p : probes_) p.traced = p.shaded = false;
         for (SideProbe& p : sides_) p.traced = false;
     }
     // The corner (cx, cy) of the current tile: x0 <= cx <= x0 + kTile, the same for y.

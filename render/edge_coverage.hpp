@@ -1,8 +1,8 @@
-// Adaptive anti-aliasing's straight edges (render.cpp, docs/quality.md): a
+// Adaptive anti-aliasing's straight edges (adaptive_aa.cpp, docs/quality.md): a
 // candidate pixel whose corners show two surfaces, one run of corners each
 // around the pixel, is crossed by one edge that enters and leaves through
 // the two sides where the run changes. Where it crosses each side is found
-// by bisection along the side (render.cpp); here, the share of the pixel on
+// by bisection along the side (adaptive_aa.cpp); here, the share of the pixel on
 // each side of the straight line through the two crossings.
 #pragma once
 #include <array>

@@ -13,6 +13,7 @@
 #include <atomic>
 #include <functional>
 #include <mutex>
+#include <utility>
 
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
@@ -124,5 +125,29 @@ bool for_each_tile(tbb::task_arena& arena, const std::array<int, 4>& region, con
     });
     return !short_stack;
 }
+
+// `progress` for a pass that covers the fractions from..to of the render.
+inline std::function<void(double)> progress_part(const std::function<void(double)>& progress, double from, double to) {
+    if (!progress) return {};
+    return [&progress, from, to](double f) { progress(from + (to - from) * f); };
+}
+
+// What every pass of one render shares: for_each_tile's arguments but the
+// region, the progress and the pixel.
+struct TilePasses {
+    tbb::task_arena& arena;
+    const CameraModel& camera;
+    const CsgTracer& tracer;
+    const csg::Aabb& also;
+    tbb::enumerable_thread_specific<ThreadState>& states;
+    std::size_t stack_need;
+    const std::atomic<bool>* cancel;
+
+    template <class Pixel>
+    bool run(const std::array<int, 4>& region, const std::function<void(double)>& progress, Pixel&& pixel) const {
+        return for_each_tile(arena, region, camera, tracer, also, states, progress, stack_need, cancel,
+                             std::forward<Pixel>(pixel));
+    }
+};
 
 }  // namespace kerf::render

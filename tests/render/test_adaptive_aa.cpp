@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "render/adaptive.hpp"
 #include "render/render.hpp"
 #include "tests/render/scene_builder.hpp"
 
@@ -106,8 +107,34 @@ render::RenderOptions options(int size, bool adaptive, int spp) {
 }
 
 bool same_bytes(const render::Image& a, const render::Image& b) {
-    return a.width == b.width && a.height == b.height &&
-           std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(float)) == 0;
+    return a.width == b.width && a.height == b.height && a.pixels.size() == b.pixels.size() &&
+           a.srgb8.size() == b.srgb8.size() &&
+           std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(float)) == 0 &&
+           std::memcmp(a.srgb8.data(), b.srgb8.data(), a.srgb8.size()) == 0;
+}
+
+// Edge's half-plane (material 0) and the other half beside it (material
+// 1, `grey` × white): two surfaces meeting along Edge's line, both lit.
+csg::Scene two_halves(const Edge& e, double grey, csg::Material first) {
+    csg::Material second = first;
+    second.color = second.interior = {grey, grey, grey};
+    second.pattern = csg::Pattern::None;
+    const glm::dmat4 turn = rotate_deg(e.angle_deg, {0, 0, 1});
+    csg::Scene s = make_scene(op(Op::Union, {leaf(box({-100, -100, -1}, {0, 100, 0}, turn, 0)),
+                                             leaf(box({0, -100, -1}, {100, 100, 0}, turn, 1))}),
+                              {first, second});
+    s.background = e.scene.background;
+    s.camera = e.scene.camera;
+    s.lights = e.scene.lights;
+    return s;
+}
+
+csg::Material matte_white() {
+    csg::Material m;
+    m.color = m.interior = {1, 1, 1};
+    m.specular = 0;
+    m.diffuse = 1;
+    return m;
 }
 
 }  // namespace
@@ -189,6 +216,62 @@ TEST_CASE("adaptive AA locates an edge between two looks of one surface, against
     }
 }
 
+TEST_CASE("adaptive AA locates an edge between two lit surfaces by surface alone, against the exact area", "[render][aa]") {
+    // Both sides are solid: the candidates' corners and sides trace only
+    // surfaces, and the far side's colour is one shaded corner.
+    for (const double angle : {7.0, 20.0, 45.0, 71.0}) {
+        const Edge e(angle);
+        const csg::Scene s = two_halves(e, 0.3, matte_white());
+        render::RenderStats st;
+        const render::Image adaptive = render::render(s, options(e.size, true, 1), &st);
+        const render::Image sixteen = render::render(s, options(e.size, false, 16));
+        double err = 0, err16 = 0, worst = 0;
+        int pixels = 0;
+        for (int y = 0; y < e.size; ++y)
+            for (int x = 0; x < e.size; ++x) {
+                const double c = e.coverage(x, y);
+                const double exact = e.shade * (c + (1 - c) * 0.3);
+                if (c > 0 && c < 1) {
+                    const double d = std::abs(adaptive.at(x, y, 0) - exact);
+                    err += d, err16 += std::abs(sixteen.at(x, y, 0) - exact), worst = std::max(worst, d);
+                    ++pixels;
+                } else if (!e.touches(x, y)) {
+                    CHECK(adaptive.at(x, y, 0) == Approx(exact).margin(1e-6));
+                }
+            }
+        INFO("angle " << angle << ": edge pixels " << pixels << ", mean error " << err / pixels << ", 16 spp "
+                      << err16 / pixels << " (worst " << worst << "), located " << st.edge_pixels << ", refined "
+                      << st.refined_pixels);
+        REQUIRE(pixels >= e.size);
+        CHECK(st.edge_pixels >= std::uint64_t(pixels / 2));
+        CHECK(err <= err16 * 0.6);
+        CHECK(worst < 0.1);
+    }
+}
+
+TEST_CASE("adaptive AA tells a candidate by surfaces from one by looks", "[render][aa]") {
+    // A 3 × 3 image: the centre pixel's neighbours all hit its surface and
+    // look alike, but for one of another surface: a candidate by surfaces.
+    render::CentreSamples c({0, 0, 3, 3}, 3, 3);
+    const int threshold = 13;
+    for (int y = 0; y < 3; ++y)
+        for (int x = 0; x < 3; ++x) c.set(x, y, glm::dvec3(0.5), 1);
+    CHECK_FALSE(c.needs_more(1, 1, threshold));
+    c.set(2, 1, glm::dvec3(0.1), 2);
+    CHECK(c.needs_more(1, 1, threshold));
+    CHECK(c.by_surface(1, 1, threshold));
+    CHECK(c.surface(1, 1) == 1);
+    CHECK(c.surface(2, 1) == 2);
+    // A neighbour of the same surface a little brighter (within the
+    // threshold) changes nothing; one beyond it (a shading edge) makes
+    // the candidate one by looks.
+    c.set(0, 0, glm::dvec3(0.52), 1);
+    CHECK(c.by_surface(1, 1, threshold));
+    c.set(0, 1, glm::dvec3(0.9), 1);
+    CHECK(c.needs_more(1, 1, threshold));
+    CHECK_FALSE(c.by_surface(1, 1, threshold));
+}
+
 TEST_CASE("adaptive AA does not take a corner of the solid inside a pixel for a straight edge", "[render][aa]") {
     // The quadrant x < u, y < v (world units = pixels, as Edge) whose corner
     // lies inside pixel (16, 15) at many places: its corners show one
@@ -226,23 +309,61 @@ TEST_CASE("adaptive AA does not take a corner of the solid inside a pixel for a 
     CHECK(sum <= sum16 * 1.05 + 1e-9);
 }
 
-TEST_CASE("adaptive AA gives the same bytes for any thread count and any crop", "[render][aa][determinism]") {
-    const Edge e(33);
-    csg::Scene s = e.scene;
-    render::RenderOptions o = options(e.size, true, 1);
-    o.threads = 1;
-    const render::Image one = render::render(s, o);
+namespace {
+
+// `o` (1 thread) gives the same bytes at 2 and 7 threads, and a crop of it
+// the same bytes as the whole image there (its pixels decide from
+// neighbours outside the crop, exactly as in the whole image).
+void check_threads_and_crop(const csg::Scene& s, render::RenderOptions o, const render::Image& one,
+                            std::array<int, 4> crop) {
     o.threads = 2;
     CHECK(same_bytes(one, render::render(s, o)));
     o.threads = 7;
     CHECK(same_bytes(one, render::render(s, o)));
-    // A crop whose border runs along the edge: its pixels decide from
-    // neighbours outside the crop, exactly as in the whole image.
-    o.crop = std::array<int, 4>{10, 3, 23, 29};
+    o.crop = crop;
     const render::Image part = render::render(s, o);
     for (int y = 0; y < part.height; ++y)
         for (int x = 0; x < part.width; ++x)
-            for (int c = 0; c < 3; ++c) CHECK(part.at(x, y, c) == one.at(10 + x, 3 + y, c));
+            for (int c = 0; c < 3; ++c) {
+                const std::size_t at = std::size_t(y * part.width + x) * 3 + c;
+                const std::size_t whole = std::size_t((crop[1] + y) * one.width + crop[0] + x) * 3 + c;
+                if (o.srgb8) CHECK(part.srgb8[at] == one.srgb8[whole]);
+                else CHECK(part.at(x, y, c) == one.at(crop[0] + x, crop[1] + y, c));
+            }
+}
+
+}  // namespace
+
+TEST_CASE("adaptive AA gives the same bytes for any thread count and any crop", "[render][aa][determinism]") {
+    const Edge e(33);
+    render::RenderOptions o = options(e.size, true, 1);
+    o.threads = 1;
+    // A crop whose border runs along the edge.
+    check_threads_and_crop(e.scene, o, render::render(e.scene, o), {10, 3, 23, 29});
+}
+
+TEST_CASE("adaptive AA gives the same bytes for any thread count and crop where surface and look edges meet",
+          "[render][aa][determinism]") {
+    // Two surfaces (by surface) and stripes across one of them (by looks)
+    // crossing inside the image: probes traced by one kind of candidate and
+    // shaded later by the other are shared within a tile, never between.
+    const Edge e(33);
+    csg::Material striped = matte_white();
+    striped.color2 = {0.2, 0.2, 0.2};
+    striped.pattern = csg::Pattern::Stripes;
+    striped.pattern_from_material.linear = glm::dmat3(rotate_deg(-80, {0, 0, 1})) / 7.0;
+    const csg::Scene s = two_halves(e, 0.5, striped);
+    for (const bool bytes : {false, true}) {
+        render::RenderOptions o = options(70, true, 1);
+        o.srgb8 = bytes;
+        o.threads = 1;
+        render::RenderStats st;
+        const render::Image one = render::render(s, o, &st);
+        INFO("8-bit " << bytes << ": located " << st.edge_pixels << ", refined " << st.refined_pixels);
+        CHECK(st.edge_pixels > 50);
+        CHECK(st.refined_pixels > 0);
+        check_threads_and_crop(s, o, one, {9, 17, 61, 50});
+    }
 }
 
 TEST_CASE("adaptive AA refuses a cap below 2 and a threshold outside 0..1", "[render][aa]") {

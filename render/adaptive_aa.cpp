@@ -1,0 +1,362 @@
+#include "render/adaptive_aa.hpp"
+
+#include <cmath>
+#include <optional>
+
+#include "render/adaptive.hpp"
+#include "render/corner_probes.hpp"
+#include "render/edge_coverage.hpp"
+
+namespace kerf::render {
+
+namespace {
+
+// The second pass over one render's candidates; the probes are the
+// calling thread's (one tile at a time, corner_probes.hpp).
+class Refinement {
+public:
+    Refinement(const PixelSampler& sampler, const CentreSamples& centres, const RenderOptions& options,
+               const std::array<int, 4>& region)
+        : sampler_(sampler), centres_(centres), region_(region), srgb8_(options.srgb8),
+          refine_(options.aa_samples), threshold_(int(std::lround(options.aa_threshold * 255))),
+          // A straight edge located to 1/2^steps of a side: 1/16 for the
+          // default 16 samples, as fine as their 4 × 4 strata.
+          steps_(std::max(1, int(std::ceil(std::log2(double(options.aa_samples)))))),
+          // Coverage counts shaded samples; ghosts change a look without a
+          // surface: both keep every probe shaded.
+          surfaces_(!sampler.alpha() && !sampler.ghosts()),
+          generation_(CornerProbes::next_generation()) {}
+
+    void pixel(int x, int y, ThreadState& ts, bool traced) const;
+
+private:
+    // What a probe looks like to the first pass: the ground as a miss.
+    bool alike(const CornerProbe& a, const CornerProbe& b) const {
+        return centres_.alike(a.on_ground ? sampler_.miss() : a.color, a.surface,
+                              b.on_ground ? sampler_.miss() : b.color, b.surface, threshold_);
+    }
+    bool like_centre(int x, int y, const CornerProbe& p) const {
+        return centres_.looks_alike(x, y, p.on_ground ? sampler_.miss() : p.color, p.surface, threshold_);
+    }
+    // A sample through (px, py) with what the first pass compares: its
+    // look, surface and whether it saw the ground.
+    CornerProbe probe_at(double px, double py, ThreadState& ts, bool traced) const {
+        CornerProbe p;
+        ts.on_ground = false;
+        p.color = sampler_.sample(px, py, ts, traced, &p.surface);
+        p.on_ground = ts.on_ground;
+        return p;
+    }
+    CornerProbe& corner(int cx, int cy, ThreadState& ts, bool traced, bool shade) const;
+    glm::dvec3 centre_color(int x, int y, ThreadState& ts, bool traced) const;
+    glm::dvec3 corner_color(int x, int y, int corner_i, ThreadState& ts, bool traced) const;
+    std::optional<glm::dvec3> surface_mean(int x, int y, ThreadState& ts, bool traced) const;
+    int like(double px, double py, const CornerProbe& p, const CornerProbe& q, ThreadState& ts, bool traced,
+             std::optional<glm::dvec3>& color) const;
+    const SideProbe& side(int cx, int cy, bool vertical, ThreadState& ts, bool traced) const;
+    std::optional<glm::dvec3> straight_edge(int x, int y, const std::array<const CornerProbe*, 4>& k, bool by_surface,
+                                            ThreadState& ts, bool traced) const;
+
+    static CornerProbes& probes() {
+        static thread_local CornerProbes p;
+        return p;
+    }
+
+    const PixelSampler& sampler_;
+    const CentreSamples& centres_;
+    const std::array<int, 4> region_;
+    const bool srgb8_;
+    const SamplePattern refine_;
+    const int threshold_;
+    const int steps_;
+    const bool surfaces_;
+    const std::uint64_t generation_;
+};
+
+// The corner (cx, cy) of the current tile, traced once: its surface, and
+// if `shade`, its colour (shaded once, when a pixel first needs it).
+CornerProbe& Refinement::corner(int cx, int cy, ThreadState& ts, bool traced, bool shade) const {
+    CornerProbe& p = probes().at(cx, cy);
+    if (p.shaded) {
+        PixelSampler::set_covered(PixelSampler::covered() + (sampler_.alpha() ? p.cover : 0.0));
+    } else if (shade) {
+        PixelSampler::set_last_cover(0);  // a culled sample traces nothing and covers nothing
+        p = probe_at(cx, cy, ts, traced);
+        p.cover = PixelSampler::last_cover();
+        p.traced = p.shaded = true;
+    } else if (!p.traced) {
+        p.surface = sampler_.surface(cx, cy, ts, traced);
+        p.traced = true;
+    }
+    return p;
+}
+
+// The centre sample's colour. An 8-bit image stores it to 8 bits anyway:
+// decoded from its look, not traced again (a mean of 5 moves by at most a
+// tenth of a code). Float images trace it again.
+glm::dvec3 Refinement::centre_color(int x, int y, ThreadState& ts, bool traced) const {
+    const std::optional<glm::dvec3> kept = srgb8_ && !sampler_.alpha() ? centres_.color(x, y) : std::nullopt;
+    return kept ? *kept : sampler_.sample(x + 0.5, y + 0.5, ts, traced, nullptr);
+}
+
+// The colour at corner `corner_i` (round the pixel) of pixel (x, y),
+// shaded as one sample of a pixel is: not `refining`, whichever pixel asks
+// first. (The centre colour of a neighbour that saw the same surface, free
+// from the first pass, was tried instead: the error at 384² rose above 16
+// uniform samples' on small shell 0.19 → 0.26, large shell 0.35 → 0.51 and
+// holes_40 1.29 → 1.56 RMSE codes.)
+glm::dvec3 Refinement::corner_color(int x, int y, int corner_i, ThreadState& ts, bool traced) const {
+    const bool refining = ts.refining;
+    ts.refining = false;
+    const glm::dvec3 c = corner(x + (corner_i == 1 || corner_i == 2), y + (corner_i >= 2), ts, traced, true).color;
+    ts.refining = refining;
+    return c;
+}
+
+// The pattern of aa_samples by surfaces: each sample's surface traced,
+// each surface's colour taken once (the centre's, else the first sample
+// that saw it, shaded as a pixel's one sample). Nothing when the samples
+// saw more surfaces than it keeps.
+std::optional<glm::dvec3> Refinement::surface_mean(int x, int y, ThreadState& ts, bool traced) const {
+    constexpr int kKept = 16;
+    std::uint32_t seen[kKept];
+    glm::dvec2 first[kKept];
+    int count[kKept], kinds = 0;
+    const int n = refine_.count();
+    std::uint64_t rng = SamplePattern::pixel_rng(sampler_.seed(), x, y);
+    for (int i = 0; i < n; ++i) {
+        const glm::dvec2 at = glm::dvec2(x, y) + refine_.offset(i, rng);
+        const std::uint32_t id = sampler_.surface(at.x, at.y, ts, traced);
+        int j = 0;
+        while (j < kinds && seen[j] != id) ++j;
+        if (j == kinds) {
+            if (kinds == kKept) return std::nullopt;
+            seen[kinds] = id, first[kinds] = at, count[kinds++] = 0;
+        }
+        ++count[j];
+    }
+    const bool refining = ts.refining;
+    ts.refining = false;
+    glm::dvec3 sum(0.0);
+    for (int j = 0; j < kinds; ++j)
+        sum += double(count[j]) * (seen[j] == centres_.surface(x, y) ? centre_color(x, y, ts, traced)
+                                                                     : sampler_.sample(first[j].x, first[j].y, ts, traced));
+    ts.refining = refining;
+    return sum / double(n);
+}
+
+// Which of two probes p and q of different looks a sample through (px, py)
+// looks like: 0 (p), 1 (q) or -1 (both or neither: a third surface, a
+// gradient). Between two surfaces the surface alone decides, and the
+// sample is not shaded (`color` stays empty); between two looks of one
+// surface (a shadow's edge) or under ghosts, the look, and `color` gets
+// the sample's.
+int Refinement::like(double px, double py, const CornerProbe& p, const CornerProbe& q, ThreadState& ts, bool traced,
+                     std::optional<glm::dvec3>& color) const {
+    if (p.surface != q.surface && !sampler_.ghosts()) {
+        const std::uint32_t seen = sampler_.surface(px, py, ts, traced);
+        return seen == p.surface ? 0 : seen == q.surface ? 1 : -1;
+    }
+    const CornerProbe probe = probe_at(px, py, ts, traced);
+    const bool like_p = alike(probe, p), like_q = alike(probe, q);
+    if (like_p == like_q) return -1;
+    color = probe.color;
+    return like_q;
+}
+
+// Where the look changes along the side from corner (cx, cy) to the next
+// one right (or down): bisection.
+const SideProbe& Refinement::side(int cx, int cy, bool vertical, ThreadState& ts, bool traced) const {
+    SideProbe& s = probes().side(cx, cy, vertical);
+    if (s.traced) return s;
+    const CornerProbe &p = probes().at(cx, cy), &q = probes().at(cx + !vertical, cy + vertical);
+    s = SideProbe{};
+    s.traced = s.clean = true;
+    s.sum[0] = s.sum[1] = glm::dvec3(0.0);
+    double lo = 0, hi = 1;
+    for (int i = 0; i < steps_; ++i) {
+        const double m = (lo + hi) / 2;
+        std::optional<glm::dvec3> color;
+        const int seen = like(cx + (vertical ? 0 : m), cy + (vertical ? m : 0), p, q, ts, traced, color);
+        if (seen < 0) {
+            s.clean = false;
+            break;
+        }
+        (seen == 0 ? lo : hi) = m;
+        if (color) s.sum[seen] += *color, ++s.count[seen];
+    }
+    s.at = (lo + hi) / 2;
+    return s;
+}
+
+// Pixel (x, y)'s colour if one straight edge crosses it (`k`: its corners
+// in order round it), else nothing. `by_surface`: the corners hold only
+// their surfaces, which alone tell the two sides apart, and each side's
+// colour is one sample of it (the centre, a corner) instead of the mean of
+// its samples.
+std::optional<glm::dvec3> Refinement::straight_edge(int x, int y, const std::array<const CornerProbe*, 4>& k,
+                                                    bool by_surface, ThreadState& ts, bool traced) const {
+    auto same = [&](const CornerProbe& p, const CornerProbe& q) { return by_surface ? p.surface == q.surface : alike(p, q); };
+    auto as_centre = [&](const CornerProbe& p) {
+        return by_surface ? p.surface == centres_.surface(x, y) : like_centre(x, y, p);
+    };
+    std::array<bool, 4> a{};  // like corner 0 (class A), else like corner b (class B)
+    int b = -1;
+    for (int i = 0; i < 4; ++i) {
+        a[i] = same(*k[i], *k[0]);
+        if (a[i]) continue;
+        if (b < 0) b = i;
+        else if (!same(*k[i], *k[b])) return std::nullopt;  // a third look
+    }
+    if (b < 0) return std::nullopt;  // the centre differs from all four corners: a thin feature
+    int changes = 0;
+    for (int i = 0; i < 4; ++i) changes += a[i] != a[(i + 1) % 4];
+    if (changes != 2) return std::nullopt;  // two edges, or a corner of the solid
+    const bool centre_a = as_centre(*k[0]);
+    if (centre_a == as_centre(*k[b])) return std::nullopt;
+    // Each class's colour: the mean of its samples (corners, centre, sides).
+    glm::dvec3 sum[2] = {glm::dvec3(0.0), glm::dvec3(0.0)};  // class A, class B
+    int count[2] = {0, 0};
+    std::array<glm::dvec2, 4> cross{};
+    int crossed[2], n = 0;
+    for (int i = 0; i < 4; ++i) {
+        if (a[i] == a[(i + 1) % 4]) continue;
+        // Side i of the pixel runs from corner i to i + 1; the probes run
+        // left to right and top to bottom: sides 2 and 3 backwards.
+        static constexpr int dx[4] = {0, 1, 0, 0}, dy[4] = {0, 0, 1, 0};
+        const SideProbe& s = side(x + dx[i], y + dy[i], i % 2 == 1, ts, traced);
+        if (!s.clean) return std::nullopt;
+        const bool backwards = i >= 2;
+        // The probe's first corner is pixel corner i, or i + 1 when backwards.
+        const bool first_a = a[backwards ? (i + 1) % 4 : i];
+        sum[!first_a] += s.sum[0], count[!first_a] += s.count[0];
+        sum[first_a] += s.sum[1], count[first_a] += s.count[1];
+        cross[i] = on_side(i, backwards ? 1 - s.at : s.at);
+        crossed[n++] = i;
+    }
+    // The centre must lie on its own class's side of the line (or within
+    // the crossings' precision of it): else the edge bends. (Corner 0 is of
+    // class A.)
+    const double d = side_distance(cross[crossed[0]], cross[crossed[1]], pixel_corner(0), {0.5, 0.5});
+    const double tolerance = std::ldexp(1.0, -steps_);
+    if (centre_a ? d < -tolerance : d > tolerance) return std::nullopt;
+    // Two adjacent sides cut off the corner between them. A corner of the
+    // solid there (two edges meeting inside the pixel) keeps that corner's
+    // look on the far side of the line, beyond what the centre shows: one
+    // more sample, 2/2^steps past the middle of the line, away from that
+    // corner.
+    if ((crossed[1] - crossed[0]) % 2 == 1) {
+        const int odd = crossed[1] - crossed[0] == 1 ? crossed[1] : 0, rest = (odd + 2) % 4;
+        const glm::dvec2 m = (cross[crossed[0]] + cross[crossed[1]]) / 2.0;
+        const glm::dvec2 at = m + 2 * tolerance * glm::normalize(m - pixel_corner(odd));
+        std::optional<glm::dvec3> color;
+        if (like(x + at.x, y + at.y, *k[rest], *k[odd], ts, traced, color) != 0) return std::nullopt;
+        if (color) sum[!a[rest]] += *color, ++count[!a[rest]];
+    }
+    if (by_surface) {
+        // The far side's colour at its first corner round the pixel.
+        const int far = centre_a ? b : 0;
+        sum[!a[far]] += corner_color(x, y, far, ts, traced), ++count[!a[far]];
+    } else {
+        for (int i = 0; i < 4; ++i) sum[!a[i]] += k[i]->color, ++count[!a[i]];
+    }
+    sum[!centre_a] += centre_color(x, y, ts, traced), ++count[!centre_a];
+    const double area = covered_area(a, cross);
+    return area * (sum[0] / double(count[0])) + (1 - area) * (sum[1] / double(count[1]));
+}
+
+void Refinement::pixel(int x, int y, ThreadState& ts, bool traced) const {
+    PixelSampler::set_covered(0);
+    if (!centres_.needs_more(x, y, threshold_)) return;  // it keeps its centre
+    // Probes at the 4 corners first: a straight edge that crosses the pixel
+    // always separates its corners, so a candidate whose corners all look
+    // like its centre (next to an edge but wholly on one side, about half
+    // of them) stops there with their mean.
+    // A candidate only by surfaces probes only the surfaces at its corners
+    // (no shading, no shadow rays): all the centre's, it keeps its centre
+    // (the centres saw no shading edge here, so the corners' shading would
+    // add little).
+    const bool by_surface = surfaces_ && centres_.by_surface(x, y, threshold_);
+    // A corner lies in the triangle of the centres of the pixel and the two
+    // pixels beside it that touch it: when both saw the pixel's surface, a
+    // straight edge cannot separate that corner from the centre; when the
+    // pixel across the corner saw it too, neither can the corner of a
+    // solid whose sides reach no centre. So a candidate by surfaces checks
+    // only the other corners (the two on the side of its one different
+    // neighbour, for most); all the centre's, it is done.
+    const std::uint32_t own = centres_.surface(x, y);
+    auto proven = [&](int i) {  // corner i = (x + (i & 1), y + (i >> 1))
+        const int nx = i & 1 ? x + 1 : x - 1, ny = i >> 1 ? y + 1 : y - 1;
+        return centres_.same_surface(x, y, nx, y) && centres_.same_surface(x, y, x, ny) &&
+               centres_.same_surface(x, y, nx, ny);
+    };
+    bool same = true;
+    glm::dvec3 sum(0.0);
+    // A corner is shared by up to 4 candidates: traced once per tile
+    // (corner_probes.hpp), the same value whichever pixel asks.
+    probes().enter(region_[0] + (x - region_[0]) / kTile * kTile, region_[1] + (y - region_[1]) / kTile * kTile,
+                   generation_);
+    if (by_surface) {
+        for (int i = 0; i < 4 && same; ++i)
+            if (!proven(i)) same = corner(x + (i & 1), y + (i >> 1), ts, traced, false).surface == own;
+        if (same) {
+            sampler_.put(x, y, centre_color(x, y, ts, traced), 1);
+            return;
+        }
+    }
+    std::array<const CornerProbe*, 4> round{};  // the corners in order round the pixel
+    for (int i = 0; i < 4; ++i) {
+        const CornerProbe& p = corner(x + (i & 1), y + (i >> 1), ts, traced, !by_surface);
+        round[i < 2 ? i : 5 - i] = &p;
+        if (by_surface) continue;  // not the same: found above
+        same = same && like_centre(x, y, p);
+        sum += p.color;
+    }
+    if (same) {
+        sampler_.put(x, y, (centre_color(x, y, ts, traced) + sum) / 5.0, 5);
+        return;
+    }
+    // One straight edge across the pixel: located on the sides it crosses,
+    // its share of the pixel exact for that line. Not with --alpha, whose
+    // coverage counts samples.
+    ts.refining = true;
+    const std::optional<glm::dvec3> edge =
+        sampler_.alpha() ? std::nullopt : straight_edge(x, y, round, by_surface, ts, traced);
+    ts.refining = false;
+    if (edge) {
+        ++ts.edge_pixels;
+        sampler_.put(x, y, *edge, 1);
+        return;
+    }
+    ++ts.refined_pixels;
+    PixelSampler::set_covered(0);
+    ts.refining = true;
+    const std::optional<glm::dvec3> by_surfaces = by_surface ? surface_mean(x, y, ts, traced) : std::nullopt;
+    if (by_surfaces) sampler_.put(x, y, *by_surfaces, 1);
+    else sampler_.put(x, y, sampler_.mean(refine_, x, y, ts, traced), refine_.count());
+    ts.refining = false;
+}
+
+}  // namespace
+
+bool render_adaptive(const TilePasses& tiles, const PixelSampler& sampler, const RenderOptions& options,
+                     const std::array<int, 4>& region, const std::function<void(double)>& progress) {
+    // Centres first (about a quarter of the time), then the refinement.
+    CentreSamples centres(region, options.width, options.height);
+    const Refinement refinement(sampler, centres, options, region);
+    bool complete = tiles.run(centres.area(), progress_part(progress, 0, 0.25), [&](int x, int y, ThreadState& ts, bool traced) {
+        std::uint32_t surface;
+        ts.on_ground = false;
+        const glm::dvec3 c = sampler.sample(x + 0.5, y + 0.5, ts, traced, &surface);
+        centres.set(x, y, ts.on_ground ? sampler.miss() : c, surface, ts.on_ground);
+        if (x >= region[0] && x < region[2] && y >= region[1] && y < region[3]) sampler.put(x, y, c, 1);
+        PixelSampler::set_covered(0);
+    });
+    // Only candidates are written again; the rest keep their centre.
+    complete &= tiles.run(region, progress_part(progress, 0.25, 1), [&](int x, int y, ThreadState& ts, bool traced) {
+        refinement.pixel(x, y, ts, traced);
+    });
+    return complete;
+}
+
+}  // namespace kerf::render

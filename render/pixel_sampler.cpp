@@ -1,0 +1,52 @@
+#include "render/pixel_sampler.hpp"
+
+#include <limits>
+
+namespace kerf::render {
+
+// The colour seen along (o, d); `surface` as Shader::radiance.
+glm::dvec3 PixelSampler::trace(const glm::dvec3& o, const glm::dvec3& d, ThreadState& ts, std::uint32_t* surface) const {
+    const TraceRay ray{o, d, 0, std::numeric_limits<double>::infinity()};
+    auto one = [&](std::uint32_t* id) {
+        if (path_) {
+            std::uint32_t seen = 0;
+            const glm::dvec3 c = path_->radiance(o, d, ts, &seen);
+            if (id) *id = seen;
+            // The studio ground is a shadow catcher, not a surface that
+            // scatters: where a camera ray misses the solid, the shader
+            // draws it (elsewhere the same miss colour as the path's).
+            if (seen == 0) return shader_.missed(ray, ts);
+            return c;
+        }
+        return shader_.radiance(ray, 0, ts, id);
+    };
+    if (!alpha()) {
+        const glm::dvec3 c = one(surface);
+        return ghosts_ ? ghosts_->over(ray, c, ts, nullptr, surface) : c;
+    }
+    std::uint32_t id = 0;
+    glm::dvec3 c = one(&id);
+    if (surface) *surface = id;
+    double ghost = 0;
+    if (ghosts_) c = ghosts_->over(ray, c, ts, &ghost, surface);
+    last_ = id != 0 ? 1.0 : ghost;
+    hits_ += last_;
+    return c;
+}
+
+std::uint32_t PixelSampler::surface(double px, double py, ThreadState& ts, bool traced) const {
+    ++ts.rays.primary;
+    glm::dvec3 o, d;
+    if (!traced || !camera_.ray_unnormalised(px, py, o, d)) return 0;
+    return shader_.surface(TraceRay{o, d, 0, std::numeric_limits<double>::infinity()}, ts);
+}
+
+glm::dvec3 PixelSampler::lens_sample(double px, double py, glm::dvec2 lens, ThreadState& ts, bool traced) const {
+    ++ts.rays.primary;
+    if (!traced) return shader_.miss();
+    glm::dvec3 o, d;
+    camera_.ray_through_lens(px, py, lens, o, d);
+    return trace(o, d, ts, nullptr);
+}
+
+}  // namespace kerf::render
