@@ -489,13 +489,10 @@ Value Evaluator::eval(const ast::Expr& e, Scope& s) {
                 v[i] = x.as_number();
                 finite = finite && std::isfinite(v[i]);
             }
-            // OpenSCAD: undef for a bound that is not finite, but an infinite
-            // step makes a range of its begin alone (openscad_range_count:
-            // `[0:inf:0]` runs one pass, as OpenSCAD 2021.01, measured).
-            if (!finite) {
-                if (e.items.size() != 3 || !std::isinf(v[1]) || std::isnan(v[0]) || std::isnan(v[2])) return Value();
-                return Value::range(v[0], v[1], v[2]);
-            }
+            // OpenSCAD makes a range of any numbers: `[0 : 1 : inf]` echoes as
+            // such, a loop over it runs no pass with its "too many elements"
+            // warning, one of NaN none, `[inf : 1 : inf]` one (Range::size,
+            // openscad_range_count; docs/openscad.md, "Ranges").
             if (e.items.size() == 2) {
                 // OpenSCAD 2021 counts [5:1] down as [1:1:5] (docs/openscad.md, "Ranges").
                 if (lenient_ && v[0] > v[1]) {
@@ -508,8 +505,9 @@ Value Evaluator::eval(const ast::Expr& e, Scope& s) {
             if (v[1] == 0 && !lenient_) throw SourceError(e.items[1]->loc, "range step must not be 0");
             // A step pointing away from the end: empty in both dialects, and
             // OpenSCAD says so where the range is made.
-            if (lenient_ && v[0] < v[2] && v[1] < 0) warn(e.loc, "begin is smaller than the end, but step is negative");
-            if (lenient_ && v[0] > v[2] && v[1] > 0) warn(e.loc, "begin is greater than the end, but step is positive");
+            // (Not for a field that is not finite: OpenSCAD is silent there.)
+            if (lenient_ && finite && v[0] < v[2] && v[1] < 0) warn(e.loc, "begin is smaller than the end, but step is negative");
+            if (lenient_ && finite && v[0] > v[2] && v[1] > 0) warn(e.loc, "begin is greater than the end, but step is positive");
             return Value::range(v[0], v[1], v[2]);
         }
         case K::Unary: {
