@@ -480,16 +480,19 @@ Value Evaluator::eval(const ast::Expr& e, Scope& s) {
         }
         case K::Range: {
             double v[3];
+            bool finite = true;
             for (std::size_t i = 0; i < e.items.size() && i < 3; ++i) {
                 Value x = eval(*e.items[i], s);
                 if (lenient_ && !x.is_number()) return Value();  // OpenSCAD: undef
                 if (!x.is_number()) throw SourceError(e.items[i]->loc, std::string("range bound must be a number, got ") + x.type_name());
                 if (!lenient_ && !std::isfinite(x.as_number())) throw SourceError(e.items[i]->loc, "range bound must be finite, got " + format_number(x.as_number()));
                 v[i] = x.as_number();
+                finite = finite && std::isfinite(v[i]);
             }
-            // Only the OpenSCAD dialect gets here with a bound or step that is
-            // not finite: it keeps the range as written (`[0 : 1 : inf]`),
-            // and its loops count it with openscad_range_count (iteration_count).
+            // OpenSCAD makes a range of any numbers: `[0 : 1 : inf]` echoes as
+            // such, a loop over it runs no pass with its "too many elements"
+            // warning, one of NaN none, `[inf : 1 : inf]` one (Range::size,
+            // openscad_range_count; docs/openscad.md, "Ranges").
             if (e.items.size() == 2) {
                 // OpenSCAD 2021 counts [5:1] down as [1:1:5] (docs/openscad.md, "Ranges").
                 if (lenient_ && v[0] > v[1]) {
@@ -501,9 +504,8 @@ Value Evaluator::eval(const ast::Expr& e, Scope& s) {
             // OpenSCAD makes [a : 0 : b]; its loops then run no pass (iteration_count).
             if (v[1] == 0 && !lenient_) throw SourceError(e.items[1]->loc, "range step must not be 0");
             // A step pointing away from the end: empty in both dialects, and
-            // OpenSCAD says so where the range is made, only when all three
-            // are finite (`[inf : 1 : 0]` is silent in 2021.01, measured).
-            const bool finite = std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
+            // OpenSCAD says so where the range is made.
+            // (Not for a field that is not finite: OpenSCAD is silent there.)
             if (lenient_ && finite && v[0] < v[2] && v[1] < 0) warn(e.loc, "begin is smaller than the end, but step is negative");
             if (lenient_ && finite && v[0] > v[2] && v[1] > 0) warn(e.loc, "begin is greater than the end, but step is positive");
             return Value::range(v[0], v[1], v[2]);

@@ -82,8 +82,35 @@ void Evaluator::flatten(const std::vector<ast::StmtPtr>& stmts, std::vector<cons
         }
         const std::string path = find_library(st);
         if (path.empty()) continue;
-        if (lenient_ && files_.includes.contains(path)) {  // OpenSCAD: as if the file were not there
-            warn(st.loc, "Can't open include file '" + st.name + "'.");
+        if (lenient_) {
+            // OpenSCAD's chain of spellings (Loader::spelled_includes): one
+            // on it is as if the file were not there; every other spelling
+            // of the file expands it again, each expansion a counted step.
+            const std::string key = Loader::spelling(st.loc.file ? st.loc.file->path : path, st.name);
+            auto& chain = files_.spelled_includes;
+            if (std::find(chain.begin(), chain.end(), key) != chain.end()) {
+                warn(st.loc, "Can't open include file '" + st.name + "'.");
+                continue;
+            }
+            const std::string file = Loader::identity(path);
+            auto& open = files_.spelled_files;
+            if (files_.includes.contains(path) || std::find(open.begin(), open.end(), file) != open.end())
+                if (++files_.repeated_includes > Loader::kMaxRepeatedIncludes)
+                    throw RunLimitError(st.loc, "include: more than " + std::to_string(Loader::kMaxRepeatedIncludes) +
+                                                    " expansions of files already being included under another spelling ('" +
+                                                    st.name + "' here)");
+            count_step(st.loc);
+            chain.push_back(chain.empty() ? file : key);
+            open.push_back(file);
+            struct Pop {
+                std::vector<std::string>& chain;
+                std::vector<std::string>& open;
+                ~Pop() {
+                    chain.pop_back();
+                    open.pop_back();
+                }
+            } pop{chain, open};
+            flatten(files_.load(path, st.loc).stmts, out);
             continue;
         }
         ChainGuard on_chain(files_.includes, path, st.loc);
@@ -119,13 +146,21 @@ Scope* Evaluator::load_use(const ast::Stmt& st) {
     ChainGuard on_chain(files_.uses, path, st.loc);
     const ast::Program& prog = files_.load(path, st.loc);
     // The used file's includes start a chain of their own.
-    std::vector<std::string> outer_includes;
+    std::vector<std::string> outer_includes, outer_spelled, outer_files;
     files_.includes.swap(outer_includes);
+    files_.spelled_includes.swap(outer_spelled);
+    files_.spelled_files.swap(outer_files);
     struct Restore {
-        Loader::Chain& chain;
+        Loader& files;
         std::vector<std::string>& saved;
-        ~Restore() { chain.swap(saved); }
-    } restore{files_.includes, outer_includes};
+        std::vector<std::string>& saved_spelled;
+        std::vector<std::string>& saved_files;
+        ~Restore() {
+            files.includes.swap(saved);
+            files.spelled_includes.swap(saved_spelled);
+            files.spelled_files.swap(saved_files);
+        }
+    } restore{files_, outer_includes, outer_spelled, outer_files};
     ChainGuard in_file(files_.includes, path, st.loc);
     auto scope = std::make_unique<Scope>(&root_);
     scope->file = true;

@@ -19,6 +19,10 @@ std::string Loader::identity(const std::string& path) {
     return ec ? path : c.string();
 }
 
+std::string Loader::spelling(const std::string& including_file, const std::string& name) {
+    return fs::path(identity(including_file)).parent_path().string() + "/" + name;
+}
+
 std::string Loader::resolve(const std::string& name_text, const SourceLoc& loc) const {
     std::string path = find(name_text, loc);
     if (path.empty()) throw SourceError(loc, "cannot find '" + name_text + "'");

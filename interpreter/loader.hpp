@@ -53,6 +53,21 @@ public:
         std::vector<std::string> paths_;
     };
     Chain includes{"include"}, uses{"use"};
+    // The OpenSCAD dialect's include chain, as OpenSCAD 2021.01 behaves
+    // (measured, docs/openscad.md "Libraries"): an include is refused when
+    // its spelling (the canonical folder of the including file, "/", the
+    // name as written) is on the chain; the chain holds a file the main file
+    // includes by its canonical path, a deeper one by its spelling, and not
+    // the main file itself. So another spelling of an open file expands it
+    // again (misc/include-recursive-test.scad of its test data: 16 times).
+    std::vector<std::string> spelled_includes;
+    std::vector<std::string> spelled_files;  // the identity of each file on that chain
+    // Expansions of a file already being expanded (another spelling of it):
+    // k spellings make about e·k! of them, so they are capped, an error past
+    // kMaxRepeatedIncludes rather than a run that never ends.
+    std::size_t repeated_includes = 0;
+    static constexpr std::size_t kMaxRepeatedIncludes = 1'000;
+    static std::string spelling(const std::string& including_file, const std::string& name);
 
 private:
     const EvalOptions& opt_;

@@ -12,13 +12,21 @@
 namespace kerf {
 
 std::uint64_t Range::size() const {
-    // An infinite step (only the OpenSCAD dialect makes one): its begin alone.
-    if (std::isinf(step) && !std::isnan(start) && !std::isnan(end)) return (step > 0 ? start <= end : start >= end);
-    if (!std::isfinite(start) || !std::isfinite(step) || !std::isfinite(end) || step == 0) return 0;
+    constexpr double cap = 4.0e18;
+    // A field that is not finite (only the OpenSCAD dialect makes one), as
+    // OpenSCAD 2021.01 counts it: a NaN anywhere or a step pointing away
+    // from the end is empty; a begin equal to the end, or an infinite step,
+    // the begin alone; otherwise (an infinite bound) endless.
+    if (!std::isfinite(start) || !std::isfinite(step) || !std::isfinite(end)) {
+        if (std::isnan(start) || std::isnan(step) || std::isnan(end)) return 0;
+        if (step < 0 ? start < end : start > end) return 0;
+        if (start == end || std::isinf(step)) return 1;
+        return static_cast<std::uint64_t>(cap);
+    }
+    if (step == 0) return 0;
     double span = end - start;
     if ((step > 0 && span < 0) || (step < 0 && span > 0)) return 0;
     double steps = span / step;
-    constexpr double cap = 4.0e18;
     if (!(steps < cap)) return static_cast<std::uint64_t>(cap);
     auto n = static_cast<std::uint64_t>(std::floor(steps));
     // Tolerate rounding in fractional steps ([0:0.1:0.3] has 4 elements):

@@ -11,6 +11,7 @@
 #include "interpreter/modules/facets.hpp"
 #include "interpreter/modules/module_call.hpp"
 #include "interpreter/modules/sweep.hpp"
+#include "interpreter/modules/twist_slices.hpp"
 
 namespace kerf::eval {
 
@@ -190,8 +191,10 @@ void linear_extrude(ModuleCall& c) {
     const bool center = arg_bool(a, 1, "center", false);
     const double twist = arg_number(a, 3, "twist", 0);
     // slices only cut a twisted or unevenly scaled side (straight sides are
-    // flat however many slices OpenSCAD makes), and kerf sweeps those exactly.
-    const double slices = a.has(4) ? arg_positive(a, 4, "slices", 1) : 0;
+    // flat however many slices OpenSCAD makes), and kerf sweeps those
+    // exactly unless --facets openscad asks for OpenSCAD's cut. OpenSCAD
+    // counts its own slices for any number below 1; .sdl wants a positive one.
+    const double slices = !a.has(4) ? 0 : c.lenient() ? arg_number(a, 4, "slices", 0) : arg_positive(a, 4, "slices", 1);
     const glm::dvec2 top = scale_arg(a, 5);  // the top section's scales
     GraphBuilder& g = c.graph();
     const std::size_t mark = g.mark();
@@ -209,16 +212,21 @@ void linear_extrude(ModuleCall& c) {
     }
     if (g.mark() == mark) return;
     bool sweep = twist != 0 || top.x != top.y;
-    // OpenSCAD cuts these sides into slices of flat triangles; kerf sweeps them exactly in every mode.
-    if (sweep && c.facet_mode() == FacetMode::OpenScad)
-        c.warn("a twisted or unevenly scaled extrusion is swept exactly, not in OpenSCAD's slices");
-    else if (sweep && slices > 0)
+    // OpenSCAD cuts these sides into slices of flat triangles: under
+    // --facets openscad so does kerf (twist_slices.hpp); otherwise it sweeps them exactly.
+    const bool sliced = sweep && c.facet_mode() == FacetMode::OpenScad;
+    if (sweep && !sliced && slices > 0)
         c.warn("slices = " + format_number(slices) + " is ignored: kerf sweeps the twisted or unevenly scaled sides exactly");
-    else if (sweep)
+    else if (sweep && !sliced)
         c.exact_curve();  // OpenSCAD takes its slices from $fn, $fa and $fs here
     for (std::size_t i = mark; i < g.pending.size() && top.x != 1; ++i)
         sweep = sweep || has_sum_or_resize(g.graph, g.pending[i]);
-    if (sweep) {
+    if (sliced) {
+        const std::vector<std::uint32_t> shapes(g.pending.begin() + std::ptrdiff_t(mark), g.pending.end());
+        g.pending.resize(mark);
+        add_openscad_slices(c, shapes, {h, twist, top, slices});
+        if (g.mark() == mark) return;
+    } else if (sweep) {
         const std::vector<std::uint32_t> shapes(g.pending.begin() + std::ptrdiff_t(mark), g.pending.end());
         g.pending.resize(mark);
         for (std::uint32_t id : shapes) sweep_subtree(c, id, {top.x, top.y, twist * std::numbers::pi / 180});

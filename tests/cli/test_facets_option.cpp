@@ -49,6 +49,9 @@ TEST_CASE("kerf measure --facets openscad measures OpenSCAD 2021's polyhedra", "
         {"rotate_extrude($fn = 12) difference() { translate([1, 0]) square([4, 1]); translate([4, 0]) square(2); }",
          44.999979},
         {"hull() { sphere(1); translate([3, 0, 0]) sphere(1.5); }", 16.910344},
+        // A twist in OpenSCAD's flat slices (the exact sweep is 250; tests/lower/test_twist_slices.cpp).
+        {"linear_extrude(10, twist = 90) square(5);", 264.656337},
+        {"linear_extrude(10, twist = 45) difference() { square(6, center = true); square(3, center = true); }", 285.829067},
         // kerf's own solids, as their OpenSCAD equivalents (docs/openscad.md, "Facets").
         {"cone(h = 4, r = 2);", 14.594204, "cylinder(h = 4, r1 = 2, r2 = 0);"},
         {"torus(R = 3, r = 1, $fn = 16);", 56.235463, "rotate_extrude($fn = 16) translate([3, 0]) circle(1);"},

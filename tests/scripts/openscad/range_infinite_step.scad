@@ -1,7 +1,7 @@
 // A range with an infinite step is its begin alone, as OpenSCAD 2021.01
 // counts it (its test data 3D/features/for-tests.scad): one pass when the
-// step points towards the end or begin equals end, none otherwise. Other
-// bounds that are not finite: range_nonfinite.scad. Expected lines from openscad -o x.echo.
+// step points towards the end or begin equals end, none otherwise. Other bounds
+// not finite: range_infinite_bound.scad, range_nonfinite.scad. Lines from openscad -o x.echo.
 inf = 1/0;
 nan = 0/0;
 for (i = [0:inf:0]) echo("A", i);
