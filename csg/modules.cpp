@@ -21,6 +21,8 @@ void* open_module(const char* name, const char* built, std::string* why) {
     return nullptr;
 }
 
+void* module_symbol(void* handle, const char* symbol) { return ::dlsym(handle, symbol); }
+
 std::string module_error(const char* what, const char* name, const std::string& why) {
     return "cannot load the " + std::string(what) + " module " + name + ": " + why;
 }

@@ -2,9 +2,6 @@
 // opened on the first call, so that kerf starts without libxml2, ICU and
 // liblzma (docs/performance.md, "Start-up"). The file is read here, with
 // the import bounds of MeshFile; the module parses its bytes.
-#include <dlfcn.h>
-
-#include <mutex>
 #include <string>
 
 #include "csg/modules.hpp"
@@ -21,21 +18,21 @@ struct XmlModule {
     ImportSvgEntry import_svg = nullptr;
 };
 
-// The module, loaded once; a failed load is tried again on the next import.
-const XmlModule& xml_module() {
-    static std::mutex mutex;
-    static XmlModule m;
-    std::lock_guard<std::mutex> lock(mutex);
-    if (m.read_amf) return m;
+XmlModule load_xml_module() {
     std::string why;
     if (void* h = csg::open_module(KERF_XML_MODULE_NAME, KERF_XML_MODULE_PATH, &why)) {
-        XmlModule got;
-        got.read_amf = reinterpret_cast<ReadAmfEntry>(::dlsym(h, "kerf_xml_read_amf"));
-        got.import_svg = reinterpret_cast<ImportSvgEntry>(::dlsym(h, "kerf_xml_import_svg"));
-        if (got.read_amf && got.import_svg) return m = got;
-        why = "it lacks kerf_xml_read_amf";
+        why.clear();
+        const XmlModule m{csg::module_entry<ReadAmfEntry>(h, "kerf_xml_read_amf", &why),
+                          csg::module_entry<ImportSvgEntry>(h, "kerf_xml_import_svg", &why)};
+        if (why.empty()) return m;
     }
     throw MeshFormatError(csg::module_error("SVG and AMF", KERF_XML_MODULE_NAME, why));
+}
+
+// The module, loaded once (a failed load throws and is tried again on the next import).
+const XmlModule& xml_module() {
+    static const XmlModule m = load_xml_module();
+    return m;
 }
 
 }  // namespace

@@ -1,9 +1,6 @@
 // read_3mf and unzip_amf through the zip module (zip_module/zip_module.hpp),
 // opened on the first call, so that kerf starts without lib3mf, libzip and
 // the libcrypto they bring (docs/performance.md, "Start-up").
-#include <dlfcn.h>
-
-#include <mutex>
 #include <string>
 
 #include "csg/modules.hpp"
@@ -20,21 +17,21 @@ struct ZipModule {
     UnzipAmf unzip_amf = nullptr;
 };
 
-// The module, loaded once; a failed load is tried again on the next import.
-const ZipModule& zip_module() {
-    static std::mutex mutex;
-    static ZipModule m;
-    std::lock_guard<std::mutex> lock(mutex);
-    if (m.read_3mf) return m;
+ZipModule load_zip_module() {
     std::string why;
     if (void* h = csg::open_module(KERF_ZIP_MODULE_NAME, KERF_ZIP_MODULE_PATH, &why)) {
-        ZipModule got;
-        got.read_3mf = reinterpret_cast<Read3mf>(::dlsym(h, "kerf_zip_read_3mf"));
-        got.unzip_amf = reinterpret_cast<UnzipAmf>(::dlsym(h, "kerf_zip_unzip_amf"));
-        if (got.read_3mf && got.unzip_amf) return m = got;
-        why = "it lacks kerf_zip_read_3mf";
+        why.clear();
+        const ZipModule m{csg::module_entry<Read3mf>(h, "kerf_zip_read_3mf", &why),
+                          csg::module_entry<UnzipAmf>(h, "kerf_zip_unzip_amf", &why)};
+        if (why.empty()) return m;
     }
     throw MeshFormatError(csg::module_error("3MF and compressed AMF", KERF_ZIP_MODULE_NAME, why));
+}
+
+// The module, loaded once (a failed load throws and is tried again on the next import).
+const ZipModule& zip_module() {
+    static const ZipModule m = load_zip_module();
+    return m;
 }
 
 }  // namespace

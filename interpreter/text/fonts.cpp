@@ -2,9 +2,6 @@
 // (font_module/font_module.hpp), opened on the first call, so that kerf
 // starts without fontconfig, FreeType, HarfBuzz and the libraries they
 // bring (docs/performance.md, "Start-up").
-#include <dlfcn.h>
-
-#include <mutex>
 #include <stdexcept>
 #include <string>
 
@@ -21,22 +18,22 @@ struct FontModule {
     RegisterEntry add = nullptr;
 };
 
-// The module, loaded once; a failed load is tried again on the next call.
-const FontModule& font_module() {
-    static std::mutex mutex;
-    static FontModule m;
-    std::lock_guard<std::mutex> lock(mutex);
-    if (m.layout) return m;
+FontModule load_font_module() {
     std::string why;
     if (void* h = csg::open_module(KERF_FONTS_MODULE_NAME, KERF_FONTS_MODULE_PATH, &why)) {
-        FontModule got;
-        got.layout = reinterpret_cast<LayoutEntry>(::dlsym(h, "kerf_fonts_layout"));
-        got.find = reinterpret_cast<FindEntry>(::dlsym(h, "kerf_fonts_find"));
-        got.add = reinterpret_cast<RegisterEntry>(::dlsym(h, "kerf_fonts_register"));
-        if (got.layout && got.find && got.add) return m = got;
-        why = "it lacks kerf_fonts_layout";
+        why.clear();
+        const FontModule m{csg::module_entry<LayoutEntry>(h, "kerf_fonts_layout", &why),
+                           csg::module_entry<FindEntry>(h, "kerf_fonts_find", &why),
+                           csg::module_entry<RegisterEntry>(h, "kerf_fonts_register", &why)};
+        if (why.empty()) return m;
     }
     throw FontError(csg::module_error("font", KERF_FONTS_MODULE_NAME, why));
+}
+
+// The module, loaded once (a failed load throws and is tried again on the next call).
+const FontModule& font_module() {
+    static const FontModule m = load_font_module();
+    return m;
 }
 
 // The module's answer as the exception its reader threw.

@@ -1,7 +1,5 @@
 #include "render/image/image_modules.hpp"
 
-#include <dlfcn.h>
-
 #include <string>
 
 #include "csg/modules.hpp"
@@ -16,12 +14,11 @@ namespace {
 ImageModule load(const char* name, const char* built, const std::string& prefix, const char* what) {
     std::string why;
     if (void* h = csg::open_module(name, built, &why)) {
-        ImageModule m;
-        m.can_write = reinterpret_cast<decltype(m.can_write)>(::dlsym(h, (prefix + "_can_write").c_str()));
-        m.encode = reinterpret_cast<decltype(m.encode)>(::dlsym(h, (prefix + "_encode").c_str()));
-        m.read = reinterpret_cast<decltype(m.read)>(::dlsym(h, (prefix + "_read").c_str()));
-        if (m.can_write && m.encode && m.read) return m;
-        why = "it lacks " + prefix + "_encode";
+        why.clear();
+        const ImageModule m{csg::module_entry<decltype(ImageModule::can_write)>(h, (prefix + "_can_write").c_str(), &why),
+                            csg::module_entry<decltype(ImageModule::encode)>(h, (prefix + "_encode").c_str(), &why),
+                            csg::module_entry<decltype(ImageModule::read)>(h, (prefix + "_read").c_str(), &why)};
+        if (why.empty()) return m;
     }
     throw ImageWriteError(csg::module_error(what, name, why));
 }
