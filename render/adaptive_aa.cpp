@@ -51,6 +51,8 @@ private:
     glm::dvec3 centre_color(int x, int y, ThreadState& ts, bool traced) const;
     glm::dvec3 corner_color(int x, int y, int corner_i, ThreadState& ts, bool traced) const;
     std::optional<glm::dvec3> surface_mean(int x, int y, ThreadState& ts, bool traced) const;
+    std::optional<glm::dvec3> gradient(int x, int y, const std::array<const CornerProbe*, 4>& k, ThreadState& ts,
+                                       bool traced) const;
     int like(double px, double py, const CornerProbe& p, const CornerProbe& q, ThreadState& ts, bool traced,
              std::optional<glm::dvec3>& color) const;
     const SideProbe& side(int cx, int cy, bool vertical, ThreadState& ts, bool traced) const;
@@ -143,6 +145,34 @@ std::optional<glm::dvec3> Refinement::surface_mean(int x, int y, ThreadState& ts
                                                                      : sampler_.sample(first[j].x, first[j].y, ts, traced));
     ts.refining = refining;
     return sum / double(n);
+}
+
+// Pixel (x, y)'s colour if its look changes smoothly across one surface
+// (shading that turns faster than the threshold between pixels), else
+// nothing. `k`: its shaded corners in order round it. The middle of each
+// quarter of the pixel lies halfway between the centre and that quarter's
+// corner: a linear change puts its sample at their mean. All four within
+// half the threshold of that, the pixel is the mean of those 9 samples;
+// an edge (a shadow's) between the centre and a corner that differs from
+// it by more than the threshold puts its sample on either side, more than
+// half the threshold off, and the pixel takes the full pattern.
+std::optional<glm::dvec3> Refinement::gradient(int x, int y, const std::array<const CornerProbe*, 4>& k,
+                                               ThreadState& ts, bool traced) const {
+    const std::uint32_t own = centres_.surface(x, y);
+    if (own == 0 || !surfaces_) return std::nullopt;
+    for (const CornerProbe* p : k)
+        if (p->surface != own || p->on_ground) return std::nullopt;
+    const glm::dvec3 centre = centre_color(x, y, ts, traced);
+    glm::dvec3 sum = centre;
+    for (int i = 0; i < 4; ++i) {
+        // Corner i round the pixel: (0, 0), (1, 0), (1, 1), (0, 1).
+        const glm::dvec2 at = glm::dvec2(x, y) + (glm::dvec2(0.5) + pixel_corner(i)) / 2.0;
+        const CornerProbe q = probe_at(at.x, at.y, ts, traced);
+        if (q.on_ground || !centres_.alike(q.color, q.surface, (centre + k[i]->color) / 2.0, own, threshold_ / 2))
+            return std::nullopt;
+        sum += q.color + k[i]->color;
+    }
+    return sum / 9.0;
 }
 
 // Which of two probes p and q of different looks a sample through (px, py)
@@ -327,6 +357,14 @@ void Refinement::pixel(int x, int y, ThreadState& ts, bool traced) const {
         ++ts.edge_pixels;
         sampler_.put(x, y, *edge, 1);
         return;
+    }
+    if (!by_surface && !sampler_.alpha()) {
+        // Its samples shaded as a pixel's one sample, as the corners are.
+        const std::optional<glm::dvec3> smooth = gradient(x, y, round, ts, traced);
+        if (smooth) {
+            sampler_.put(x, y, *smooth, 1);
+            return;
+        }
     }
     ++ts.refined_pixels;
     PixelSampler::set_covered(0);

@@ -129,6 +129,15 @@ csg::Scene two_halves(const Edge& e, double grey, csg::Material first) {
     return s;
 }
 
+// A box of material m filling Edge's whole view, lit and seen as Edge's.
+csg::Scene whole_view(const Edge& e, const csg::Material& m) {
+    csg::Scene s = make_scene(leaf(box({-100, -100, -1}, {100, 100, 0})), {m});
+    s.background = e.scene.background;
+    s.camera = e.scene.camera;
+    s.lights = e.scene.lights;
+    return s;
+}
+
 csg::Material matte_white() {
     csg::Material m;
     m.color = m.interior = {1, 1, 1};
@@ -188,10 +197,7 @@ TEST_CASE("adaptive AA locates an edge between two looks of one surface, against
         m.pattern_from_material.linear = glm::dmat3(rotate_deg(-angle, {0, 0, 1})) / 100.0;
         m.specular = 0;
         m.diffuse = 1;
-        csg::Scene s = make_scene(leaf(box({-100, -100, -1}, {100, 100, 0})), {m});
-        s.background = e.scene.background;
-        s.camera = e.scene.camera;
-        s.lights = e.scene.lights;
+        const csg::Scene s = whole_view(e, m);
         render::RenderStats st;
         const render::Image adaptive = render::render(s, options(e.size, true, 1), &st);
         const render::Image sixteen = render::render(s, options(e.size, false, 16));
@@ -214,6 +220,38 @@ TEST_CASE("adaptive AA locates an edge between two looks of one surface, against
         CHECK(st.edge_pixels >= std::uint64_t(pixels / 2));
         CHECK(err <= err16 * 0.6);
     }
+}
+
+TEST_CASE("adaptive AA takes a steep linear change of shading on one surface from 9 samples, against its exact mean",
+          "[render][aa]") {
+    // A gradient pattern rising from 0.1 to 0.9 over every 4 pixels in x,
+    // restarting on pixel borders: each pixel's exact mean is its centre's
+    // value. Its corners differ from the centre by more than the threshold,
+    // no straight edge separates them: without the 9-sample test every
+    // pixel but the ones at the restarts would take the full 16 samples.
+    Edge e(0);
+    csg::Material m = matte_white();
+    m.color = {0.1, 0.1, 0.1};
+    m.color2 = {0.9, 0.9, 0.9};
+    m.pattern = csg::Pattern::Gradient;
+    m.pattern_from_material.linear = glm::dmat3(1.0 / 4);
+    const csg::Scene s = whole_view(e, m);
+    render::RenderStats st;
+    const render::Image adaptive = render::render(s, options(e.size, true, 1), &st);
+    double worst = 0;
+    for (int y = 0; y < e.size; ++y)
+        for (int x = 0; x < e.size; ++x) {
+            const double q = (x - e.size / 2.0 + 0.5) / 4;
+            const double exact = e.shade * (0.1 + 0.8 * (q - std::floor(q)));
+            // The column before a restart takes the full samples, whose
+            // jitter moves their mean along the slope.
+            if (x % 4 != 3) worst = std::max(worst, std::abs(adaptive.at(x, y, 0) - exact));
+        }
+    INFO("worst error " << worst << ", refined " << st.refined_pixels << " of " << e.size * e.size);
+    CHECK(worst < 0.004);  // the centre kept to 8 bits
+    // At most the column before each restart (its right corners see the
+    // restart's dark side) takes the full samples.
+    CHECK(st.refined_pixels <= std::uint64_t(e.size * e.size / 4));
 }
 
 TEST_CASE("adaptive AA locates an edge between two lit surfaces by surface alone, against the exact area", "[render][aa]") {
