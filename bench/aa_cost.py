@@ -39,7 +39,7 @@ def instructions(cmd):
 def main():
     p = argparse.ArgumentParser()
     p.add_argument("--kerf", nargs="+", required=True, help="one or two builds")
-    p.add_argument("--sizes", default="1024,2048")
+    p.add_argument("--sizes", default="1024,2048", help="sizes for the cost, comma-separated; 0: no cost, only --error")
     p.add_argument("--pairs", type=int, default=5)
     p.add_argument("--threads", type=int, default=2)
     p.add_argument("--only", nargs="*", help="model names (default: all 7)")
@@ -58,7 +58,7 @@ def main():
             return [k, "render", path, "-o", out, "-W", str(size), "-H", str(size), "--threads", str(threads),
                     "--no-progress"] + args
 
-        for size in [int(x) for x in a.sizes.split(",")]:
+        for size in [int(x) for x in a.sizes.split(",") if int(x) > 0]:
             t = {(k, aa): [] for k in a.kerf for aa in ("off", "auto")}
             for _ in range(a.pairs):
                 for k in a.kerf:

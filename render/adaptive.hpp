@@ -92,24 +92,6 @@ public:
         return false;
     }
 
-    // Whether pixel (x, y), a candidate, is one only by surfaces: each of
-    // its 8 neighbours hit another surface than its centre or looks like
-    // it. Then no shading edge runs next to it that the centres can see.
-    bool by_surface(int x, int y, int threshold) const {
-        const std::uint64_t l = looks_[index(x, y)];
-        for (int ny = std::max(y0_, y - 1); ny <= std::min(y1_ - 1, y + 1); ++ny)
-            for (int nx = std::max(x0_, x - 1); nx <= std::min(x1_ - 1, x + 1); ++nx) {
-                const std::uint64_t d = looks_[index(nx, ny)];
-                if (d >> 32 == l >> 32 && !alike(d, l, threshold)) return false;
-            }
-        return true;
-    }
-    // Whether the centres of pixels (x, y) and (nx, ny) saw one surface
-    // (false when (nx, ny) lies outside the first pass).
-    bool same_surface(int x, int y, int nx, int ny) const {
-        if (nx < x0_ || nx >= x1_ || ny < y0_ || ny >= y1_) return false;
-        return looks_[index(x, y)] >> 32 == looks_[index(nx, ny)] >> 32;
-    }
     // The surface pixel (x, y)'s centre sample hit (0: none).
     std::uint32_t surface(int x, int y) const { return std::uint32_t(looks_[index(x, y)] >> 32); }
 

@@ -23,7 +23,7 @@ public:
           // default 16 samples, as fine as their 4 × 4 strata.
           steps_(std::max(1, int(std::ceil(std::log2(double(options.aa_samples)))))),
           // Coverage counts shaded samples; ghosts change a look without a
-          // surface: both keep every probe shaded.
+          // surface: both keep the gradient test (which compares surfaces) out.
           surfaces_(!sampler.alpha() && !sampler.ghosts()),
           generation_(CornerProbes::next_generation()) {}
 
@@ -47,17 +47,15 @@ private:
         p.on_ground = ts.on_ground;
         return p;
     }
-    CornerProbe& corner(int cx, int cy, ThreadState& ts, bool traced, bool shade) const;
+    CornerProbe& corner(int cx, int cy, ThreadState& ts, bool traced) const;
     glm::dvec3 centre_color(int x, int y, ThreadState& ts, bool traced) const;
-    glm::dvec3 corner_color(int x, int y, int corner_i, ThreadState& ts, bool traced) const;
-    std::optional<glm::dvec3> surface_mean(int x, int y, ThreadState& ts, bool traced) const;
     std::optional<glm::dvec3> gradient(int x, int y, const std::array<const CornerProbe*, 4>& k, ThreadState& ts,
                                        bool traced) const;
     int like(double px, double py, const CornerProbe& p, const CornerProbe& q, ThreadState& ts, bool traced,
              std::optional<glm::dvec3>& color) const;
     const SideProbe& side(int cx, int cy, bool vertical, ThreadState& ts, bool traced) const;
-    std::optional<glm::dvec3> straight_edge(int x, int y, const std::array<const CornerProbe*, 4>& k, bool by_surface,
-                                            ThreadState& ts, bool traced) const;
+    std::optional<glm::dvec3> straight_edge(int x, int y, const std::array<const CornerProbe*, 4>& k, ThreadState& ts,
+                                            bool traced) const;
 
     static CornerProbes& probes() {
         static thread_local CornerProbes p;
@@ -75,20 +73,17 @@ private:
     const std::uint64_t generation_;
 };
 
-// The corner (cx, cy) of the current tile, traced once: its surface, and
-// if `shade`, its colour (shaded once, when a pixel first needs it).
-CornerProbe& Refinement::corner(int cx, int cy, ThreadState& ts, bool traced, bool shade) const {
+// The corner (cx, cy) of the current tile, traced and shaded once (when a
+// pixel first needs it).
+CornerProbe& Refinement::corner(int cx, int cy, ThreadState& ts, bool traced) const {
     CornerProbe& p = probes().at(cx, cy);
     if (p.shaded) {
         PixelSampler::set_covered(PixelSampler::covered() + (sampler_.alpha() ? p.cover : 0.0));
-    } else if (shade) {
+    } else {
         PixelSampler::set_last_cover(0);  // a culled sample traces nothing and covers nothing
         p = probe_at(cx, cy, ts, traced);
         p.cover = PixelSampler::last_cover();
         p.traced = p.shaded = true;
-    } else if (!p.traced) {
-        p.surface = sampler_.surface(cx, cy, ts, traced);
-        p.traced = true;
     }
     return p;
 }
@@ -99,52 +94,6 @@ CornerProbe& Refinement::corner(int cx, int cy, ThreadState& ts, bool traced, bo
 glm::dvec3 Refinement::centre_color(int x, int y, ThreadState& ts, bool traced) const {
     const std::optional<glm::dvec3> kept = srgb8_ && !sampler_.alpha() ? centres_.color(x, y) : std::nullopt;
     return kept ? *kept : sampler_.sample(x + 0.5, y + 0.5, ts, traced, nullptr);
-}
-
-// The colour at corner `corner_i` (round the pixel) of pixel (x, y),
-// shaded as one sample of a pixel is: not `refining`, whichever pixel asks
-// first. (The centre colour of a neighbour that saw the same surface, free
-// from the first pass, was tried instead: the error at 384² rose above 16
-// uniform samples' on small shell 0.19 → 0.26, large shell 0.35 → 0.51 and
-// holes_40 1.29 → 1.56 RMSE codes.)
-glm::dvec3 Refinement::corner_color(int x, int y, int corner_i, ThreadState& ts, bool traced) const {
-    const bool refining = ts.refining;
-    ts.refining = false;
-    const glm::dvec3 c = corner(x + (corner_i == 1 || corner_i == 2), y + (corner_i >= 2), ts, traced, true).color;
-    ts.refining = refining;
-    return c;
-}
-
-// The pattern of aa_samples by surfaces: each sample's surface traced,
-// each surface's colour taken once (the centre's, else the first sample
-// that saw it, shaded as a pixel's one sample). Nothing when the samples
-// saw more surfaces than it keeps.
-std::optional<glm::dvec3> Refinement::surface_mean(int x, int y, ThreadState& ts, bool traced) const {
-    constexpr int kKept = 16;
-    std::uint32_t seen[kKept];
-    glm::dvec2 first[kKept];
-    int count[kKept], kinds = 0;
-    const int n = refine_.count();
-    std::uint64_t rng = SamplePattern::pixel_rng(sampler_.seed(), x, y);
-    for (int i = 0; i < n; ++i) {
-        const glm::dvec2 at = glm::dvec2(x, y) + refine_.offset(i, rng);
-        const std::uint32_t id = sampler_.surface(at.x, at.y, ts, traced);
-        int j = 0;
-        while (j < kinds && seen[j] != id) ++j;
-        if (j == kinds) {
-            if (kinds == kKept) return std::nullopt;
-            seen[kinds] = id, first[kinds] = at, count[kinds++] = 0;
-        }
-        ++count[j];
-    }
-    const bool refining = ts.refining;
-    ts.refining = false;
-    glm::dvec3 sum(0.0);
-    for (int j = 0; j < kinds; ++j)
-        sum += double(count[j]) * (seen[j] == centres_.surface(x, y) ? centre_color(x, y, ts, traced)
-                                                                     : sampler_.sample(first[j].x, first[j].y, ts, traced));
-    ts.refining = refining;
-    return sum / double(n);
 }
 
 // Pixel (x, y)'s colour if its look changes smoothly across one surface
@@ -220,16 +169,11 @@ const SideProbe& Refinement::side(int cx, int cy, bool vertical, ThreadState& ts
 }
 
 // Pixel (x, y)'s colour if one straight edge crosses it (`k`: its corners
-// in order round it), else nothing. `by_surface`: the corners hold only
-// their surfaces, which alone tell the two sides apart, and each side's
-// colour is one sample of it (the centre, a corner) instead of the mean of
-// its samples.
+// in order round it), else nothing.
 std::optional<glm::dvec3> Refinement::straight_edge(int x, int y, const std::array<const CornerProbe*, 4>& k,
-                                                    bool by_surface, ThreadState& ts, bool traced) const {
-    auto same = [&](const CornerProbe& p, const CornerProbe& q) { return by_surface ? p.surface == q.surface : alike(p, q); };
-    auto as_centre = [&](const CornerProbe& p) {
-        return by_surface ? p.surface == centres_.surface(x, y) : like_centre(x, y, p);
-    };
+                                                    ThreadState& ts, bool traced) const {
+    auto same = [&](const CornerProbe& p, const CornerProbe& q) { return alike(p, q); };
+    auto as_centre = [&](const CornerProbe& p) { return like_centre(x, y, p); };
     std::array<bool, 4> a{};  // like corner 0 (class A), else like corner b (class B)
     int b = -1;
     for (int i = 0; i < 4; ++i) {
@@ -283,13 +227,7 @@ std::optional<glm::dvec3> Refinement::straight_edge(int x, int y, const std::arr
         if (like(x + at.x, y + at.y, *k[rest], *k[odd], ts, traced, color) != 0) return std::nullopt;
         if (color) sum[!a[rest]] += *color, ++count[!a[rest]];
     }
-    if (by_surface) {
-        // The far side's colour at its first corner round the pixel.
-        const int far = centre_a ? b : 0;
-        sum[!a[far]] += corner_color(x, y, far, ts, traced), ++count[!a[far]];
-    } else {
-        for (int i = 0; i < 4; ++i) sum[!a[i]] += k[i]->color, ++count[!a[i]];
-    }
+    for (int i = 0; i < 4; ++i) sum[!a[i]] += k[i]->color, ++count[!a[i]];
     sum[!centre_a] += centre_color(x, y, ts, traced), ++count[!centre_a];
     const double area = covered_area(a, cross);
     return area * (sum[0] / double(count[0])) + (1 - area) * (sum[1] / double(count[1]));
@@ -301,44 +239,21 @@ void Refinement::pixel(int x, int y, ThreadState& ts, bool traced) const {
     // Probes at the 4 corners first: a straight edge that crosses the pixel
     // always separates its corners, so a candidate whose corners all look
     // like its centre (next to an edge but wholly on one side, about half
-    // of them) stops there with their mean.
-    // A candidate only by surfaces probes only the surfaces at its corners
-    // (no shading, no shadow rays): all the centre's, it keeps its centre
-    // (the centres saw no shading edge here, so the corners' shading would
-    // add little).
-    const bool by_surface = surfaces_ && centres_.by_surface(x, y, threshold_);
-    // A corner lies in the triangle of the centres of the pixel and the two
-    // pixels beside it that touch it: when both saw the pixel's surface, a
-    // straight edge cannot separate that corner from the centre; when the
-    // pixel across the corner saw it too, neither can the corner of a
-    // solid whose sides reach no centre. So a candidate by surfaces checks
-    // only the other corners (the two on the side of its one different
-    // neighbour, for most); all the centre's, it is done.
-    const std::uint32_t own = centres_.surface(x, y);
-    auto proven = [&](int i) {  // corner i = (x + (i & 1), y + (i >> 1))
-        const int nx = i & 1 ? x + 1 : x - 1, ny = i >> 1 ? y + 1 : y - 1;
-        return centres_.same_surface(x, y, nx, y) && centres_.same_surface(x, y, x, ny) &&
-               centres_.same_surface(x, y, nx, ny);
-    };
+    // of them) stops there with their mean. (Candidates whose neighbours
+    // differ only by surface once probed their corners' surfaces alone and
+    // kept their centre: ~5 % fewer instructions on holes_40, but the
+    // error at 384² rose past 16 uniform samples' on the checkered cube,
+    // 0.71 -> 0.85 RMSE codes against 0.75; docs/quality.md.)
     bool same = true;
     glm::dvec3 sum(0.0);
     // A corner is shared by up to 4 candidates: traced once per tile
     // (corner_probes.hpp), the same value whichever pixel asks.
     probes().enter(region_[0] + (x - region_[0]) / kTile * kTile, region_[1] + (y - region_[1]) / kTile * kTile,
                    generation_);
-    if (by_surface) {
-        for (int i = 0; i < 4 && same; ++i)
-            if (!proven(i)) same = corner(x + (i & 1), y + (i >> 1), ts, traced, false).surface == own;
-        if (same) {
-            sampler_.put(x, y, centre_color(x, y, ts, traced), 1);
-            return;
-        }
-    }
     std::array<const CornerProbe*, 4> round{};  // the corners in order round the pixel
     for (int i = 0; i < 4; ++i) {
-        const CornerProbe& p = corner(x + (i & 1), y + (i >> 1), ts, traced, !by_surface);
+        const CornerProbe& p = corner(x + (i & 1), y + (i >> 1), ts, traced);
         round[i < 2 ? i : 5 - i] = &p;
-        if (by_surface) continue;  // not the same: found above
         same = same && like_centre(x, y, p);
         sum += p.color;
     }
@@ -350,15 +265,14 @@ void Refinement::pixel(int x, int y, ThreadState& ts, bool traced) const {
     // its share of the pixel exact for that line. Not with --alpha, whose
     // coverage counts samples.
     ts.refining = true;
-    const std::optional<glm::dvec3> edge =
-        sampler_.alpha() ? std::nullopt : straight_edge(x, y, round, by_surface, ts, traced);
+    const std::optional<glm::dvec3> edge = sampler_.alpha() ? std::nullopt : straight_edge(x, y, round, ts, traced);
     ts.refining = false;
     if (edge) {
         ++ts.edge_pixels;
         sampler_.put(x, y, *edge, 1);
         return;
     }
-    if (!by_surface && !sampler_.alpha()) {
+    if (!sampler_.alpha()) {
         // Its samples shaded as a pixel's one sample, as the corners are.
         const std::optional<glm::dvec3> smooth = gradient(x, y, round, ts, traced);
         if (smooth) {
@@ -369,9 +283,7 @@ void Refinement::pixel(int x, int y, ThreadState& ts, bool traced) const {
     ++ts.refined_pixels;
     PixelSampler::set_covered(0);
     ts.refining = true;
-    const std::optional<glm::dvec3> by_surfaces = by_surface ? surface_mean(x, y, ts, traced) : std::nullopt;
-    if (by_surfaces) sampler_.put(x, y, *by_surfaces, 1);
-    else sampler_.put(x, y, sampler_.mean(refine_, x, y, ts, traced), refine_.count());
+    sampler_.put(x, y, sampler_.mean(refine_, x, y, ts, traced), refine_.count());
     ts.refining = false;
 }
 

@@ -254,9 +254,10 @@ TEST_CASE("adaptive AA takes a steep linear change of shading on one surface fro
     CHECK(st.refined_pixels <= std::uint64_t(e.size * e.size / 4));
 }
 
-TEST_CASE("adaptive AA locates an edge between two lit surfaces by surface alone, against the exact area", "[render][aa]") {
-    // Both sides are solid: the candidates' corners and sides trace only
-    // surfaces, and the far side's colour is one shaded corner.
+TEST_CASE("adaptive AA locates an edge between two lit surfaces, against the exact area", "[render][aa]") {
+    // Both sides are solid: the sides' bisection asks only which surface a
+    // sample hits, and each side's colour is the mean of its shaded corners
+    // and centre.
     for (const double angle : {7.0, 20.0, 45.0, 71.0}) {
         const Edge e(angle);
         const csg::Scene s = two_halves(e, 0.3, matte_white());
@@ -285,29 +286,6 @@ TEST_CASE("adaptive AA locates an edge between two lit surfaces by surface alone
         CHECK(err <= err16 * 0.6);
         CHECK(worst < 0.1);
     }
-}
-
-TEST_CASE("adaptive AA tells a candidate by surfaces from one by looks", "[render][aa]") {
-    // A 3 × 3 image: the centre pixel's neighbours all hit its surface and
-    // look alike, but for one of another surface: a candidate by surfaces.
-    render::CentreSamples c({0, 0, 3, 3}, 3, 3);
-    const int threshold = 13;
-    for (int y = 0; y < 3; ++y)
-        for (int x = 0; x < 3; ++x) c.set(x, y, glm::dvec3(0.5), 1);
-    CHECK_FALSE(c.needs_more(1, 1, threshold));
-    c.set(2, 1, glm::dvec3(0.1), 2);
-    CHECK(c.needs_more(1, 1, threshold));
-    CHECK(c.by_surface(1, 1, threshold));
-    CHECK(c.surface(1, 1) == 1);
-    CHECK(c.surface(2, 1) == 2);
-    // A neighbour of the same surface a little brighter (within the
-    // threshold) changes nothing; one beyond it (a shading edge) makes
-    // the candidate one by looks.
-    c.set(0, 0, glm::dvec3(0.52), 1);
-    CHECK(c.by_surface(1, 1, threshold));
-    c.set(0, 1, glm::dvec3(0.9), 1);
-    CHECK(c.needs_more(1, 1, threshold));
-    CHECK_FALSE(c.by_surface(1, 1, threshold));
 }
 
 TEST_CASE("adaptive AA does not take a corner of the solid inside a pixel for a straight edge", "[render][aa]") {
@@ -382,9 +360,9 @@ TEST_CASE("adaptive AA gives the same bytes for any thread count and any crop", 
 
 TEST_CASE("adaptive AA gives the same bytes for any thread count and crop where surface and look edges meet",
           "[render][aa][determinism]") {
-    // Two surfaces (by surface) and stripes across one of them (by looks)
-    // crossing inside the image: probes traced by one kind of candidate and
-    // shaded later by the other are shared within a tile, never between.
+    // Two surfaces and stripes across one of them crossing inside the
+    // image: side probes that ask only for a surface and those that shade
+    // are shared within a tile, never between.
     const Edge e(33);
     csg::Material striped = matte_white();
     striped.color2 = {0.2, 0.2, 0.2};
