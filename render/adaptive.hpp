@@ -8,12 +8,9 @@
 // look like its centre it is their mean with the centre; if they fall into
 // two runs round the pixel, one straight edge crosses it, located on its
 // sides (edge_coverage.hpp); else it gets the uniform pattern of
-// RenderOptions::aa_samples (the pixel `--spp 16` gives). A candidate
-// only by surfaces (each neighbour hit another surface or looks like it)
-// compares surfaces alone: its corners and sides are traced unshaded,
-// corners its centre and two side neighbours share a surface with are not
-// traced (a straight edge cannot reach them), and a located edge's far
-// side takes the colour of one shaded corner (adaptive_aa.cpp). The decision
+// RenderOptions::aa_samples (the pixel `--spp 16` gives), unless its
+// shading changes linearly on one surface (9 samples; adaptive_aa.cpp). A
+// side sample between two surfaces asks only which one it hits. The decision
 // reads only first-pass values of full-image coordinates and samples
 // without jitter, so the thread count and a crop never change a pixel: the
 // first pass covers the region plus a one-pixel ring.

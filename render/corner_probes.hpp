@@ -22,7 +22,7 @@ struct CornerProbe {
     std::uint32_t surface = 0;
     bool on_ground = false;  // ThreadState::on_ground after the sample
     bool traced = false;
-    bool shaded = false;     // `color` and `on_ground` hold the sample's; else only `surface` does
+    bool shaded = false;     // `color`, `surface` and `on_ground` hold the sample's
     double cover = 0;        // what the sample added to the pixel's coverage (--alpha)
 };
 
