@@ -22,9 +22,6 @@ public:
           // A straight edge located to 1/2^steps of a side: 1/16 for the
           // default 16 samples, as fine as their 4 × 4 strata.
           steps_(std::max(1, int(std::ceil(std::log2(double(options.aa_samples)))))),
-          // Coverage counts shaded samples; ghosts change a look without a
-          // surface: both keep the gradient test (which compares surfaces) out.
-          surfaces_(!sampler.alpha() && !sampler.ghosts()),
           generation_(CornerProbes::next_generation()) {}
 
     void pixel(int x, int y, ThreadState& ts, bool traced) const;
@@ -69,7 +66,6 @@ private:
     const SamplePattern refine_;
     const int threshold_;
     const int steps_;
-    const bool surfaces_;
     const std::uint64_t generation_;
 };
 
@@ -77,13 +73,13 @@ private:
 // pixel first needs it).
 CornerProbe& Refinement::corner(int cx, int cy, ThreadState& ts, bool traced) const {
     CornerProbe& p = probes().at(cx, cy);
-    if (p.shaded) {
+    if (p.traced) {
         PixelSampler::set_covered(PixelSampler::covered() + (sampler_.alpha() ? p.cover : 0.0));
     } else {
         PixelSampler::set_last_cover(0);  // a culled sample traces nothing and covers nothing
         p = probe_at(cx, cy, ts, traced);
         p.cover = PixelSampler::last_cover();
-        p.traced = p.shaded = true;
+        p.traced = true;
     }
     return p;
 }
@@ -107,8 +103,9 @@ glm::dvec3 Refinement::centre_color(int x, int y, ThreadState& ts, bool traced) 
 // half the threshold off, and the pixel takes the full pattern.
 std::optional<glm::dvec3> Refinement::gradient(int x, int y, const std::array<const CornerProbe*, 4>& k,
                                                ThreadState& ts, bool traced) const {
+    // Ghosts change a look without a surface: their pixels keep the full pattern.
     const std::uint32_t own = centres_.surface(x, y);
-    if (own == 0 || !surfaces_) return std::nullopt;
+    if (own == 0 || sampler_.ghosts()) return std::nullopt;
     for (const CornerProbe* p : k)
         if (p->surface != own || p->on_ground) return std::nullopt;
     const glm::dvec3 centre = centre_color(x, y, ts, traced);
@@ -172,22 +169,20 @@ const SideProbe& Refinement::side(int cx, int cy, bool vertical, ThreadState& ts
 // in order round it), else nothing.
 std::optional<glm::dvec3> Refinement::straight_edge(int x, int y, const std::array<const CornerProbe*, 4>& k,
                                                     ThreadState& ts, bool traced) const {
-    auto same = [&](const CornerProbe& p, const CornerProbe& q) { return alike(p, q); };
-    auto as_centre = [&](const CornerProbe& p) { return like_centre(x, y, p); };
     std::array<bool, 4> a{};  // like corner 0 (class A), else like corner b (class B)
     int b = -1;
     for (int i = 0; i < 4; ++i) {
-        a[i] = same(*k[i], *k[0]);
+        a[i] = alike(*k[i], *k[0]);
         if (a[i]) continue;
         if (b < 0) b = i;
-        else if (!same(*k[i], *k[b])) return std::nullopt;  // a third look
+        else if (!alike(*k[i], *k[b])) return std::nullopt;  // a third look
     }
     if (b < 0) return std::nullopt;  // the centre differs from all four corners: a thin feature
     int changes = 0;
     for (int i = 0; i < 4; ++i) changes += a[i] != a[(i + 1) % 4];
     if (changes != 2) return std::nullopt;  // two edges, or a corner of the solid
-    const bool centre_a = as_centre(*k[0]);
-    if (centre_a == as_centre(*k[b])) return std::nullopt;
+    const bool centre_a = like_centre(x, y, *k[0]);
+    if (centre_a == like_centre(x, y, *k[b])) return std::nullopt;
     // Each class's colour: the mean of its samples (corners, centre, sides).
     glm::dvec3 sum[2] = {glm::dvec3(0.0), glm::dvec3(0.0)};  // class A, class B
     int count[2] = {0, 0};

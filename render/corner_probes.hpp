@@ -21,8 +21,7 @@ struct CornerProbe {
     glm::dvec3 color;
     std::uint32_t surface = 0;
     bool on_ground = false;  // ThreadState::on_ground after the sample
-    bool traced = false;
-    bool shaded = false;     // `color`, `surface` and `on_ground` hold the sample's
+    bool traced = false;     // `color`, `surface` and `on_ground` hold the sample's
     double cover = 0;        // what the sample added to the pixel's coverage (--alpha)
 };
 
@@ -48,7 +47,7 @@ public:
     void enter(int x0, int y0, std::uint64_t generation) {
         if (x0 == x0_ && y0 == y0_ && generation == generation_) return;
         x0_ = x0, y0_ = y0, generation_ = generation;
-        for (CornerProbe& p : probes_) p.traced = p.shaded = false;
+        for (CornerProbe& p : probes_) p.traced = false;
         for (SideProbe& p : sides_) p.traced = false;
     }
     // The corner (cx, cy) of the current tile: x0 <= cx <= x0 + kTile, the same for y.

@@ -7,6 +7,33 @@
 
 namespace kerf::render {
 
+namespace {
+
+// Minuend span `span` minus only the near subtrahends (`near`, ascending
+// indices into `subs`), on [a, b]: `r` pieces from the returned index on;
+// scratch from sbase on.
+std::uint32_t minus_near(RayState& rs, const std::uint32_t* subs, const std::uint32_t* near, std::uint32_t nnear,
+                         std::uint32_t span, std::uint32_t sbase, double a, double b, int& r) {
+    rs.scratch->stack.resize(sbase);
+    for (std::uint32_t j = 0; j < nnear; ++j) rs.spans(subs[near[j]], a, b, Need::All);
+    return rs.subtract_gathered(span, 1, sbase, r);
+}
+
+// Whether x is clear of every one of the nsub subtrahends but the near ones.
+bool clear_of_rest(const RayState& rs, const std::uint32_t* subs, std::uint32_t nsub, const std::uint32_t* near,
+                   std::uint32_t nnear, const glm::dvec3& x, double margin) {
+    for (std::uint32_t m = 0, j = 0; m < nsub; ++m) {
+        if (j < nnear && near[j] == m) {
+            ++j;
+            continue;
+        }
+        if (!rs.clear_of(subs[m], x, margin)) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
 // The fast path of First/Any for a difference with few subtrahends. A point
 // of minuend span i (its entry; for Any, the middle of its part inside the
 // window) that is farther than twice the degenerate rule's reach from every
@@ -44,21 +71,14 @@ FastPath RayState::first_piece_if_clear(const csg::Node& n, std::uint32_t base, 
     if (nnear > 0 && need != Need::First) return any_piece_if_clear(n, base, sbase, i, a, b, near, nnear);
     if (nnear > 0) {
         // Span i minus the near subtrahends, on the span's part in the window.
-        const double wb = std::min(b, piece.t1);
-        st.resize(sbase);
-        for (std::uint32_t j = 0; j < nnear; ++j) spans(subs[near[j]], probe, wb, Need::All);
-        int r = 0;
-        const std::uint32_t rbase = subtract_gathered(base + i, 1, sbase, r);
+        int r;
+        const std::uint32_t rbase = minus_near(*this, subs, near, nnear, base + i, sbase, probe, std::min(b, piece.t1), r);
         int k = 0;
         while (k < r && !(st.at(rbase + std::uint32_t(k))->t0 > a)) ++k;
         // More subtrahends only shrink the pieces: none here, none at all.
         if (k == r || st.at(rbase + std::uint32_t(k))->t0 > b) return k == r ? FastPath::None : FastPath::Past;
         piece = *st.at(rbase + std::uint32_t(k));
-        const glm::dvec3 e = o + piece.t0 * d;
-        for (std::uint32_t m = 0, j = 0; m < nsub; ++m) {
-            if (j < nnear && near[j] == m) { ++j; continue; }
-            if (!clear_of(subs[m], e, margin)) return FastPath::Unknown;
-        }
+        if (!clear_of_rest(*this, subs, nsub, near, nnear, o + piece.t0 * d, margin)) return FastPath::Unknown;
     }
     *st.at(base) = piece;
     st.resize(base + 1);
@@ -78,10 +98,8 @@ FastPath RayState::any_piece_if_clear(const csg::Node& n, std::uint32_t base, st
     const double margin = 2 * eps * len;
     const std::uint32_t* subs = &impl->scene.children[n.first + 1];
     const std::uint32_t nsub = n.count - 1;
-    st.resize(sbase);
-    for (std::uint32_t j = 0; j < nnear; ++j) spans(subs[near[j]], p0, p1, Need::All);
-    int r = 0;
-    const std::uint32_t rbase = subtract_gathered(base + i, 1, sbase, r);
+    int r;
+    const std::uint32_t rbase = minus_near(*this, subs, near, nnear, base + i, sbase, p0, p1, r);
     bool unsure = false;
     for (int k = 0; k < r; ++k) {
         const Span& piece = *st.at(rbase + std::uint32_t(k));
@@ -92,11 +110,7 @@ FastPath RayState::any_piece_if_clear(const csg::Node& n, std::uint32_t base, st
             continue;
         }
         const double probe = 0.5 * (q0 + q1);
-        const glm::dvec3 x = o + probe * d;
-        for (std::uint32_t m = 0, j = 0; m < nsub; ++m) {
-            if (j < nnear && near[j] == m) { ++j; continue; }
-            if (!clear_of(subs[m], x, margin)) return FastPath::Unknown;
-        }
+        if (!clear_of_rest(*this, subs, nsub, near, nnear, o + probe * d, margin)) return FastPath::Unknown;
         Span sliver = piece;
         sliver.t0 = probe - eps;
         sliver.t1 = probe + eps;
