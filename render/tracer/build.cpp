@@ -217,6 +217,21 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
             impl_->accel_of_node[id] = std::int32_t(impl_->node_accels.size() - 1);
         }
     }
+    impl_->leaf_pair.assign(scene.nodes.size(), 0);
+    const auto analytic_leaf = [&](std::uint32_t node) {
+        if (scene.nodes[node].op != Op::Leaf) return false;
+        const csg::PrimKind k = scene.leaves[scene.nodes[node].first].kind;
+        return k != csg::PrimKind::Mesh && k != csg::PrimKind::Prism && k != csg::PrimKind::Lathe;
+    };
+    impl_->leaf_minus.assign(scene.nodes.size(), 0);
+    for (std::uint32_t id = 0; id < scene.nodes.size(); ++id) {
+        const Node& n = scene.nodes[id];
+        if (n.op == Op::Leaf || impl_->accel_of_node[id] >= 0 || n.count < 2) continue;
+        bool leaves = true;
+        for (std::uint32_t k = 0; k < n.count; ++k) leaves = leaves && analytic_leaf(scene.children[n.first + k]);
+        impl_->leaf_pair[id] = leaves && n.count == 2;
+        impl_->leaf_minus[id] = leaves && n.op == Op::Difference && n.count - 1 <= kDirectChildren;
+    }
     impl_->build_accel(impl_->top, units, true);
     impl_->find_convex_units();
     impl_->ball_slack = use_float ? 1e-5 : 1e-12;  // float sphere tests round at ~1e-7 of |c - o|

@@ -71,6 +71,14 @@ struct CsgTracer::Impl {
     std::vector<std::unique_ptr<Accel>> node_accels;
     std::vector<double> leaf_stretch;         // per leaf: Frobenius norm of object_from_world.linear
     std::vector<std::uint8_t> leaf_shift_only;  // per leaf: 1 if object_from_world.linear is the identity
+    // Per node: 1 for a union, intersection or difference of exactly two
+    // analytic leaves (no mesh, prism or lathe), evaluated in one step
+    // (node_spans.cpp, leaf_pair_spans).
+    std::vector<std::uint8_t> leaf_pair;
+    // Per node: 1 for a difference of an analytic leaf minus at most
+    // kDirectChildren analytic leaves, asked for its first entry or any span
+    // in one step (leaf_minus.cpp).
+    std::vector<std::uint8_t> leaf_minus;
     // Per leaf: the unit (top item index; unbounded units after the items)
     // that lies wholly inside it when the leaf is convex, else kNone: a
     // shadow ray leaving its surface outwards skips that unit (Departure).

@@ -19,19 +19,6 @@ std::uint32_t minus_near(RayState& rs, const std::uint32_t* subs, const std::uin
     return rs.subtract_gathered(span, 1, sbase, r);
 }
 
-// Whether x is clear of every one of the nsub subtrahends but the near ones.
-bool clear_of_rest(const RayState& rs, const std::uint32_t* subs, std::uint32_t nsub, const std::uint32_t* near,
-                   std::uint32_t nnear, const glm::dvec3& x, double margin) {
-    for (std::uint32_t m = 0, j = 0; m < nsub; ++m) {
-        if (j < nnear && near[j] == m) {
-            ++j;
-            continue;
-        }
-        if (!rs.clear_of(subs[m], x, margin)) return false;
-    }
-    return true;
-}
-
 }  // namespace
 
 // The fast path of First/Any for a difference with few subtrahends. A point
@@ -47,27 +34,12 @@ FastPath RayState::first_piece_if_clear(const csg::Node& n, std::uint32_t base, 
     SpanStack& st = scratch->stack;
     Span piece = *st.at(base + i);
     double probe;
-    if (need == Need::First) {
-        if (!(piece.t0 > a)) return FastPath::Unknown;  // starts inside the minuend: the entry is later
-        if (piece.t0 > b) return FastPath::Past;
-        probe = piece.t0;
-    } else {
-        const double p0 = std::max(a, piece.t0), p1 = std::min(b, piece.t1);
-        if (!(p1 - p0 > 2 * eps)) return FastPath::Unknown;
-        probe = 0.5 * (p0 + p1);
-        piece.t0 = probe - eps;  // a sliver longer than eps answers Any
-        piece.t1 = probe + eps;
-    }
+    if (const FastPath p = fast_path_probe(piece, a, b, need, eps, probe); p != FastPath::Found) return p;
     const double margin = 2 * eps * len;
     const std::uint32_t* subs = &impl->scene.children[n.first + 1];
     const std::uint32_t nsub = n.count - 1;
-    constexpr std::uint32_t kMaxNear = 2;
-    std::uint32_t near[kMaxNear], nnear = 0;
-    for (std::uint32_t k = 0; k < nsub; ++k) {
-        if (clear_of(subs[k], o + probe * d, margin)) continue;
-        if (nnear == kMaxNear) return FastPath::Unknown;
-        near[nnear++] = k;
-    }
+    std::uint32_t near[kMaxNear], nnear;
+    if (!near_subtrahends(subs, nsub, o + probe * d, margin, near, nnear)) return FastPath::Unknown;
     if (nnear > 0 && need != Need::First) return any_piece_if_clear(n, base, sbase, i, a, b, near, nnear);
     if (nnear > 0) {
         // Span i minus the near subtrahends, on the span's part in the window.
@@ -78,7 +50,7 @@ FastPath RayState::first_piece_if_clear(const csg::Node& n, std::uint32_t base, 
         // More subtrahends only shrink the pieces: none here, none at all.
         if (k == r || st.at(rbase + std::uint32_t(k))->t0 > b) return k == r ? FastPath::None : FastPath::Past;
         piece = *st.at(rbase + std::uint32_t(k));
-        if (!clear_of_rest(*this, subs, nsub, near, nnear, o + piece.t0 * d, margin)) return FastPath::Unknown;
+        if (!clear_of_all_but(subs, nsub, near, nnear, o + piece.t0 * d, margin)) return FastPath::Unknown;
     }
     *st.at(base) = piece;
     st.resize(base + 1);
@@ -110,7 +82,7 @@ FastPath RayState::any_piece_if_clear(const csg::Node& n, std::uint32_t base, st
             continue;
         }
         const double probe = 0.5 * (q0 + q1);
-        if (!clear_of_rest(*this, subs, nsub, near, nnear, o + probe * d, margin)) return FastPath::Unknown;
+        if (!clear_of_all_but(subs, nsub, near, nnear, o + probe * d, margin)) return FastPath::Unknown;
         Span sliver = piece;
         sliver.t0 = probe - eps;
         sliver.t1 = probe + eps;

@@ -5,10 +5,12 @@
 // file because they call each other recursively on the hot path and must
 // stay inlinable into each other. Mesh leaves are in mesh_spans.cpp, the
 // point-query first entry of big differences in difference_first_entry.cpp,
-// the clearance fast path of small ones in difference_fast_path.cpp.
+// the clearance fast path of small ones in difference_fast_path.cpp, an
+// analytic leaf minus a few analytic leaves in one step in leaf_minus.cpp.
 #include <algorithm>
 
 #include "render/primitives/primitives.hpp"
+#include "render/tracer/analytic_spans.hpp"
 #include "render/tracer/prism_spans.hpp"
 #include "render/tracer/ray_state.hpp"
 
@@ -42,48 +44,54 @@ namespace {
 // have internal linkage so the compiler inlines them into it as before the
 // split; only spans and collect are reached from other files.
 
-// `box` is already padded by the degenerate rule's reach (Impl::padded).
-bool box_hit(const RayState& es, const csg::Aabb& box, double a, double b) {
-    return slab_hit(box, es.o, es.invd, a - es.eps, b + es.eps);
-}
-
 std::uint32_t leaf_spans(RayState& es, const Node& n, double a, double b) {
     const csg::Leaf& leaf = es.impl->scene.leaves[n.first];
     if (leaf.kind == csg::PrimKind::Mesh) return es.mesh_spans(n.first, a, b);
     if (leaf.kind == csg::PrimKind::Prism || leaf.kind == csg::PrimKind::Lathe) return prism_spans(es, n.first, a, b);
-    // A leaf only moved (most are: translate, or none) skips the matrix:
-    // 1·x + 0·y + 0·z is x, so the numbers are the same.
-    const bool shift = es.impl->leaf_shift_only[n.first];
-    const glm::dvec3 lo = shift ? es.o + leaf.object_from_world.offset : leaf.object_from_world.point(es.o);
-    const glm::dvec3 ld = shift ? es.d : leaf.object_from_world.vector(es.d);
-    csg::Span<double> spans[csg::kMaxSpans];
-    // Span ends outside the window (with room for the degenerate rule) may
-    // be reported inexactly: nothing reads them (see spans' contract).
-    const double wa = a - 4 * es.eps, wb = b + 4 * es.eps;
-    int count;
-    if (es.impl->use_float) {
-        csg::Span<float> fs[csg::kMaxSpans];
-        count = csg::intersect_leaf<float>(leaf, glm::vec3(lo), glm::vec3(ld), fs, float(wa), float(wb));
-        for (int i = 0; i < count; ++i) spans[i] = {double(fs[i].t0), double(fs[i].t1), fs[i].part0, fs[i].part1};
+    SpanStack& st = es.scratch->stack;
+    return std::uint32_t(analytic_spans(es, n.first, a, b, [&st](const Span& s) { st.push(s); }));
+}
+
+// A union, intersection or difference (for every span) of exactly two
+// analytic leaves (Impl::leaf_pair) in one step: both leaves' spans into
+// locals, combined straight onto the stack. The windows, box tests, span
+// operations and counters are those of union_spans, intersection_spans and
+// difference_spans, so the spans are the same bits; what goes is the two
+// recursions through spans, the pushes and the copy back.
+std::uint32_t leaf_pair_spans(RayState& es, const Node& n, double a, double b) {
+    const std::uint32_t c0 = es.impl->scene.children[n.first], c1 = es.impl->scene.children[n.first + 1];
+    SpanStack& st = es.scratch->stack;
+    const std::uint32_t base = st.size();
+    if (n.op == Op::Union) {
+        es.scratch->counters.union_ops++;
+        st.resize(base + 2 * csg::kMaxSpans);
+        Span* out = st.at(base);
+        int count = analytic_node_spans(es, c0, a, b, out);
+        count += analytic_node_spans(es, c1, a, b, out + count);
+        count = span_normalize_union(out, count, es.eps);
+        st.resize(base + std::uint32_t(count));
+        return std::uint32_t(count);
+    }
+    if (n.op == Op::Intersection) es.scratch->counters.intersection_ops++;
+    else es.scratch->counters.difference_ops++;
+    SpanBuffer<csg::kMaxSpans> xs, ys;
+    Span *x = xs.at, *y = ys.at;
+    const int nx = analytic_node_spans(es, c0, a, b, x);
+    if (nx == 0) return 0;
+    // The second operand matters only where the first is inside.
+    int ny = analytic_node_spans(es, c1, std::max(a, x[0].t0), std::min(b, x[nx - 1].t1), y);
+    int r;
+    if (n.op == Op::Intersection) {
+        if (ny == 0) return 0;
+        st.resize(base + std::uint32_t(nx + ny));
+        r = span_intersection(x, nx, y, ny, st.at(base), es.eps);
     } else {
-        count = csg::intersect_leaf<double>(leaf, lo, ld, spans, wa, wb);
+        ny = span_normalize_union(y, ny, es.eps);
+        st.resize(base + std::uint32_t(nx + ny));
+        r = span_difference(x, nx, y, ny, st.at(base), es.eps);
     }
-    es.scratch->counters.interval_tests++;
-    es.scratch->counters.spans_found += std::uint64_t(count);
-    const std::uint32_t leaf_id = n.first;
-    std::uint32_t pushed = 0;
-    for (int i = 0; i < count; ++i) {
-        if (spans[i].t1 < a || spans[i].t0 > b) continue;
-        Span s;
-        s.t0 = spans[i].t0;
-        s.t1 = spans[i].t1;
-        s.e0 = SpanEnd{leaf_id, leaf_id, spans[i].part0, 0, 0, 0};
-        s.e1 = SpanEnd{leaf_id, leaf_id, spans[i].part1, 0, 0, 0};
-        s.inner = leaf_id;
-        es.scratch->stack.push(s);
-        ++pushed;
-    }
-    return pushed;
+    st.resize(base + std::uint32_t(r));
+    return std::uint32_t(r);
 }
 
 // Pushes the spans of children skip.. of an operation node on [a, b]:
@@ -199,11 +207,18 @@ std::uint32_t RayState::spans(std::uint32_t node, double a, double b, Need need)
     // root that is a leaf is entered without any box test, so a one-unit
     // scene would otherwise test its primitives for every ray of the image.
     if (!box_hit(*this, impl->padded[node], a, b)) return 0;
+    // Two analytic leaves in one step (leaf_pair_spans); a difference asked
+    // for its first entry or any span keeps its fast path
+    // (difference_fast_path.cpp).
     switch (n.op) {
         case Op::Leaf: return leaf_spans(*this, n, a, b);
-        case Op::Union: return union_spans(*this, node, n, a, b);
-        case Op::Intersection: return intersection_spans(*this, n, a, b);
-        case Op::Difference: return difference_spans(*this, node, n, a, b, need);
+        case Op::Union: return impl->leaf_pair[node] ? leaf_pair_spans(*this, n, a, b) : union_spans(*this, node, n, a, b);
+        case Op::Intersection:
+            return impl->leaf_pair[node] ? leaf_pair_spans(*this, n, a, b) : intersection_spans(*this, n, a, b);
+        case Op::Difference:
+            if (need != Need::All && impl->leaf_minus[node]) return leaf_minus_spans(n, a, b, need);
+            return impl->leaf_pair[node] && need == Need::All ? leaf_pair_spans(*this, n, a, b)
+                                                               : difference_spans(*this, node, n, a, b, need);
     }
     return 0;
 }

@@ -36,12 +36,39 @@ enum class FastPath : std::uint8_t {
     None,     // this minuend span has no answer
 };
 
+// The clearance fast path's probe on minuend span `piece` (README.md,
+// "Tracer design"): for First the span's entry, for Any the middle of its
+// part in [a, b], with `piece` narrowed to the sliver of eps round it (a
+// sliver longer than eps answers Any). Unknown when no probe proves
+// anything (First: the span starts inside the window; Any: its part there
+// is too short), Past when it starts past the window, else Found.
+inline FastPath fast_path_probe(Span& piece, double a, double b, Need need, double eps, double& probe) {
+    if (need == Need::First) {
+        if (!(piece.t0 > a)) return FastPath::Unknown;  // starts inside the minuend: the entry is later
+        if (piece.t0 > b) return FastPath::Past;
+        probe = piece.t0;
+        return FastPath::Found;
+    }
+    const double p0 = std::max(a, piece.t0), p1 = std::min(b, piece.t1);
+    if (!(p1 - p0 > 2 * eps)) return FastPath::Unknown;
+    probe = 0.5 * (p0 + p1);
+    piece.t0 = probe - eps;
+    piece.t1 = probe + eps;
+    return FastPath::Found;
+}
+
+// At most this many subtrahends near the probe are intersected by the fast
+// path; more: gather them all.
+constexpr std::uint32_t kMaxNear = 2;
+
 // The squared distance from x to the box (0 inside). Empty boxes (lo =
 // +inf) give +inf: an empty solid is far from everything.
 inline double box_distance2(const csg::Aabb& box, const glm::dvec3& x) {
     double sum = 0;
     for (int i = 0; i < 3; ++i) {
-        const double out = std::max(std::max(box.lo[i] - x[i], x[i] - box.hi[i]), 0.0);
+        // 0.0 first: GCC makes std::max(0.0, v) one maxsd, std::max(v, 0.0) a
+        // branch (the same value for every number; v is never NaN here).
+        const double out = std::max(0.0, std::max(box.lo[i] - x[i], x[i] - box.hi[i]));
         sum += out * out;
     }
     return sum;
@@ -76,6 +103,31 @@ struct RayState {
         if (box_distance2(impl->scene.nodes[node].bounds, x) > margin * margin) return true;
         return clear_of_within_box(node, x, margin);
     }
+    // Whether x is clear of every one of the nsub subtrahends subs[] but the
+    // near ones (`near`: ascending indices into subs), as clear_of says.
+    bool clear_of_all_but(const std::uint32_t* subs, std::uint32_t nsub, const std::uint32_t* near, std::uint32_t nnear,
+                          const glm::dvec3& x, double margin) const {
+        for (std::uint32_t m = 0, j = 0; m < nsub; ++m) {
+            if (j < nnear && near[j] == m) {
+                ++j;
+                continue;
+            }
+            if (!clear_of(subs[m], x, margin)) return false;
+        }
+        return true;
+    }
+    // The subtrahends subs[] that x is not clear of, as indices into subs
+    // (ascending) in near[kMaxNear]; false when there are more.
+    bool near_subtrahends(const std::uint32_t* subs, std::uint32_t nsub, const glm::dvec3& x, double margin,
+                          std::uint32_t* near, std::uint32_t& nnear) const {
+        nnear = 0;
+        for (std::uint32_t k = 0; k < nsub; ++k) {
+            if (clear_of(subs[k], x, margin)) continue;
+            if (nnear == kMaxNear) return false;
+            near[nnear++] = k;
+        }
+        return true;
+    }
     // clearance.cpp: clear_of for a point within `margin` of the node's box.
     bool clear_of_within_box(std::uint32_t node, const glm::dvec3& x, double margin) const;
     // difference_fast_path.cpp
@@ -83,6 +135,9 @@ struct RayState {
                                   double a, double b, Need need);
     FastPath any_piece_if_clear(const csg::Node& n, std::uint32_t base, std::uint32_t sbase, std::uint32_t i,
                                 double a, double b, const std::uint32_t* near, std::uint32_t nnear);
+    // leaf_minus.cpp: an analytic leaf minus a few analytic leaves
+    // (Impl::leaf_minus) for Need::First or Need::Any, in one step.
+    std::uint32_t leaf_minus_spans(const csg::Node& n, double a, double b, Need need);
     // mesh_spans.cpp
     std::uint32_t mesh_spans(std::uint32_t leaf_id, double a, double b);
     // difference_first_entry.cpp

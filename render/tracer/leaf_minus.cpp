@@ -1,0 +1,124 @@
+// An analytic leaf minus a few analytic leaves (Impl::leaf_minus: a grooved
+// sphere's sphere minus its tori, a shell segment's sphere minus a sphere
+// and two boxes), asked for its first entry or any span, in one step. The
+// answer and the work are those of difference_spans with its clearance fast
+// path (difference_fast_path.cpp): the same windows, box tests, leaf tests,
+// span operations and counters in the same order, so the same bits. What
+// goes is the span stack between them: the leaves' spans and the pieces
+// stay in locals (at most 2 per leaf), the subtrahends are intersected
+// without a recursion through RayState::spans each, and only the answer is
+// pushed.
+#include <algorithm>
+
+#include "render/tracer/analytic_spans.hpp"
+
+namespace kerf::render {
+
+namespace {
+
+constexpr int kMaxLeafSpans = csg::kMaxSpans;
+
+// Impl::leaf_minus allows at most this many subtrahends (no BVH of their own).
+constexpr int kMaxGathered = 8 * kMaxLeafSpans;
+
+// Minuend span `m` minus the subtrahend leaves subs[which[j]] (or every
+// subtrahend when which is null), each intersected on [wa, wb]: the pieces
+// go to out (at most 1 + kMaxGathered), their count is returned.
+int minus_leaves(RayState& rs, const Span& m, const std::uint32_t* subs, std::uint32_t nsub,
+                 const std::uint32_t* which, std::uint32_t nwhich, double wa, double wb, Span* out) {
+    SpanBuffer<kMaxGathered> gathered;
+    int ng = 0;
+    const std::uint32_t count = which ? nwhich : nsub;
+    for (std::uint32_t j = 0; j < count; ++j)
+        ng += analytic_node_spans(rs, subs[which ? which[j] : j], wa, wb, gathered.at + ng);
+    ng = span_normalize_union(gathered.at, ng, rs.eps);
+    return span_difference(&m, 1, gathered.at, ng, out, rs.eps);
+}
+
+// first_piece_if_clear and any_piece_if_clear on minuend span m: Found with
+// the answer in `answer`, Past, None, or Unknown (gather every subtrahend).
+FastPath piece_if_clear(RayState& rs, const Span& m, const std::uint32_t* subs, std::uint32_t nsub, double a,
+                        double b, Need need, Span& answer) {
+    Span piece = m;
+    double probe;
+    const double eps = rs.eps;
+    if (const FastPath p = fast_path_probe(piece, a, b, need, eps, probe); p != FastPath::Found) return p;
+    const double margin = 2 * eps * rs.len;
+    std::uint32_t near[kMaxNear], nnear;
+    if (!rs.near_subtrahends(subs, nsub, rs.o + probe * rs.d, margin, near, nnear)) return FastPath::Unknown;
+    if (nnear == 0) {
+        answer = piece;
+        return FastPath::Found;
+    }
+    SpanBuffer<1 + kMaxNear * kMaxLeafSpans> buffer;
+    Span* pieces = buffer.at;
+    if (need == Need::First) {
+        // Span m minus the near subtrahends, on its part in the window.
+        const int r = minus_leaves(rs, m, subs, nsub, near, nnear, probe, std::min(b, m.t1), pieces);
+        int k = 0;
+        while (k < r && !(pieces[k].t0 > a)) ++k;
+        // More subtrahends only shrink the pieces: none here, none at all.
+        if (k == r) return FastPath::None;
+        if (pieces[k].t0 > b) return FastPath::Past;
+        if (!rs.clear_of_all_but(subs, nsub, near, nnear, rs.o + pieces[k].t0 * rs.d, margin)) return FastPath::Unknown;
+        answer = pieces[k];
+        return FastPath::Found;
+    }
+    // Any: the first piece overlapping the window by more than 2·eps whose
+    // middle is clear of the others answers with a sliver round it.
+    const int r = minus_leaves(rs, m, subs, nsub, near, nnear, std::max(a, m.t0), std::min(b, m.t1), pieces);
+    bool unsure = false;
+    for (int k = 0; k < r; ++k) {
+        const double q0 = std::max(a, pieces[k].t0), q1 = std::min(b, pieces[k].t1);
+        if (!(q1 - q0 > eps)) continue;
+        if (!(q1 - q0 > 2 * eps)) {
+            unsure = true;
+            continue;
+        }
+        const double mid = 0.5 * (q0 + q1);
+        if (!rs.clear_of_all_but(subs, nsub, near, nnear, rs.o + mid * rs.d, margin)) return FastPath::Unknown;
+        answer = pieces[k];
+        answer.t0 = mid - eps;
+        answer.t1 = mid + eps;
+        return FastPath::Found;
+    }
+    return unsure ? FastPath::Unknown : FastPath::None;
+}
+
+}  // namespace
+
+std::uint32_t RayState::leaf_minus_spans(const csg::Node& n, double a, double b, Need need) {
+    scratch->counters.difference_ops++;
+    const std::uint32_t* kids = &impl->scene.children[n.first];
+    const std::uint32_t* subs = kids + 1;
+    const std::uint32_t nsub = n.count - 1;
+    SpanBuffer<kMaxLeafSpans> minuend;
+    Span* m = minuend.at;
+    const int nm = analytic_node_spans(*this, kids[0], a, b, m);
+    SpanBuffer<1> answer_buffer;
+    Span& answer = answer_buffer.at[0];
+    for (int i = 0; i < nm; ++i) {
+        const FastPath found = piece_if_clear(*this, m[i], subs, nsub, a, b, need, answer);
+        if (found == FastPath::Past) break;
+        if (found == FastPath::None) continue;
+        if (found == FastPath::Unknown) {
+            // Not proven: span i minus every subtrahend on its part in the window.
+            SpanBuffer<1 + kMaxGathered> buffer;
+            Span* pieces = buffer.at;
+            const int r = minus_leaves(*this, m[i], subs, nsub, nullptr, 0, std::max(a, m[i].t0), std::min(b, m[i].t1),
+                                       pieces);
+            int k = 0;
+            for (; k < r; ++k) {
+                const Span& p = pieces[k];
+                if (need == Need::First ? p.t0 > a && p.t0 <= b : std::min(p.t1, b) - std::max(p.t0, a) > eps) break;
+            }
+            if (k == r) continue;
+            answer = pieces[k];
+        }
+        scratch->stack.push(answer);
+        return 1;
+    }
+    return 0;
+}
+
+}  // namespace kerf::render

@@ -1,0 +1,217 @@
+// Nodes of analytic leaves evaluated in one step (render/tracer/
+// node_spans.cpp, leaf_pair_spans: a union, intersection or difference of
+// two leaves; leaf_minus.cpp: a leaf minus a few leaves asked for its first
+// entry or any span). Their spans never touch the span stack until the
+// answer, so these tests put each shape where the tracer asks it every
+// question: as a unit (first entry, shadows), as the minuend of a difference
+// and under an intersection (every span), as a subtrahend (every span on a
+// window). The oracle is point membership along the ray (csg::contains),
+// never a tracer answer; scenes are scaled to 1e-3 and 1e4 and moved away
+// from the origin, rays graze spheres, and faces coincide.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include "tests/render/random_csg.hpp"
+#include "render/tracer/tracer.hpp"
+#include "tests/render/scene_builder.hpp"
+
+using namespace kerf;
+using namespace kerf::test;
+using csg::Op;
+using csg::PrimKind;
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kGraze = 1.2;  // the local radius the grazing rays touch
+
+// World placement: world = at + k·local.
+struct Place {
+    double k = 1;
+    glm::dvec3 at{0.0};
+    glm::dmat4 m() const { return translate(at.x, at.y, at.z) * scale(k, k, k); }
+    glm::dvec3 operator()(const glm::dvec3& local) const { return at + k * local; }
+};
+
+// Whether t is the first entry of the solid along o + t·d in (0, t_end) by
+// membership alone: outside at every one of n samples before t - h, outside
+// at t - h and inside at t + h (t = kInf: outside at every sample).
+bool membership_first_entry(const csg::Scene& s, const glm::dvec3& o, const glm::dvec3& d, double t, double t_end,
+                            double h) {
+    constexpr int n = 3000;
+    for (int i = 1; i <= n; ++i) {
+        const double ti = t_end * i / n;
+        if (ti >= t - h) break;
+        if (csg_contains(s, o + ti * d)) return false;
+    }
+    if (std::isinf(t)) return true;
+    return !csg_contains(s, o + (t - h) * d) && csg_contains(s, o + (t + h) * d);
+}
+
+struct Counts {
+    int hits = 0, misses = 0, blocked = 0, open = 0;
+};
+
+// Rays from outside the local ball of radius 3 (origin within 6) at random
+// points of the local cube of half-side 0.8, a quarter grazing the sphere of
+// radius `graze` (tangent to it at a random point, 1e-9 off either side): intersect() must
+// give the membership first entry, and occluded() on (0, tfar) must be
+// blocked exactly when that entry is before tfar.
+void check_rays(const csg::Scene& s, const Place& p, std::uint64_t seed, Counts& c, int rays, double graze = kGraze) {
+    const render::CsgTracer tracer(s, false);
+    render::TraceScratch scratch;
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(-1, 1);
+    const auto unit = [&] { return glm::normalize(glm::dvec3(u(rng), u(rng), u(rng)) + 1e-3); };
+    for (int i = 0; i < rays; ++i) {
+        glm::dvec3 from, to;
+        if (i % 4 == 0) {
+            const glm::dvec3 n = unit(), side = glm::normalize(glm::cross(n, unit()));
+            to = graze * (1 + 1e-9 * u(rng)) * n;
+            from = to - 5.0 * side;
+        } else {
+            from = 5.0 * unit();
+            to = 0.8 * glm::dvec3(u(rng), u(rng), u(rng));
+        }
+        const glm::dvec3 o = p(from), d = glm::normalize(p(to) - o);
+        if (csg_contains(s, o)) continue;
+        render::TraceHit hit;
+        const double t = tracer.intersect(render::TraceRay{o, d, 0, kInf}, hit, scratch) ? hit.t : kInf;
+        INFO("ray " << i << " from " << from.x << "," << from.y << "," << from.z << " first entry " << t / p.k);
+        CHECK(membership_first_entry(s, o, d, t, 10 * p.k, 1e-7 * p.k));
+        (std::isinf(t) ? c.misses : c.hits)++;
+        const double tfar = p.k * (5 + 3 * u(rng));
+        if (std::abs(t - tfar) < 1e-6 * p.k) continue;
+        const bool shadow = tracer.occluded(render::TraceRay{o, d, 0, tfar}, scratch);
+        CHECK(shadow == (t < tfar));
+        (shadow ? c.blocked : c.open)++;
+    }
+}
+
+// Two random analytic leaves (no half-spaces: the rays' samples stop at
+// 10), every fourth time the first a ball of radius kGraze that the grazing
+// rays touch.
+Tree pair(RandomCsg& gen, Op o, bool ball) {
+    const Tree first = leaf(gen.primitive(0, false));
+    return op(o, {ball ? leaf(sphere(kGraze)) : first, leaf(gen.primitive(1, false))});
+}
+
+// The tree scaled by k and moved to `at` (leaves only; no planes here).
+Tree placed(Tree t, const Place& p) {
+    if (t.op != Op::Leaf) {
+        for (Tree& k : t.kids) k = placed(std::move(k), p);
+        return t;
+    }
+    const csg::Leaf& l = t.leaf;
+    glm::dmat4 w(l.world_from_object.linear);
+    w[3] = glm::dvec4(l.world_from_object.offset, 1.0);
+    t.leaf = make_leaf(l.kind, std::vector<double>(l.p, l.p + 6), p.m() * w, l.material);
+    return t;
+}
+
+const Place kPlaces[] = {{1, {0, 0, 0}}, {1, {1e3, -2e3, 5e2}}, {1e-3, {3e-3, -2e-3, 5e-3}}, {1e4, {-4e5, 2e5, 1e5}}};
+
+}  // namespace
+
+TEST_CASE("leaf pairs: unions, intersections and differences of two leaves match point membership",
+          "[render][tracer][leaf]") {
+    // Each pair as a unit, as a difference's minuend (its every span), under
+    // an intersection and as a subtrahend (every span on a window).
+    for (const Place& p : kPlaces) {
+        Counts c;
+        for (std::uint64_t seed = 1; seed <= 24; ++seed) {
+            RandomCsg gen(seed * 7919);
+            const Op ops[3] = {Op::Union, Op::Intersection, Op::Difference};
+            const Tree two = pair(gen, ops[seed % 3], seed % 4 == 0);
+            const Tree other = leaf(gen.primitive(2, false));
+            const Tree shapes[] = {two, op(Op::Difference, {two, other}), op(Op::Intersection, {other, two}),
+                                   op(Op::Difference, {other, two})};
+            const Tree& tree = shapes[(seed / 3) % 4];
+            INFO("scale " << p.k << " seed " << seed << " op " << int(ops[seed % 3]) << " shape " << (seed / 3) % 4);
+            check_rays(make_scene(placed(tree, p)), p, seed, c, 150);
+        }
+        INFO("scale " << p.k << ": " << c.hits << " hits, " << c.misses << " misses, " << c.blocked << " blocked");
+        CHECK(c.hits > 600);
+        CHECK(c.misses > 300);
+        CHECK(c.blocked > 300);
+        CHECK(c.open > 300);
+    }
+}
+
+TEST_CASE("leaf pairs and leaf minus leaves: coincident faces leave no slivers", "[render][tracer][leaf]") {
+    // A − A is empty; a box minus a box flush with its top face, the union of
+    // two boxes sharing a face and the intersection of a sphere with itself
+    // are their regularised sets (no sliver, no inner surface), whatever the
+    // scale and place.
+    for (const Place& p : kPlaces) {
+        const csg::Leaf b = box({-1, -1, -1}, {1, 1, 1}, glm::dmat4(1.0));
+        const csg::Leaf top = box({-0.5, -0.5, 0}, {0.5, 0.5, 1}, glm::dmat4(1.0));
+        const csg::Leaf right = box({1, -1, -1}, {2, 1, 1}, glm::dmat4(1.0));
+        const csg::Leaf ball = sphere(kGraze);
+        const Tree trees[] = {
+            op(Op::Difference, {leaf(ball), leaf(ball)}),
+            op(Op::Difference, {leaf(b), leaf(top)}),
+            op(Op::Difference, {leaf(b), leaf(top), leaf(right), leaf(sphere(0.3, translate(-1, -1, 1)))}),
+            op(Op::Union, {leaf(b), leaf(right)}),
+            op(Op::Intersection, {leaf(ball), leaf(ball)}),
+            op(Op::Difference, {op(Op::Union, {leaf(b), leaf(right)}), leaf(top)}),
+        };
+        Counts c;
+        std::uint64_t seed = 40;
+        for (const Tree& t : trees) {
+            INFO("scale " << p.k << " tree " << seed - 40);
+            check_rays(make_scene(placed(t, p)), p, seed++, c, 300);
+        }
+        INFO("scale " << p.k << ": " << c.hits << " hits, " << c.misses << " misses");
+        CHECK(c.hits > 600);
+        CHECK(c.misses > 300);
+    }
+}
+
+TEST_CASE("leaf minus leaves: a grooved ball's camera and shadow rays match point membership",
+          "[render][tracer][leaf]") {
+    // The grooved sphere of bench/scenes.py (a sphere minus six tori), at
+    // three scales and places: rays from outside, and shadow rays from
+    // points in the grooves (off the solid, inside the sphere's ball) in
+    // every direction, which leave a groove through one torus or two.
+    for (const Place& p : kPlaces) {
+        std::vector<Tree> kids = {leaf(sphere(1))};
+        const glm::dmat4 rots[3] = {glm::dmat4(1.0), rotate_deg(90, {0, 1, 0}), rotate_deg(90, {1, 0, 0})};
+        for (const glm::dmat4& r : rots)
+            for (const double flip : {0.0, 180.0})
+                kids.push_back(leaf(make_leaf(PrimKind::Torus, {1, 0.1},
+                                              r * rotate_deg(flip, {0, 1, 0}) * translate(0, 0, 0.374) *
+                                                  scale(0.9, 0.9, 0.9))));
+        const csg::Scene s = make_scene(placed(op(Op::Difference, kids), p));
+        Counts c;
+        check_rays(s, p, 77, c, 600, 1.0);
+        CHECK(c.hits > 200);
+
+        const render::CsgTracer tracer(s, false);
+        render::TraceScratch scratch;
+        std::mt19937_64 rng(78);
+        std::uniform_real_distribution<double> u(-1, 1);
+        int blocked = 0, open = 0;
+        for (int i = 0; i < 6000 && blocked + open < 2500; ++i) {
+            const glm::dvec3 local = (0.86 + 0.14 * (u(rng) + 1) / 2) * glm::normalize(glm::dvec3(u(rng), u(rng), u(rng)));
+            const glm::dvec3 o = p(local);
+            if (csg_contains(s, o) || glm::length(local) > 0.999) continue;
+            const glm::dvec3 d = glm::normalize(glm::dvec3(u(rng), u(rng), u(rng)) + 1e-3);
+            render::TraceHit hit;
+            const double t = tracer.intersect(render::TraceRay{o, d, 0, kInf}, hit, scratch) ? hit.t : kInf;
+            INFO("scale " << p.k << " groove ray " << i << " first entry " << t / p.k);
+            CHECK(membership_first_entry(s, o, d, t, 3 * p.k, 1e-7 * p.k));
+            const double tfar = p.k * (0.02 + (u(rng) + 1));
+            if (std::abs(t - tfar) < 1e-6 * p.k) continue;
+            const bool shadow = tracer.occluded(render::TraceRay{o, d, 0, tfar}, scratch);
+            CHECK(shadow == (t < tfar));
+            (shadow ? blocked : open)++;
+        }
+        INFO("scale " << p.k << ": " << blocked << " blocked, " << open << " open");
+        CHECK(blocked > 500);
+        CHECK(open > 500);
+    }
+}
