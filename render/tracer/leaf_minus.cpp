@@ -9,6 +9,7 @@
 // without a recursion through RayState::spans each, and only the answer is
 // pushed.
 #include <algorithm>
+#include <cmath>
 
 #include "render/tracer/analytic_spans.hpp"
 
@@ -33,6 +34,42 @@ int minus_leaves(RayState& rs, const Span& m, const std::uint32_t* subs, std::ui
         ng += analytic_node_spans(rs, subs[which ? which[j] : j], wa, wb, gathered.at + ng);
     ng = span_normalize_union(gathered.at, ng, rs.eps);
     return span_difference(&m, 1, gathered.at, ng, out, rs.eps);
+}
+
+// Whether the ray's segment [p0, p1] lies inside the leaf at `node` with
+// `margin` (world) to spare, by convexity: a sphere or box holding both
+// ends holds the segment, and so does a torus when one ball of its tube
+// (radius r round the core point nearest p0) holds both. Then a minuend's
+// part on [p0, p1] minus that leaf is empty, whatever the other
+// subtrahends do: a shadow ray leaving a groove through its opening needs
+// no torus solve. The margin (twice the degenerate rule) dwarfs the leaf
+// test's error, so its spans would have left nothing longer than eps
+// either. The object-space margin is the world one times the transform's
+// norm bound, as in clearance.cpp. False: not proven.
+bool segment_inside(const RayState& rs, std::uint32_t node, double p0, double p1, double margin) {
+    const std::uint32_t leaf_id = rs.impl->scene.nodes[node].first;
+    const csg::Leaf& leaf = rs.impl->scene.leaves[leaf_id];
+    const double m = margin * rs.impl->leaf_stretch[leaf_id];
+    const double* c = leaf.p;
+    if (leaf.kind != csg::PrimKind::Sphere && leaf.kind != csg::PrimKind::Box && leaf.kind != csg::PrimKind::Torus)
+        return false;
+    const glm::dvec3 q0 = leaf.object_from_world.point(rs.o + p0 * rs.d);
+    const glm::dvec3 q1 = leaf.object_from_world.point(rs.o + p1 * rs.d);
+    if (leaf.kind == csg::PrimKind::Box) {
+        const glm::dvec3 lo = glm::dvec3(c[0], c[1], c[2]) + m, hi = glm::dvec3(c[3], c[4], c[5]) - m;
+        return glm::all(glm::greaterThan(glm::min(q0, q1), lo)) && glm::all(glm::lessThan(glm::max(q0, q1), hi));
+    }
+    glm::dvec3 centre(0.0);
+    double r = c[0] - m;
+    if (leaf.kind == csg::PrimKind::Torus) {
+        const double rho = std::sqrt(q0.x * q0.x + q0.y * q0.y);
+        if (!(rho > 0)) return false;
+        centre = glm::dvec3(c[0] * q0.x / rho, c[0] * q0.y / rho, 0.0);
+        r = c[1] - m;
+    }
+    if (!(r > 0)) return false;
+    const glm::dvec3 e0 = q0 - centre, e1 = q1 - centre;
+    return glm::dot(e0, e0) < r * r && glm::dot(e1, e1) < r * r;
 }
 
 // first_piece_if_clear and any_piece_if_clear on minuend span m: Found with
@@ -64,9 +101,13 @@ FastPath piece_if_clear(RayState& rs, const Span& m, const std::uint32_t* subs, 
         answer = pieces[k];
         return FastPath::Found;
     }
-    // Any: the first piece overlapping the window by more than 2·eps whose
-    // middle is clear of the others answers with a sliver round it.
-    const int r = minus_leaves(rs, m, subs, nsub, near, nnear, std::max(a, m.t0), std::min(b, m.t1), pieces);
+    // Any: none when a near subtrahend holds the span's whole part in the
+    // window; else the first piece overlapping the window by more than 2·eps
+    // whose middle is clear of the others answers with a sliver round it.
+    const double p0 = std::max(a, m.t0), p1 = std::min(b, m.t1);
+    for (std::uint32_t j = 0; j < nnear; ++j)
+        if (segment_inside(rs, subs[near[j]], p0, p1, margin)) return FastPath::None;
+    const int r = minus_leaves(rs, m, subs, nsub, near, nnear, p0, p1, pieces);
     bool unsure = false;
     for (int k = 0; k < r; ++k) {
         const double q0 = std::max(a, pieces[k].t0), q1 = std::min(b, pieces[k].t1);

@@ -10,6 +10,10 @@
 #include <cstdint>
 #include <limits>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include <embree3/rtcore.h>
 #include <glm/glm.hpp>
 
@@ -63,15 +67,29 @@ constexpr std::uint32_t kMaxNear = 2;
 
 // The squared distance from x to the box (0 inside). Empty boxes (lo =
 // +inf) give +inf: an empty solid is far from everything.
+// Per axis std::max(0.0, std::max(lo - x, x - hi)), squared and summed in
+// axis order. x and y go in one SSE2 register: GCC left a data-dependent
+// branch per axis (is the point beyond this slab?), which mispredicts on
+// the fast path's probes; maxpd(b, a) is std::max(a, b) for every input,
+// NaN included, so the sum is the same bits.
 inline double box_distance2(const csg::Aabb& box, const glm::dvec3& x) {
+#if defined(__SSE2__)
+    const __m128d p = _mm_loadu_pd(&x.x), zero = _mm_setzero_pd();
+    const __m128d out = _mm_max_pd(_mm_max_pd(_mm_sub_pd(p, _mm_loadu_pd(&box.hi.x)),
+                                              _mm_sub_pd(_mm_loadu_pd(&box.lo.x), p)),
+                                   zero);
+    const __m128d out_z = _mm_max_sd(_mm_max_sd(_mm_set_sd(x.z - box.hi.z), _mm_set_sd(box.lo.z - x.z)), zero);
+    const __m128d sq = _mm_mul_pd(out, out);
+    const double z = _mm_cvtsd_f64(out_z);
+    return (_mm_cvtsd_f64(sq) + _mm_cvtsd_f64(_mm_unpackhi_pd(sq, sq))) + z * z;
+#else
     double sum = 0;
     for (int i = 0; i < 3; ++i) {
-        // 0.0 first: GCC makes std::max(0.0, v) one maxsd, std::max(v, 0.0) a
-        // branch (the same value for every number; v is never NaN here).
         const double out = std::max(0.0, std::max(box.lo[i] - x[i], x[i] - box.hi[i]));
         sum += out * out;
     }
     return sum;
+#endif
 }
 
 struct RayState {

@@ -10,6 +10,7 @@
 // from the origin, rays graze spheres, and faces coincide.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -171,12 +172,64 @@ TEST_CASE("leaf pairs and leaf minus leaves: coincident faces leave no slivers",
     }
 }
 
-TEST_CASE("leaf minus leaves: a grooved ball's camera and shadow rays match point membership",
+namespace {
+
+// Shadow rays leaving the cuts of `s`, checked against the membership first
+// entry: from random points of the cuts (in the cube of half-side `ball`,
+// inside the minuend, off the solid) and from the cut faces as the shader
+// leaves them (100 degenerate rules off along the normal), in random
+// directions (on the normal's side). Returns {blocked, open}.
+template <typename InMinuend>
+std::pair<int, int> check_cut_shadows(const csg::Scene& s, const Place& p, double ball, InMinuend in_minuend,
+                                      std::uint64_t seed) {
+    const render::CsgTracer tracer(s, false);
+    render::TraceScratch scratch;
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(-1, 1);
+    const auto unit = [&] { return glm::normalize(glm::dvec3(u(rng), u(rng), u(rng)) + 1e-3); };
+    int blocked = 0, open = 0;
+    const auto check = [&](const glm::dvec3& o, const glm::dvec3& d, const char* what, int i) {
+        render::TraceHit hit;
+        const double t = tracer.intersect(render::TraceRay{o, d, 0, kInf}, hit, scratch) ? hit.t : kInf;
+        INFO("scale " << p.k << " " << what << " " << i << " first entry " << t / p.k);
+        CHECK(membership_first_entry(s, o, d, t, 3 * p.k, 1e-7 * p.k));
+        const double tfar = p.k * (0.02 + (u(rng) + 1));
+        if (std::abs(t - tfar) < 1e-6 * p.k) return;
+        const bool shadow = tracer.occluded(render::TraceRay{o, d, 0, tfar}, scratch);
+        CHECK(shadow == (t < tfar));
+        (shadow ? blocked : open)++;
+    };
+    for (int i = 0, n = 0; i < 20000 && n < 1500; ++i) {
+        const glm::dvec3 local = ball * glm::dvec3(u(rng), u(rng), u(rng));
+        if (!in_minuend(local) || csg_contains(s, p(local))) continue;
+        ++n;
+        check(p(local), unit(), "ray from a cut", i);
+    }
+    for (int i = 0, n = 0; i < 20000 && n < 1500; ++i) {
+        // A camera ray onto the solid; its hit on a cut face (flipped).
+        const glm::dvec3 o = p(5.0 * unit()), d = glm::normalize(p(0.8 * ball * unit()) - o);
+        render::TraceHit hit;
+        if (!tracer.intersect(render::TraceRay{o, d, 0, kInf}, hit, scratch) || !hit.surface.flip) continue;
+        const glm::dvec3 x = o + hit.t * d, n_out = tracer.normal(hit, x);
+        const glm::dvec3 from = x + tracer.surface_offset(hit, x) * n_out;
+        glm::dvec3 dir = unit();
+        if (glm::dot(dir, n_out) < 0) dir = -dir;
+        ++n;
+        check(from, dir, "ray from a cut face", i);
+    }
+    return {blocked, open};
+}
+
+}  // namespace
+
+TEST_CASE("leaf minus leaves: shadow rays leaving grooves and pockets match point membership",
           "[render][tracer][leaf]") {
-    // The grooved sphere of bench/scenes.py (a sphere minus six tori), at
-    // three scales and places: rays from outside, and shadow rays from
-    // points in the grooves (off the solid, inside the sphere's ball) in
-    // every direction, which leave a groove through one torus or two.
+    // The grooved sphere of bench/scenes.py (a sphere minus six tori), and
+    // a box with a spherical dimple, a box pocket and a torus groove, at
+    // four scales and places: rays from outside, then shadow rays leaving
+    // the cuts, many through their openings, which a near torus, ball or box
+    // holding the whole segment answers without a solve (leaf_minus.cpp,
+    // segment_inside).
     for (const Place& p : kPlaces) {
         std::vector<Tree> kids = {leaf(sphere(1))};
         const glm::dmat4 rots[3] = {glm::dmat4(1.0), rotate_deg(90, {0, 1, 0}), rotate_deg(90, {1, 0, 0})};
@@ -185,33 +238,25 @@ TEST_CASE("leaf minus leaves: a grooved ball's camera and shadow rays match poin
                 kids.push_back(leaf(make_leaf(PrimKind::Torus, {1, 0.1},
                                               r * rotate_deg(flip, {0, 1, 0}) * translate(0, 0, 0.374) *
                                                   scale(0.9, 0.9, 0.9))));
-        const csg::Scene s = make_scene(placed(op(Op::Difference, kids), p));
-        Counts c;
-        check_rays(s, p, 77, c, 600, 1.0);
-        CHECK(c.hits > 200);
-
-        const render::CsgTracer tracer(s, false);
-        render::TraceScratch scratch;
-        std::mt19937_64 rng(78);
-        std::uniform_real_distribution<double> u(-1, 1);
-        int blocked = 0, open = 0;
-        for (int i = 0; i < 6000 && blocked + open < 2500; ++i) {
-            const glm::dvec3 local = (0.86 + 0.14 * (u(rng) + 1) / 2) * glm::normalize(glm::dvec3(u(rng), u(rng), u(rng)));
-            const glm::dvec3 o = p(local);
-            if (csg_contains(s, o) || glm::length(local) > 0.999) continue;
-            const glm::dvec3 d = glm::normalize(glm::dvec3(u(rng), u(rng), u(rng)) + 1e-3);
-            render::TraceHit hit;
-            const double t = tracer.intersect(render::TraceRay{o, d, 0, kInf}, hit, scratch) ? hit.t : kInf;
-            INFO("scale " << p.k << " groove ray " << i << " first entry " << t / p.k);
-            CHECK(membership_first_entry(s, o, d, t, 3 * p.k, 1e-7 * p.k));
-            const double tfar = p.k * (0.02 + (u(rng) + 1));
-            if (std::abs(t - tfar) < 1e-6 * p.k) continue;
-            const bool shadow = tracer.occluded(render::TraceRay{o, d, 0, tfar}, scratch);
-            CHECK(shadow == (t < tfar));
-            (shadow ? blocked : open)++;
+        const Tree pocketed = op(Op::Difference, {leaf(box({-0.7, -0.7, -0.7}, {0.7, 0.7, 0.7})),
+                                                  leaf(sphere(0.35, translate(0.3, 0.3, 0.75))),
+                                                  leaf(box({-0.5, -0.5, 0.3}, {-0.1, 0.2, 1}, rotate_deg(10, {0, 0, 1}))),
+                                                  leaf(make_leaf(PrimKind::Torus, {0.5, 0.12},
+                                                                 rotate_deg(90, {1, 0, 0}) * translate(0, 0.0, -0.7)))});
+        for (const bool ball : {true, false}) {
+            const char* name = ball ? "grooved ball" : "pocketed box";
+            const csg::Scene s = make_scene(placed(ball ? op(Op::Difference, kids) : pocketed, p));
+            Counts c;
+            check_rays(s, p, 77, c, 600, 1.0);
+            INFO(name << " at scale " << p.k << ": " << c.hits << " hits");
+            CHECK(c.hits > 200);
+            const auto in_minuend = [ball](const glm::dvec3& q) {
+                return ball ? glm::length(q) < 1 : std::max({std::abs(q.x), std::abs(q.y), std::abs(q.z)}) < 0.7;
+            };
+            const auto [blocked, open] = check_cut_shadows(s, p, 1.0, in_minuend, 78);
+            INFO(name << " at scale " << p.k << ": " << blocked << " blocked, " << open << " open");
+            CHECK(blocked > 500);
+            CHECK(open > 500);
         }
-        INFO("scale " << p.k << ": " << blocked << " blocked, " << open << " open");
-        CHECK(blocked > 500);
-        CHECK(open > 500);
     }
 }
