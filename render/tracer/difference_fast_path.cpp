@@ -34,7 +34,7 @@ FastPath RayState::first_piece_if_clear(const csg::Node& n, std::uint32_t base, 
     SpanStack& st = scratch->stack;
     Span piece = *st.at(base + i);
     double probe;
-    if (const FastPath p = fast_path_probe(piece, a, b, need, eps, probe); p != FastPath::Found) return p;
+    if (const FastPath p = fast_path_probe(piece.t0, piece.t1, a, b, need, eps, probe); p != FastPath::Found) return p;
     const double margin = 2 * eps * len;
     const std::uint32_t* subs = &impl->scene.children[n.first + 1];
     const std::uint32_t nsub = n.count - 1;

@@ -76,15 +76,16 @@ bool segment_inside(const RayState& rs, std::uint32_t node, double p0, double p1
 // the answer in `answer`, Past, None, or Unknown (gather every subtrahend).
 FastPath piece_if_clear(RayState& rs, const Span& m, const std::uint32_t* subs, std::uint32_t nsub, double a,
                         double b, Need need, Span& answer) {
-    Span piece = m;
-    double probe;
+    double t0 = m.t0, t1 = m.t1, probe;
     const double eps = rs.eps;
-    if (const FastPath p = fast_path_probe(piece, a, b, need, eps, probe); p != FastPath::Found) return p;
+    if (const FastPath p = fast_path_probe(t0, t1, a, b, need, eps, probe); p != FastPath::Found) return p;
     const double margin = 2 * eps * rs.len;
     std::uint32_t near[kMaxNear], nnear;
     if (!rs.near_subtrahends(subs, nsub, rs.o + probe * rs.d, margin, near, nnear)) return FastPath::Unknown;
     if (nnear == 0) {
-        answer = piece;
+        answer = m;
+        answer.t0 = t0;
+        answer.t1 = t1;
         return FastPath::Found;
     }
     SpanBuffer<1 + kMaxNear * kMaxLeafSpans> buffer;

@@ -40,24 +40,26 @@ enum class FastPath : std::uint8_t {
     None,     // this minuend span has no answer
 };
 
-// The clearance fast path's probe on minuend span `piece` (README.md,
+// The clearance fast path's probe on a minuend span [t0, t1] (README.md,
 // "Tracer design"): for First the span's entry, for Any the middle of its
-// part in [a, b], with `piece` narrowed to the sliver of eps round it (a
+// part in [a, b], with [t0, t1] narrowed to the sliver of eps round it (a
 // sliver longer than eps answers Any). Unknown when no probe proves
 // anything (First: the span starts inside the window; Any: its part there
-// is too short), Past when it starts past the window, else Found.
-inline FastPath fast_path_probe(Span& piece, double a, double b, Need need, double eps, double& probe) {
+// is too short), Past when it starts past the window, else Found. (The
+// ends, not the Span: a 16-byte copy of a span just written field by field
+// stalls on store forwarding.)
+inline FastPath fast_path_probe(double& t0, double& t1, double a, double b, Need need, double eps, double& probe) {
     if (need == Need::First) {
-        if (!(piece.t0 > a)) return FastPath::Unknown;  // starts inside the minuend: the entry is later
-        if (piece.t0 > b) return FastPath::Past;
-        probe = piece.t0;
+        if (!(t0 > a)) return FastPath::Unknown;  // starts inside the minuend: the entry is later
+        if (t0 > b) return FastPath::Past;
+        probe = t0;
         return FastPath::Found;
     }
-    const double p0 = std::max(a, piece.t0), p1 = std::min(b, piece.t1);
+    const double p0 = std::max(a, t0), p1 = std::min(b, t1);
     if (!(p1 - p0 > 2 * eps)) return FastPath::Unknown;
     probe = 0.5 * (p0 + p1);
-    piece.t0 = probe - eps;
-    piece.t1 = probe + eps;
+    t0 = probe - eps;
+    t1 = probe + eps;
     return FastPath::Found;
 }
 
