@@ -81,8 +81,8 @@ struct UnitChords {
     Chord m_out, m_in;  // the minuend sphere
     Chord s_out[SphereMinus::kMaxSubs], s_in[SphereMinus::kMaxSubs];
     ball_chords_detail::Centre m, s[SphereMinus::kMaxSubs];  // where the balls' centres lie
-    std::uint32_t item, n;
-    double eps;  // the unit's degenerate rule (t)
+    std::uint32_t item, node, n;
+    double eps;  // the unit's degenerate rule (t), set with the upper half
 };
 
 // Whether the outer chord of unit `item`'s ball (its minuend's) reaches
@@ -124,7 +124,7 @@ inline bool unit_chords(const RayState& st, std::uint32_t item, std::uint32_t no
     const SphereMinus& sm = impl.top.sphere_minus[item];
     u.m = m;
     u.item = item;
-    u.eps = (impl.node_eps[node] + st.eps_ray) * st.inv_len;
+    u.node = node;
     u.n = sm.count;
     for (std::uint32_t k = 0; k < sm.count; ++k) {
         const SubBound& s = impl.top.subs[sm.first + k];
@@ -145,6 +145,7 @@ inline bool unit_chords(const RayState& st, std::uint32_t item, std::uint32_t no
     const CsgTracer::Impl& impl = *st.impl;
     const double inv_len2 = st.inv_len * st.inv_len, slack_abs = 4 * st.eps_ray, rel = impl.ball_slack;
     const SphereMinus& sm = impl.top.sphere_minus[u.item];
+    u.eps = (impl.node_eps[u.node] + st.eps_ray) * st.inv_len;
     u.m_in = chord(u.m, sm.r_in, -1, slack_abs, rel, inv_len2);
     for (std::uint32_t k = 0; k < sm.count; ++k) {
         const SubBound& s = impl.top.subs[sm.first + k];
@@ -168,6 +169,7 @@ inline bool unit_chords(const RayState& st, std::uint32_t item, std::uint32_t no
 // x moved past every chord of cs[0..n) that holds it (again and again:
 // the chords may chain).
 inline double past_chords(const Chord* cs, std::uint32_t n, double x) {
+    if (n == 1) return cs[0].t0 <= x && cs[0].t1 > x ? cs[0].t1 : x;  // a cell: one hollow
     for (std::uint32_t pass = 0; pass < n; ++pass) {
         bool moved = false;
         for (std::uint32_t k = 0; k < n; ++k)
