@@ -70,70 +70,106 @@ struct Centre {
 
 }  // namespace ball_chords_detail
 
-// The chords of a unit's balls along the state's ray. (Left uninitialised:
-// unit_chords writes what is read.)
+// The chords of a unit's balls along the state's ray, in two halves: the
+// lower bound's (the minuend's outer chord, the subtrahends' inner ones)
+// first, since most units the traversal meets are dropped by it (entered
+// through their hollow, or starting past the best entry), and the upper
+// bound's (the minuend's inner chord, the subtrahends' outer ones) only for
+// the rest: half the square roots for a dropped unit. (Left uninitialised:
+// each half writes what is read.)
 struct UnitChords {
     Chord m_out, m_in;  // the minuend sphere
     Chord s_out[SphereMinus::kMaxSubs], s_in[SphereMinus::kMaxSubs];
-    std::uint32_t n;
-    double eps;  // the unit's degenerate rule (t)
+    ball_chords_detail::Centre m, s[SphereMinus::kMaxSubs];  // where the balls' centres lie
+    std::uint32_t item, node, n;
+    double eps;  // the unit's degenerate rule (t), set with the upper half
 };
 
-// The chords of unit `item` of the top BVH (which has a SphereMinus) for
-// the window [a, b]. False, with the rest not computed, when the minuend's
-// outer chord misses the window (the unit has no span there).
+// Whether the outer chord of unit `item`'s ball (its minuend's) reaches
+// the window [a, b]; m and h2 (its squared half-length in t) are set for
+// unit_chords when it does. Most units the ray's box test lets through miss
+// here: decided without the square root (h < a - tc, h < tc - b), whose
+// latency was most of their cost, and by one branch, whose outcome no
+// predictor can guess: the window's gap to tc is positive on at most one
+// side; gap·|gap| is its square there and negative when tc lies in the
+// window, so min(h², h² - gap·|gap|) > 0 says "the chord reaches the
+// window" (NaN and h² <= 0 miss). Inline and apart from unit_chords, so a
+// miss costs its callback no more than this (large shell: two camera-ray
+// callbacks in three end here, and 93 % of the shadow rays').
+[[gnu::always_inline]] inline bool outer_chord_reaches(const RayState& st, std::uint32_t item, double a, double b,
+                                                       ball_chords_detail::Centre& m, double& h2) {
+    const CsgTracer::Impl& impl = *st.impl;
+    const double inv_len2 = st.inv_len * st.inv_len;
+    const Ball& ball = impl.top.balls[item];
+    m = ball_chords_detail::centre(st, ball.c, inv_len2);
+    const double rr = ball.r + 4 * st.eps_ray + impl.ball_slack * m.w1;
+    h2 = (rr * rr - m.q2 + 1e-13 * (m.w1 * m.w1 + rr * rr)) * inv_len2;
+    const double gap = std::max(a - m.tc, m.tc - b);
+    return std::min(h2, h2 - gap * std::abs(gap)) > 0;
+}
+
+// The lower half of the chords of unit `item` of the top BVH (which has a
+// SphereMinus) for the window [a, b], after outer_chord_reaches gave m and
+// h2. False, with the rest not computed, when the minuend's outer chord
+// misses the window (the unit has no span there).
 inline bool unit_chords(const RayState& st, std::uint32_t item, std::uint32_t node, double a, double b,
-                        UnitChords& u) {
+                        const ball_chords_detail::Centre& m, double h2, UnitChords& u) {
     using namespace ball_chords_detail;
     const CsgTracer::Impl& impl = *st.impl;
     const double inv_len2 = st.inv_len * st.inv_len, slack_abs = 4 * st.eps_ray, rel = impl.ball_slack;
-    const Ball& ball = impl.top.balls[item];
-    const Centre m = centre(st, ball.c, inv_len2);
-    {
-        // Most units the ray's box test lets through miss here: decided
-        // without the square root (h < a - tc, h < tc - b), whose latency
-        // was most of their cost, and by one branch, whose outcome no
-        // predictor can guess: the window's gap to tc is positive on at
-        // most one side; gap·|gap| is its square there and negative when tc
-        // lies in the window, so min(h², h² - gap·|gap|) > 0 says "the
-        // chord reaches the window" (NaN and h² <= 0 miss).
-        const double rr = ball.r + slack_abs + rel * m.w1;
-        const double h2 = (rr * rr - m.q2 + 1e-13 * (m.w1 * m.w1 + rr * rr)) * inv_len2;
-        const double gap = std::max(a - m.tc, m.tc - b);
-        if (!(std::min(h2, h2 - gap * std::abs(gap)) > 0)) return false;
-    }
-    u.m_out = chord(m, ball.r, 1, slack_abs, rel, inv_len2);
+    // (chord()'s sum for the outer ball, grouped as outer_chord_reaches does.)
+    const double h = std::sqrt(h2);
+    u.m_out = Chord{m.tc - h, m.tc + h};
     if (!(u.m_out.t0 <= b && u.m_out.t1 >= a)) return false;
     const SphereMinus& sm = impl.top.sphere_minus[item];
-    u.eps = (impl.node_eps[node] + st.eps_ray) * st.inv_len;
-    u.m_in = chord(m, sm.r_in, -1, slack_abs, rel, inv_len2);
+    u.m = m;
+    u.item = item;
+    u.node = node;
     u.n = sm.count;
     for (std::uint32_t k = 0; k < sm.count; ++k) {
         const SubBound& s = impl.top.subs[sm.first + k];
         if (s.r_out >= 0) {
-            const Centre c = centre(st, s.c, inv_len2);
-            u.s_out[k] = chord(c, s.r_out, 1, slack_abs, rel, inv_len2);
-            u.s_in[k] = chord(c, s.r_in, -1, slack_abs, rel, inv_len2);
+            u.s[k] = centre(st, s.c, inv_len2);
+            u.s_in[k] = chord(u.s[k], s.r_in, -1, slack_abs, rel, inv_len2);
         } else {
-            // The box's chord, grown by the same per-ray slack (in t).
-            double t0 = -kInf, t1 = kInf;
             u.s_in[k] = kNoChord;
-            if (!slab_clip(s.box, st.o, st.invd, t0, t1)) {
-                u.s_out[k] = kNoChord;
-                continue;
-            }
-            const glm::dvec3 w = 0.5 * (s.box.lo + s.box.hi) - st.o;
-            const double pad =
-                4 * u.eps + (slack_abs + rel * (std::abs(w.x) + std::abs(w.y) + std::abs(w.z))) * st.inv_len;
-            u.s_out[k] = Chord{t0 - pad, t1 + pad};
         }
     }
     return true;
 }
 
+// The upper half: the minuend's inner chord and the subtrahends' outer
+// chords (unit_chords first).
+[[gnu::always_inline]] inline void unit_chords_upper(const RayState& st, UnitChords& u) {
+    using namespace ball_chords_detail;
+    const CsgTracer::Impl& impl = *st.impl;
+    const double inv_len2 = st.inv_len * st.inv_len, slack_abs = 4 * st.eps_ray, rel = impl.ball_slack;
+    const SphereMinus& sm = impl.top.sphere_minus[u.item];
+    u.eps = (impl.node_eps[u.node] + st.eps_ray) * st.inv_len;
+    u.m_in = chord(u.m, sm.r_in, -1, slack_abs, rel, inv_len2);
+    for (std::uint32_t k = 0; k < sm.count; ++k) {
+        const SubBound& s = impl.top.subs[sm.first + k];
+        if (s.r_out >= 0) {
+            u.s_out[k] = chord(u.s[k], s.r_out, 1, slack_abs, rel, inv_len2);
+            continue;
+        }
+        // The box's chord, grown by the same per-ray slack (in t).
+        double t0 = -kInf, t1 = kInf;
+        if (!slab_clip(s.box, st.o, st.invd, t0, t1)) {
+            u.s_out[k] = kNoChord;
+            continue;
+        }
+        const glm::dvec3 w = 0.5 * (s.box.lo + s.box.hi) - st.o;
+        const double pad =
+            4 * u.eps + (slack_abs + rel * (std::abs(w.x) + std::abs(w.y) + std::abs(w.z))) * st.inv_len;
+        u.s_out[k] = Chord{t0 - pad, t1 + pad};
+    }
+}
+
 // x moved past every chord of cs[0..n) that holds it (again and again:
 // the chords may chain).
 inline double past_chords(const Chord* cs, std::uint32_t n, double x) {
+    if (n == 1) return cs[0].t0 <= x && cs[0].t1 > x ? cs[0].t1 : x;  // a cell: one hollow
     for (std::uint32_t pass = 0; pass < n; ++pass) {
         bool moved = false;
         for (std::uint32_t k = 0; k < n; ++k)
@@ -159,7 +195,8 @@ inline double chords_lower(const UnitChords& u, double a, double b) {
 
 // The start of the first stretch of the minuend's inner chord on (a, b)
 // that no subtrahend's outer chord touches and that is longer than 2·eps
-// (a piece of the unit holds it); kInf when none is found.
+// (a piece of the unit holds it); kInf when none is found. (unit_chords_upper
+// first.)
 inline double chords_inside(const UnitChords& u, double a, double b) {
     double x = std::max(a, u.m_in.t0);
     const double end = std::min(b, u.m_in.t1);
@@ -179,9 +216,29 @@ inline double chords_inside(const UnitChords& u, double a, double b) {
 // finds), or kInf: a stretch inside the unit, on a ray that is outside the
 // minuend's outer chord just after a (so the piece holding the stretch
 // starts after a).
-inline double chords_upper(const UnitChords& u, double a, double b) {
+inline double chords_upper(const RayState& st, UnitChords& u, double a, double b) {
     if (!(u.m_out.t0 > a)) return kInf;
+    unit_chords_upper(st, u);
     return chords_inside(u, a, b);
+}
+
+// Whether the unit's first entry after a, when it has one on the window,
+// is its minuend's own entry, found by the minuend's leaf test alone (after
+// chords_upper gave a bound, so the ray is outside the minuend's outer
+// chord just after a). The minuend's computed span [t0, t1] holds its inner
+// chord and lies in its outer one, so t0 lies in [m_out.t0, m_in.t0] and
+// t1 - t0 exceeds the inner chord's length; when that is more than 2·eps
+// and no subtrahend's outer chord (which holds its computed spans) touches
+// [m_out.t0, m_in.t0 + 2·eps], every subtraction the exact evaluation makes
+// (the clearance fast path, its near subtrahends, the full gather) leaves
+// the piece [t0, ...) with the minuend's t0 and end: span_difference keeps a
+// piece's start when no subtrahend span begins within eps of it.
+inline bool entry_is_minuends(const UnitChords& u) {
+    if (!(u.m_in.t1 - u.m_in.t0 > 2 * u.eps)) return false;
+    const double lo = u.m_out.t0, hi = u.m_in.t0 + 2 * u.eps;
+    for (std::uint32_t k = 0; k < u.n; ++k)
+        if (u.s_out[k].t0 <= hi && u.s_out[k].t1 >= lo) return false;
+    return true;
 }
 
 }  // namespace kerf::render

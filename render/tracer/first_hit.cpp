@@ -14,12 +14,22 @@ namespace kerf::render {
 namespace {
 
 // The unit's first entry in (tnear, best). True if it is the new best.
-bool try_unit_entry(TopContext& ctx, std::uint32_t unit_index, std::uint32_t node) {
-    if (unit_ball_misses(*ctx.state, unit_index, ctx.tnear, ctx.best)) return false;
-    TraceScratch& s = *ctx.state->scratch;
+// minuend_entry: the ball chords proved that entry to be the minuend's own
+// (entry_is_minuends): the difference's box test, then the minuend leaf
+// alone, as difference_spans starts, without its subtractions.
+bool try_unit_entry(TopContext& ctx, std::uint32_t unit_index, std::uint32_t node, bool minuend_entry = false) {
+    RayState& st = *ctx.state;
+    if (unit_ball_misses(st, unit_index, ctx.tnear, ctx.best)) return false;
+    TraceScratch& s = *st.scratch;
     const std::uint32_t base = s.stack.size();
-    ctx.state->enter_unit(node);
-    const std::uint32_t n = ctx.state->spans(node, ctx.tnear, ctx.best, Need::First);
+    st.enter_unit(node);
+    std::uint32_t n = 0;
+    if (!minuend_entry) {
+        n = st.spans(node, ctx.tnear, ctx.best, Need::First);
+    } else if (slab_hit(st.impl->padded[node], st.o, st.invd, ctx.tnear - st.eps, ctx.best + st.eps)) {
+        const csg::Scene& scene = st.impl->scene;
+        n = st.spans(scene.children[scene.nodes[node].first], ctx.tnear, ctx.best, Need::All);
+    }
     bool better = false;
     for (std::uint32_t i = 0; i < n; ++i) {
         const Span& sp = *s.stack.at(base + i);
@@ -36,19 +46,16 @@ bool try_unit_entry(TopContext& ctx, std::uint32_t unit_index, std::uint32_t nod
     return better;
 }
 
-// A sphere-minus-few unit (ball_chords.hpp): dropped when its chords prove
-// it has no entry before the best so far (or the smallest upper bound),
-// else queued with its lower bound; its upper bound shrinks the float ray.
-// False when the caller must evaluate it now (no upper bound, or the queue
-// is full).
-bool queue_by_chords(TopContext& ctx, std::uint32_t item, std::uint32_t node, float& tfar) {
-    if (ctx.ncandidates == TopContext::kMaxCandidates) return false;
+// queue_by_chords past the outer chord's test: the rest of the chords, in a
+// function of its own so that the test's misses (most callbacks) do not
+// pay for this frame.
+[[gnu::noinline]] bool queue_reached(TopContext& ctx, std::uint32_t item, std::uint32_t node, double cut,
+                                     const ball_chords_detail::Centre& m, double h2, float& tfar) {
     UnitChords u;
-    const double cut = std::min(ctx.best, ctx.ub);
-    if (!unit_chords(*ctx.state, item, node, ctx.tnear, cut, u)) return true;
+    if (!unit_chords(*ctx.state, item, node, ctx.tnear, cut, m, h2, u)) return true;
     const double lower = chords_lower(u, ctx.tnear, cut);
     if (lower == kInf || lower > cut) return true;
-    const double upper = chords_upper(u, ctx.tnear, cut);
+    const double upper = chords_upper(*ctx.state, u, ctx.tnear, cut);
     // No upper bound (a subtrahend's box covers the minuend): evaluate it now,
     // so its entry shrinks the ray as before.
     if (upper == kInf) return false;
@@ -56,8 +63,23 @@ bool queue_by_chords(TopContext& ctx, std::uint32_t item, std::uint32_t node, fl
         ctx.ub = upper;
         tfar = std::min(tfar, embree_t(*ctx.state, upper));
     }
-    ctx.candidates[ctx.ncandidates++] = {lower, item};
+    ctx.candidates[ctx.ncandidates++] = {lower, item, entry_is_minuends(u)};
     return true;
+}
+
+// A sphere-minus-few unit (ball_chords.hpp): dropped when its chords prove
+// it has no entry before the best so far (or the smallest upper bound),
+// else queued with its lower bound; its upper bound shrinks the float ray.
+// False when the caller must evaluate it now (no upper bound, or the queue
+// is full).
+[[gnu::always_inline]] inline bool queue_by_chords(TopContext& ctx, std::uint32_t item, std::uint32_t node,
+                                                   float& tfar) {
+    if (ctx.ncandidates == TopContext::kMaxCandidates) return false;
+    const double cut = std::min(ctx.best, ctx.ub);
+    ball_chords_detail::Centre m;
+    double h2;
+    if (!outer_chord_reaches(*ctx.state, item, ctx.tnear, cut, m, h2)) return true;
+    return queue_reached(ctx, item, node, cut, m, h2, tfar);
 }
 
 // The queued units, nearest lower bound first, until the bound passes the
@@ -71,14 +93,14 @@ void evaluate_queued(TopContext& ctx) {
     });
     for (int i = 0; i < ctx.ncandidates; ++i) {
         if (c[i].lower > std::min(ctx.best, ctx.ub)) break;
-        try_unit_entry(ctx, c[i].item, ctx.accel->items[c[i].item]);
+        try_unit_entry(ctx, c[i].item, ctx.accel->items[c[i].item], c[i].minuend_entry);
     }
 }
 
 // One unit the traversal reached: queued by its chords or evaluated now;
 // `tfar` (the float ray's) shrinks to what it proves. True if its entry is
 // the new best.
-bool visit_unit(TopContext& ctx, std::uint32_t item, float& tfar) {
+[[gnu::always_inline]] inline bool visit_unit(TopContext& ctx, std::uint32_t item, float& tfar) {
     const std::vector<SphereMinus>& sm = ctx.accel->sphere_minus;
     const std::uint32_t node = ctx.accel->items[item];
     if (item < sm.size() && sm[item].r_in >= 0 && queue_by_chords(ctx, item, node, tfar)) return false;

@@ -319,6 +319,7 @@ struct TopContext {
     struct Candidate {
         double lower;
         std::uint32_t item;
+        bool minuend_entry;  // its entry is its minuend's (ball_chords.hpp, entry_is_minuends)
     };
     static constexpr int kMaxCandidates = 32;
     Candidate candidates[kMaxCandidates];

@@ -60,18 +60,28 @@ bool unit_blocks(TopContext& ctx, std::uint32_t item, std::uint32_t node) {
     return blocks;
 }
 
-// A sphere-minus-few unit decided by the chords of its balls
-// (ball_chords.hpp): 0 no span in the window, 1 a span longer than the
-// degenerate rule in it, -1 not proven (evaluate it).
-int blocks_by_chords(TopContext& ctx, std::uint32_t item, std::uint32_t node) {
+// (Past the outer chord's test, which blocks_by_chords makes inline.)
+[[gnu::noinline]] int blocks_if_reached(TopContext& ctx, std::uint32_t item, std::uint32_t node,
+                                        const ball_chords_detail::Centre& m, double h2) {
     UnitChords u;
-    if (!unit_chords(*ctx.state, item, node, ctx.tnear, ctx.best, u)) return 0;
+    if (!unit_chords(*ctx.state, item, node, ctx.tnear, ctx.best, m, h2, u)) return 0;
     if (chords_lower(u, ctx.tnear, ctx.best) == kInf) return 0;
+    unit_chords_upper(*ctx.state, u);
     return chords_inside(u, ctx.tnear, ctx.best) < kInf ? 1 : -1;
 }
 
+// A sphere-minus-few unit decided by the chords of its balls
+// (ball_chords.hpp): 0 no span in the window, 1 a span longer than the
+// degenerate rule in it, -1 not proven (evaluate it).
+[[gnu::always_inline]] inline int blocks_by_chords(TopContext& ctx, std::uint32_t item, std::uint32_t node) {
+    ball_chords_detail::Centre m;
+    double h2;
+    if (!outer_chord_reaches(*ctx.state, item, ctx.tnear, ctx.best, m, h2)) return 0;
+    return blocks_if_reached(ctx, item, node, m, h2);
+}
+
 // Whether unit `item` of the top BVH blocks the shadow ray.
-bool item_blocks(TopContext& ctx, std::uint32_t item) {
+[[gnu::always_inline]] inline bool item_blocks(TopContext& ctx, std::uint32_t item) {
     const std::vector<SphereMinus>& sm = ctx.accel->sphere_minus;
     const std::uint32_t node = ctx.accel->items[item];
     int by_chords = -1;

@@ -40,7 +40,27 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 struct Crowd {
     Tree tree = op(Op::Union, {});
     std::vector<glm::dmat4> ball_from_unit;  // world_from_object of spheres to aim at (radius 1)
+    // cells: maps the unit circle in z = 0 onto a rim where a subtrahend
+    // sphere cuts its minuend's (the edge of an opening)
+    std::vector<glm::dmat4> rim_from_circle;
+    std::vector<glm::dmat4> rim_minuend;  // per rim: its minuend's world_from_object (centre at the origin)
 };
+
+// The circle where the sphere of radius ri around `off` cuts the one of
+// radius r around the origin, as the map of the unit circle in z = 0 onto
+// it; false when they do not cut.
+bool rim_circle(double r, double ri, const glm::dvec3& off, glm::dmat4& f) {
+    const double dist = glm::length(off);
+    if (!(dist > 1e-9)) return false;
+    const double x = (dist * dist + r * r - ri * ri) / (2 * dist);
+    if (!(r * r - x * x > 0)) return false;
+    const double a = std::sqrt(r * r - x * x);
+    const glm::dvec3 w = off / dist;
+    const glm::dvec3 u = glm::normalize(glm::cross(w, std::abs(w.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0)));
+    const glm::dvec3 v = glm::cross(w, u);
+    f = glm::dmat4(glm::dvec4(a * u, 0), glm::dvec4(a * v, 0), glm::dvec4(w, 0), glm::dvec4(x * w, 1));
+    return true;
+}
 
 // A random placement near `at`: rotation, scale in [lo, 1.2] per axis
 // (sometimes mirrored; uniform when `similar`), and the radius r of the
@@ -82,13 +102,15 @@ Crowd crowd(RandomCsg& g, const glm::dvec3& at) {
 }
 
 // 60 overlapping cells around `at`: a sphere minus 1-3 smaller spheres,
-// offset so that some break through (a cup), sometimes a small box too.
-Crowd cells(RandomCsg& g, const glm::dvec3& at) {
+// offset so that some break through (a cup), sometimes a small box too;
+// the whole crowd scaled by `size` about `at`.
+Crowd cells_of_size(RandomCsg& g, const glm::dvec3& at, double size) {
     Crowd c;
+    const glm::dmat4 world = translate(at.x, at.y, at.z) * scale(size, size, size) * translate(-at.x, -at.y, -at.z);
     for (int k = 0; k < 60; ++k) {
         // Mostly similarities: the chords' usual case.
         double r;
-        const glm::dmat4 m = placement(g, at, 0.6, [](RandomCsg& q) { return q.pick(3) != 0; }, r);
+        const glm::dmat4 m = world * placement(g, at, 0.6, [](RandomCsg& q) { return q.pick(3) != 0; }, r);
         std::vector<Tree> kids{leaf(sphere(r, m))};
         c.ball_from_unit.push_back(m * scale(r, r, r));
         const int holes = 1 + g.pick(3);
@@ -98,6 +120,10 @@ Crowd cells(RandomCsg& g, const glm::dvec3& at) {
             const glm::dmat4 mi = m * translate(off.x, off.y, off.z);
             kids.push_back(leaf(sphere(ri, mi)));
             c.ball_from_unit.push_back(mi * scale(ri, ri, ri));
+            if (glm::dmat4 f; rim_circle(r, ri, off, f)) {
+                c.rim_from_circle.push_back(m * f);
+                c.rim_minuend.push_back(m);
+            }
         }
         if (g.pick(4) == 0) {
             const glm::dvec3 off(g.uni(-0.5, 0.5) * r, g.uni(-0.5, 0.5) * r, g.uni(-0.5, 0.5) * r);
@@ -107,6 +133,8 @@ Crowd cells(RandomCsg& g, const glm::dvec3& at) {
     }
     return c;
 }
+
+Crowd cells(RandomCsg& g, const glm::dvec3& at) { return cells_of_size(g, at, 1); }
 
 // 40 lenses around `at`: two spheres intersected (thin and fat lenses,
 // unequal radii, caps more and less than a hemisphere), under
@@ -145,13 +173,15 @@ bool is_first_entry(const csg::Scene& s, const glm::dvec3& o, const glm::dvec3& 
 
 // One ray along o + t·d (unit d) checked against point membership: its
 // first entry, a shadow-style query on (0, tfar) and one towards a light
-// beyond the crowd. Returns 1 if it hits.
+// beyond the crowd. Returns 1 if it hits. h_thin > 0: an entry into a
+// sliver thinner than h (a ray through the edge of an opening) may be
+// checked at that finer step instead.
 int check_ray(const csg::Scene& s, const render::CsgTracer& tracer, render::TraceScratch& scratch, const glm::dvec3& o,
-              const glm::dvec3& d, double tfar, double h, bool use_float) {
+              const glm::dvec3& d, double tfar, double h, bool use_float, double h_thin = 0) {
     render::TraceHit hit;
     const double t = tracer.intersect(render::TraceRay{o, d, 0, kInf}, hit, scratch) ? hit.t : kInf;
     INFO("first entry " << t);
-    CHECK(is_first_entry(s, o, d, t, 14, h));
+    CHECK((is_first_entry(s, o, d, t, 14, h) || (h_thin > 0 && is_first_entry(s, o, d, t, 14, h_thin))));
     // Shadow-style query on (0, tfar): blocked exactly when the first
     // entry comes before tfar (the ray starts outside the solid).
     if (tfar > 0 && std::abs(t - tfar) > (use_float ? 100 * h : 1e-6))
@@ -218,6 +248,49 @@ int check_lens_rims(std::uint64_t seed, const glm::dvec3& at, double h) {
         tfar = 6.0 + g.uni(-0.3, 0.3);
         return !csg_contains(s, o);
     });
+}
+
+// Rays through the rims of a crowd of cells of `size` (the edges of their
+// openings, within ±1e-4 of the cell's size), from outside in every
+// direction, every other one grazing the minuend's sphere there; d has
+// length `size`, so t counts in the crowd's units. There the
+// minuend's entry and a subtrahend's surface meet: the ray enters the cell
+// at the minuend's sphere or passes into the opening, and the chords must
+// tell which before the leaf test alone answers (ball_chords.hpp,
+// entry_is_minuends). A ray through the edge may clip a sliver of the cell
+// thinner than h: its entry is checked at h / 100 too (the degenerate rule
+// is ~1e-9 of the size, far below). Returns how many of them hit.
+int check_rims(std::uint64_t seed, const glm::dvec3& at, double size, double h) {
+    RandomCsg g(seed);
+    const Crowd c = cells_of_size(g, at, size);
+    REQUIRE(c.rim_from_circle.size() > 20);
+    const csg::Scene s = make_scene(c.tree);
+    const render::CsgTracer tracer(s, false);
+    render::TraceScratch scratch;
+    int hits = 0;
+    for (int i = 0; i < 400; ++i) {
+        const std::size_t k = std::size_t(g.pick(int(c.rim_from_circle.size())));
+        const glm::dmat4& f = c.rim_from_circle[k];
+        const double th = g.uni(0, 2 * M_PI), out = 1 + g.uni(-1e-4, 1e-4);
+        const glm::dvec4 q(out * std::cos(th), out * std::sin(th), g.uni(-1e-4, 1e-4), 1);
+        const glm::dvec3 p(f * q);
+        glm::dvec3 dir = glm::dvec3(g.uni(-1, 1), g.uni(-1, 1), g.uni(-1, 1)) + 1e-3;
+        if (i % 2 == 1) {
+            // Grazing: tangent to the minuend's sphere at the rim (tilted by
+            // up to 1e-3 into it), so its entry stretch is long and the
+            // subtrahend's surface crosses it.
+            const glm::dvec3 at_rim = glm::dvec3(glm::inverse(c.rim_minuend[k]) * glm::dvec4(p, 1));
+            const glm::dvec3 n = glm::normalize(at_rim);
+            const glm::dvec3 t = glm::normalize(glm::cross(n, dir)) - g.uni(0, 1e-3) * n;
+            dir = glm::dvec3(c.rim_minuend[k] * glm::dvec4(t, 0));
+        }
+        const glm::dvec3 d = size * glm::normalize(dir);
+        const glm::dvec3 o = p - 6.0 * d;
+        if (csg_contains(s, o)) continue;
+        INFO("seed " << seed << " ray " << i);
+        hits += check_ray(s, tracer, scratch, o, d, 6.0 + g.uni(-0.3, 0.3), h, false, h / 100);
+    }
+    return hits;
 }
 
 }  // namespace
@@ -288,4 +361,19 @@ TEST_CASE("lens balls far from the origin keep every entry too", "[render][oracl
     int rims = 0;
     for (std::uint64_t seed = 81; seed <= 82; ++seed) rims += check_lens_rims(seed, at, 1e-6);
     CHECK(rims > 400);
+}
+
+// A cell's first entry is taken from its minuend's leaf test alone when the
+// chords prove no subtrahend near it (ball_chords.hpp, entry_is_minuends):
+// rays through the edges of the openings, where that proof must fail, at
+// unit size, tiny and huge, and far from the origin (taking the minuend's
+// entry whenever the minuend's inner chord is long, subtrahends or not,
+// fails here).
+TEST_CASE("ball chords: rays through the rims of openings keep every entry and every shadow", "[render][oracle]") {
+    int hits = 0;
+    for (std::uint64_t seed = 91; seed <= 93; ++seed) hits += check_rims(seed, glm::dvec3(0.0), 1, 1e-7);
+    hits += check_rims(94, glm::dvec3(0.0), 1e-4, 1e-7);
+    hits += check_rims(95, glm::dvec3(0.0), 1e4, 1e-7);
+    hits += check_rims(96, 1e6 * glm::normalize(glm::dvec3(0.5, -1, 0.2)), 1, 1e-6);
+    CHECK(hits > 1200);
 }
