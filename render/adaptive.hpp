@@ -1,11 +1,14 @@
 // Adaptive anti-aliasing (docs/quality.md): a first pass traces one ray
 // through every pixel centre, stores its colour in the image and keeps what
-// it looks like (display codes, surface hit) for the whole region + a ring.
+// it looks like (display codes, surface hit) for a band of the region + a
+// ring (adaptive_aa.hpp).
 // A pixel is a candidate if any of its 8 neighbours hit another surface (a
 // silhouette, an edge between leaves, a cut) or differs from it by more
 // than the threshold in a display (sRGB) channel (shadow edges,
-// highlights). A candidate gets probe samples at its 4 corners; if they all
-// look like its centre it is their mean with the centre; if they fall into
+// highlights). A candidate first probes the corners next to its unlike
+// neighbours; if they all look like its centre it keeps the centre (if
+// that was all 4 corners, it is their mean with the centre); else it
+// probes all 4; if they fall into
 // two runs round the pixel, one straight edge crosses it, located on its
 // sides (edge_coverage.hpp); else it gets the uniform pattern of
 // RenderOptions::aa_samples (the pixel `--spp 16` gives), unless its
@@ -21,6 +24,8 @@
 #include <cstdint>
 #include <optional>
 
+#include <emmintrin.h>
+
 #include <glm/glm.hpp>
 
 #include "csg/srgb.hpp"
@@ -30,22 +35,48 @@
 
 namespace kerf::render {
 
+// The corners of a pixel next to the neighbours in `neighbours` (bits as
+// CentreSamples::unlike_neighbours gives them): bit 0 the corner (x, y),
+// 1 (x + 1, y), 2 (x, y + 1), 3 (x + 1, y + 1). A straight edge between
+// the pixel's centre and a neighbour's that crosses the pixel puts one of
+// the corners next to that neighbour on the neighbour's side.
+inline unsigned corners_next_to(unsigned neighbours) {
+    static constexpr unsigned kNext[8] = {1, 3, 2, 5, 10, 4, 12, 8};
+    unsigned corners = 0;
+    for (int k = 0; k < 8; ++k)
+        if (neighbours >> k & 1) corners |= kNext[k];
+    return corners;
+}
+
 class CentreSamples {
 public:
-    // `region` grown by one pixel, clamped to the image.
-    CentreSamples(const std::array<int, 4>& region, int width, int height)
+    // `region` grown by one pixel, clamped to the image; `rows` of it held
+    // at a time (a band of the region and the row either side).
+    CentreSamples(const std::array<int, 4>& region, int width, int height, int rows)
         : x0_(std::max(0, region[0] - 1)), y0_(std::max(0, region[1] - 1)),
           x1_(std::min(width, region[2] + 1)), y1_(std::min(height, region[3] + 1)),
-          srgb_(srgb_table()) {
-        looks_.resize(std::size_t(x1_ - x0_) * std::size_t(y1_ - y0_));  // uninitialised: set() fills all
+          first_row_(y0_), srgb_(srgb_table()) {
+        looks_.resize(std::size_t(x1_ - x0_) * std::size_t(std::min(rows, y1_ - y0_)));  // uninitialised: set() fills all
     }
     std::array<int, 4> area() const { return {x0_, y0_, x1_, y1_}; }
+
+    // Holds the rows from `y` on (at most `rows` of them) from now: those
+    // already set from y up to `set_to` move along, the rest are set next.
+    void hold_from(int y, int set_to) {
+        const std::size_t w = std::size_t(x1_ - x0_);
+        std::copy(looks_.begin() + std::ptrdiff_t(std::size_t(y - first_row_) * w),
+                  looks_.begin() + std::ptrdiff_t(std::size_t(set_to - first_row_) * w), looks_.begin());
+        first_row_ = y;
+    }
 
     // `surface`: 0 for a miss, else an id of the surface hit (Shader::radiance).
     // `stand_in`: c is not the sample's colour but what it is compared as
     // (the ground as the background).
-    void set(int x, int y, const glm::dvec3& c, std::uint32_t surface, bool stand_in = false) {
-        looks_[index(x, y)] = look(c, surface) | std::uint64_t(stand_in) << 24;
+    // Returns the look, c's display codes in its low 24 bits.
+    std::uint64_t set(int x, int y, const glm::dvec3& c, std::uint32_t surface, bool stand_in = false) {
+        const std::uint64_t l = look(c, surface);
+        looks_[index(x, y)] = l | std::uint64_t(stand_in) << 24;
+        return l;
     }
 
     // The centre sample's colour to 8-bit precision (linear, decoded from
@@ -63,30 +94,40 @@ public:
         return c;
     }
 
-    // Whether pixel (x, y) of the region needs more samples. `threshold`:
-    // in 8-bit display codes.
-    bool needs_more(int x, int y, int threshold) const {
+    // Which of pixel (x, y)'s 8 neighbours do not look like it (0: it
+    // keeps its centre): bit k for the k-th in reading order, (-1, -1),
+    // (0, -1), (1, -1), (-1, 0), (1, 0), (-1, 1), (0, 1), (1, 1).
+    // `threshold`: in 8-bit display codes.
+    [[gnu::always_inline]] unsigned unlike_neighbours(int x, int y, int threshold) const {
+        if (x == x0_ || x + 1 == x1_ || y == y0_ || y + 1 == y1_) return unlike_at_border(x, y, threshold);
+        // Inside: alike() of all eight neighbours at once, two to a
+        // register: per byte, how far each lies past what alike() allows
+        // (the codes: the threshold; the stand-in flag: any; the surface:
+        // nothing), all zero for a pixel that keeps its centre. Most
+        // pixels, so no branch per neighbour.
         const std::uint64_t* c = &looks_[index(x, y)];
-        const std::uint64_t l = *c;
-        if (x > x0_ && x + 1 < x1_ && y > y0_ && y + 1 < y1_) {
-            // Inside: all eight neighbours look the same (most pixels).
-            const std::size_t w = std::size_t(x1_ - x0_);
-            const std::uint64_t *up = c - w - 1, *down = c + w - 1;
-            if (((up[0] ^ l) | (up[1] ^ l) | (up[2] ^ l) | (c[-1] ^ l) | (c[1] ^ l) | (down[0] ^ l) | (down[1] ^ l) |
-                 (down[2] ^ l)) == 0)
-                return false;
-            // A gradient: each neighbour within the threshold.
-            for (const std::uint64_t d : {up[0], up[1], up[2], c[-1], c[1], down[0], down[1], down[2]})
-                if (d != l && !alike(d, l, threshold)) return true;
-            return false;
+        const std::size_t w = std::size_t(x1_ - x0_);
+        const std::uint64_t *up = c - w - 1, *down = c + w - 1;
+        const std::uint64_t t = std::uint64_t(threshold);
+        const __m128i allowed = _mm_set1_epi64x(std::int64_t(t | t << 8 | t << 16 | 0xFFull << 24));
+        const __m128i centre = _mm_set1_epi64x(std::int64_t(*c));
+        const auto past = [&](__m128i v) {
+            const __m128i apart = _mm_or_si128(_mm_subs_epu8(v, centre), _mm_subs_epu8(centre, v));
+            return _mm_subs_epu8(apart, allowed);
+        };
+        const __m128i pairs[4] = {past(_mm_loadu_si128(reinterpret_cast<const __m128i*>(up))),
+                                  past(_mm_set_epi64x(std::int64_t(c[-1]), std::int64_t(up[2]))),
+                                  past(_mm_set_epi64x(std::int64_t(down[0]), std::int64_t(c[1]))),
+                                  past(_mm_loadu_si128(reinterpret_cast<const __m128i*>(down + 1)))};
+        const __m128i zero = _mm_setzero_si128();
+        const __m128i any = _mm_or_si128(_mm_or_si128(pairs[0], pairs[1]), _mm_or_si128(pairs[2], pairs[3]));
+        if (_mm_movemask_epi8(_mm_cmpeq_epi8(any, zero)) == 0xFFFF) return 0;
+        unsigned unlike = 0;
+        for (int k = 0; k < 4; ++k) {
+            const unsigned same = unsigned(_mm_movemask_epi8(_mm_cmpeq_epi8(pairs[k], zero)));
+            unlike |= unsigned((same & 0xFF) != 0xFF) << (2 * k) | unsigned(same >> 8 != 0xFF) << (2 * k + 1);
         }
-        for (int ny = std::max(y0_, y - 1); ny <= std::min(y1_ - 1, y + 1); ++ny)
-            for (int nx = std::max(x0_, x - 1); nx <= std::min(x1_ - 1, x + 1); ++nx) {
-                const std::uint64_t d = looks_[index(nx, ny)];
-                if (d == l) continue;
-                if (!alike(d, l, threshold)) return true;
-            }
-        return false;
+        return unlike;
     }
 
     // The surface pixel (x, y)'s centre sample hit (0: none).
@@ -104,6 +145,20 @@ public:
     }
 
 private:
+    // unlike_neighbours() of a pixel on the border of the area, neighbour by neighbour.
+    [[gnu::noinline]] unsigned unlike_at_border(int x, int y, int threshold) const {
+        const std::uint64_t l = looks_[index(x, y)];
+        unsigned unlike = 0;
+        for (int k = 0, dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) {
+                if (dx == 0 && dy == 0) continue;
+                const int nx = x + dx, ny = y + dy;
+                if (nx >= x0_ && nx < x1_ && ny >= y0_ && ny < y1_ && !alike(looks_[index(nx, ny)], l, threshold))
+                    unlike |= 1u << k;
+                ++k;
+            }
+        return unlike;
+    }
     // What a sample looks like: surface << 32 | its 8-bit display codes.
     std::uint64_t look(const glm::dvec3& c, std::uint32_t surface) const {
         return std::uint64_t(surface) << 32 | std::uint32_t(srgb_byte(srgb_, float(c.x))) |
@@ -123,8 +178,11 @@ private:
         }();
         return table;
     }
-    std::size_t index(int x, int y) const { return std::size_t(y - y0_) * std::size_t(x1_ - x0_) + std::size_t(x - x0_); }
+    std::size_t index(int x, int y) const {
+        return std::size_t(y - first_row_) * std::size_t(x1_ - x0_) + std::size_t(x - x0_);
+    }
     int x0_, y0_, x1_, y1_;
+    int first_row_;  // the first row held
     const SrgbTable& srgb_;
     BigVector<std::uint64_t> looks_;
 };

@@ -24,9 +24,15 @@ public:
           steps_(std::max(1, int(std::ceil(std::log2(double(options.aa_samples)))))),
           generation_(CornerProbes::next_generation()) {}
 
-    void pixel(int x, int y, ThreadState& ts, bool traced) const;
+    // Most pixels keep their centre: that test inline, the rest not.
+    void pixel(int x, int y, ThreadState& ts, bool traced) const {
+        const unsigned unlike = centres_.unlike_neighbours(x, y, threshold_);
+        if (unlike) candidate(x, y, unlike, ts, traced);
+    }
 
 private:
+    // Pixel (x, y), whose neighbours in `unlike` (CentreSamples::unlike_neighbours) do not look like it.
+    void candidate(int x, int y, unsigned unlike, ThreadState& ts, bool traced) const;
     // What a probe looks like to the first pass: the ground as a miss.
     bool alike(const CornerProbe& a, const CornerProbe& b) const {
         return centres_.alike(a.on_ground ? sampler_.miss() : a.color, a.surface,
@@ -50,6 +56,15 @@ private:
                                        bool traced) const;
     int like(double px, double py, const CornerProbe& p, const CornerProbe& q, ThreadState& ts, bool traced,
              std::optional<glm::dvec3>& color) const;
+    // Which of p and q pixel (x, y)'s centre looks like, as like() asks of a sample.
+    int centre_like(int x, int y, const CornerProbe& p, const CornerProbe& q) const {
+        if (p.surface != q.surface) {
+            const std::uint32_t seen = centres_.surface(x, y);
+            return seen == p.surface ? 0 : seen == q.surface ? 1 : -1;
+        }
+        const bool like_p = like_centre(x, y, p), like_q = like_centre(x, y, q);
+        return like_p == like_q ? -1 : like_q;
+    }
     const SideProbe& side(int cx, int cy, bool vertical, ThreadState& ts, bool traced) const;
     std::optional<glm::dvec3> straight_edge(int x, int y, const std::array<const CornerProbe*, 4>& k, ThreadState& ts,
                                             bool traced) const;
@@ -150,7 +165,21 @@ const SideProbe& Refinement::side(int cx, int cy, bool vertical, ThreadState& ts
     s.traced = s.clean = true;
     s.sum[0] = s.sum[1] = glm::dvec3(0.0);
     double lo = 0, hi = 1;
-    for (int i = 0; i < steps_; ++i) {
+    int i = 0;
+    // The side's middle is the midpoint of the centres of the two pixels
+    // it divides. Where both look like the same one of its corners, a
+    // straight edge (one half-plane holds both) leaves the middle on
+    // their side: the first step is free.
+    const std::array<int, 4> area = centres_.area();
+    const int bx = vertical ? cx - 1 : cx, by = vertical ? cy : cy - 1;  // the pixel before the side; (cx, cy) after
+    if (!sampler_.ghosts() && bx >= area[0] && by >= area[1] && cx < area[2] && cy < area[3]) {
+        const int before = centre_like(bx, by, p, q);
+        if (before >= 0 && before == centre_like(cx, cy, p, q)) {
+            (before == 0 ? lo : hi) = 0.5;
+            i = 1;
+        }
+    }
+    for (; i < steps_; ++i) {
         const double m = (lo + hi) / 2;
         std::optional<glm::dvec3> color;
         const int seen = like(cx + (vertical ? 0 : m), cy + (vertical ? m : 0), p, q, ts, traced, color);
@@ -228,31 +257,40 @@ std::optional<glm::dvec3> Refinement::straight_edge(int x, int y, const std::arr
     return area * (sum[0] / double(count[0])) + (1 - area) * (sum[1] / double(count[1]));
 }
 
-void Refinement::pixel(int x, int y, ThreadState& ts, bool traced) const {
+void Refinement::candidate(int x, int y, unsigned unlike, ThreadState& ts, bool traced) const {
     PixelSampler::set_covered(0);
-    if (!centres_.needs_more(x, y, threshold_)) return;  // it keeps its centre
-    // Probes at the 4 corners first: a straight edge that crosses the pixel
-    // always separates its corners, so a candidate whose corners all look
-    // like its centre (next to an edge but wholly on one side, about half
-    // of them) stops there with their mean. (Candidates whose neighbours
-    // differ only by surface once probed their corners' surfaces alone and
-    // kept their centre: ~5 % fewer instructions on holes_40, but the
-    // error at 384² rose past 16 uniform samples' on the checkered cube,
-    // 0.71 -> 0.85 RMSE codes against 0.75; docs/quality.md.)
-    bool same = true;
-    glm::dvec3 sum(0.0);
+    // Probes at the corners first: a straight edge that crosses the pixel
+    // separates its centre from some neighbour's, and then puts a corner
+    // next to that neighbour on the neighbour's side (the corner farthest
+    // along the line's normal is one of those). So the corners next to the
+    // unlike neighbours come first: all like the centre, the pixel lies
+    // wholly on the centre's side of what its neighbours saw and keeps its
+    // centre. (Candidates whose neighbours differ only by surface once
+    // probed their corners' surfaces alone, unshaded, and kept their
+    // centre: the error at 384² rose past 16 uniform samples' on the
+    // checkered cube, 0.71 -> 0.85 RMSE codes against 0.75, since a
+    // pattern's edge on one surface went unseen; docs/quality.md.)
+    const unsigned near = corners_next_to(unlike);
     // A corner is shared by up to 4 candidates: traced once per tile
     // (corner_probes.hpp), the same value whichever pixel asks.
     probes().enter(region_[0] + (x - region_[0]) / kTile * kTile, region_[1] + (y - region_[1]) / kTile * kTile,
                    generation_);
     std::array<const CornerProbe*, 4> round{};  // the corners in order round the pixel
-    for (int i = 0; i < 4; ++i) {
-        const CornerProbe& p = corner(x + (i & 1), y + (i >> 1), ts, traced);
-        round[i < 2 ? i : 5 - i] = &p;
-        same = same && like_centre(x, y, p);
-        sum += p.color;
-    }
-    if (same) {
+    bool same = true;
+    const auto probe = [&](unsigned corners) {
+        for (int i = 0; i < 4; ++i) {
+            if (!(corners >> i & 1)) continue;
+            const CornerProbe& p = corner(x + (i & 1), y + (i >> 1), ts, traced);
+            round[i < 2 ? i : 5 - i] = &p;
+            same = same && like_centre(x, y, p);
+        }
+    };
+    probe(near);
+    if (same && near != 15) return;
+    probe(~near & 15);
+    if (same) {  // unlike neighbours all round (a gradient): the mean of the five
+        glm::dvec3 sum(0.0);
+        for (const CornerProbe* p : round) sum += p->color;
         sampler_.put(x, y, (centre_color(x, y, ts, traced) + sum) / 5.0, 5);
         return;
     }
@@ -286,21 +324,40 @@ void Refinement::pixel(int x, int y, ThreadState& ts, bool traced) const {
 
 bool render_adaptive(const TilePasses& tiles, const PixelSampler& sampler, const RenderOptions& options,
                      const std::array<int, 4>& region, const std::function<void(double)>& progress) {
-    // Centres first (about a quarter of the time), then the refinement.
-    CentreSamples centres(region, options.width, options.height);
+    // Band by band (adaptive_aa.hpp): the centres (about a quarter of the
+    // time), then the band's refinement, which reads the centres one row
+    // either side.
+    CentreSamples centres(region, options.width, options.height, kAaBand + 2);
     const Refinement refinement(sampler, centres, options, region);
-    bool complete = tiles.run(centres.area(), progress_part(progress, 0, 0.25), [&](int x, int y, ThreadState& ts, bool traced) {
-        std::uint32_t surface;
-        ts.on_ground = false;
-        const glm::dvec3 c = sampler.sample(x + 0.5, y + 0.5, ts, traced, &surface);
-        centres.set(x, y, ts.on_ground ? sampler.miss() : c, surface, ts.on_ground);
-        if (x >= region[0] && x < region[2] && y >= region[1] && y < region[3]) sampler.put(x, y, c, 1);
-        PixelSampler::set_covered(0);
-    });
-    // Only candidates are written again; the rest keep their centre.
-    complete &= tiles.run(region, progress_part(progress, 0.25, 1), [&](int x, int y, ThreadState& ts, bool traced) {
-        refinement.pixel(x, y, ts, traced);
-    });
+    const std::array<int, 4> area = centres.area();
+    const double rows = region[3] - region[1];
+    bool complete = true;
+    int set_to = area[1];  // the centres are set on the rows above this
+    for (int y0 = region[1]; y0 < region[3]; y0 += kAaBand) {
+        const int y1 = std::min(y0 + kAaBand, region[3]), next = std::min(y1 + 1, area[3]);
+        const double from = (y0 - region[1]) / rows, to = (y1 - region[1]) / rows;
+        centres.hold_from(std::max(area[1], y0 - 1), set_to);
+        complete &= tiles.run({area[0], set_to, area[2], next}, progress_part(progress, from, from + (to - from) / 4),
+                              [&](int x, int y, ThreadState& ts, bool traced) {
+                                  std::uint32_t surface;
+                                  ts.on_ground = false;
+                                  const glm::dvec3 c = sampler.sample(x + 0.5, y + 0.5, ts, traced, &surface);
+                                  const std::uint64_t look =
+                                      centres.set(x, y, ts.on_ground ? sampler.miss() : c, surface, ts.on_ground);
+                                  if (x < region[0] || x >= region[2] || y < region[1] || y >= region[3]) {
+                                      PixelSampler::set_covered(0);
+                                  } else if (ts.on_ground) {
+                                      sampler.put(x, y, c, 1);
+                                  } else {
+                                      // The codes the look found for c: not found again.
+                                      sampler.put_codes(x, y, c, std::uint32_t(look & 0xFFFFFF));
+                                  }
+                              });
+        set_to = next;
+        // Only candidates are written again; the rest keep their centre.
+        complete &= tiles.run({region[0], y0, region[2], y1}, progress_part(progress, from + (to - from) / 4, to),
+                              [&](int x, int y, ThreadState& ts, bool traced) { refinement.pixel(x, y, ts, traced); });
+    }
     return complete;
 }
 

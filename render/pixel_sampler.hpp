@@ -67,6 +67,14 @@ public:
         hits_ = 0;
     }
 
+    // put(x, y, c, 1), where c's 8-bit codes are known (`rgb`, red in the
+    // low byte): an 8-bit image without coverage stores them as they are.
+    void put_codes(int x, int y, const glm::dvec3& c, std::uint32_t rgb) const {
+        if (alpha() || !store_.bytes()) return put(x, y, c, 1);
+        store_.codes(x, y, rgb);
+        hits_ = 0;
+    }
+
     // Coverage: the samples of the pixel being shaded that hit a solid (a
     // sample seeing a ghost over the background counts the ghost's
     // opacity). A pixel is shaded start to end on one thread, so it is a

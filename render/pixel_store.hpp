@@ -48,6 +48,13 @@ public:
             image_.pixels[at] = float(c.x), image_.pixels[at + 1] = float(c.y), image_.pixels[at + 2] = float(c.z);
         }
     }
+    bool bytes() const { return bytes_; }
+    // An sRGB image's pixel from its codes, red in the low byte: those
+    // color() would store for the colour they encode.
+    void codes(int x, int y, std::uint32_t rgb) {
+        std::uint8_t* to = &image_.srgb8[index(x, y)];
+        to[0] = std::uint8_t(rgb), to[1] = std::uint8_t(rgb >> 8), to[2] = std::uint8_t(rgb >> 16);
+    }
     // Colour and coverage `a` (0..1): `c` is the pixel's mean over all its
     // samples, misses seeing `background`; the hits' own share is
     // c - (1 - a)·background (premultiplied), divided by a when straight.
