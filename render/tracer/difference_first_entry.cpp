@@ -19,6 +19,16 @@ bool listed(const std::uint32_t* near, int nnear, std::uint32_t node) {
     return std::find(near, near + nnear, node) != near + nnear;
 }
 
+// A leaf whose spans do not depend on the window (only the torus clips to
+// it) and that is convex: its one span, found on a window, is what any
+// wider window that still overlaps it would give.
+bool one_span_leaf(const csg::Scene& scene, std::uint32_t node) {
+    const csg::Node& n = scene.nodes[node];
+    if (n.op != csg::Op::Leaf) return false;
+    const csg::PrimKind kind = scene.leaves[n.first].kind;
+    return kind == csg::PrimKind::Sphere || kind == csg::PrimKind::Box || kind == csg::PrimKind::Cylinder;
+}
+
 }  // namespace
 
 int RayState::near_subtrahends(const Accel& accel, const glm::dvec3& x, double reach, double margin,
@@ -97,12 +107,27 @@ std::uint32_t RayState::first_entry_by_points(const Accel& subtrahends, std::uin
         return 1;
     }
     bool all = nnear < 0;
+    // A near convex leaf's span from the first window, for the later ones
+    // (they all start at c - 2·eps and only grow): the same numbers
+    // without solving its surface again.
+    Span kept[kMaxNear];
+    bool keep[kMaxNear] = {};
     for (bool first = true;;) {
         st.resize(sbase);
         if (all)
             collect(subtrahends, c - 2 * eps, end);
         else
-            for (int k = 0; k < nnear; ++k) spans(near[k], c - 2 * eps, end, Need::All);
+            for (int k = 0; k < nnear; ++k) {
+                if (keep[k]) {
+                    st.push(kept[k]);
+                    continue;
+                }
+                const std::uint32_t at = st.size();
+                if (spans(near[k], c - 2 * eps, end, Need::All) == 1 && first && one_span_leaf(impl->scene, near[k])) {
+                    kept[k] = *st.at(at);
+                    keep[k] = true;
+                }
+            }
         int r = 0;
         const std::uint32_t rbase = subtract_gathered(base + i, 1, sbase, r);
         double claimed = end;  // where the gathered spans say coverage from c ends
