@@ -175,8 +175,14 @@ FastPath RayState::any_by_points(const Accel& subtrahends, std::uint32_t base, s
     int nnear = 0;
     st.resize(sbase);
     for (;;) {
-        int r;
-        const std::uint32_t rbase = subtract_gathered(base + i, 1, sbase, r);
+        // (Nothing subtracted yet: the span itself is the one piece, as
+        // span_difference with no subtrahend spans would give it.)
+        int r = 1;
+        std::uint32_t rbase = base + i;
+        if (nnear > 0)
+            rbase = subtract_gathered(base + i, 1, sbase, r);
+        else if (!(st.at(base + i)->t1 - st.at(base + i)->t0 > eps))
+            r = 0;
         int k = 0;
         double q0 = 0, q1 = 0;
         for (; k < r; ++k) {
@@ -213,7 +219,7 @@ FastPath RayState::any_by_points(const Accel& subtrahends, std::uint32_t base, s
             st.resize(base + 1);
             return FastPath::Found;
         }
-        st.resize(rbase);  // keep the union so far, drop the pieces
+        st.resize(before > 0 ? rbase : sbase);  // keep the union so far, drop the pieces
         for (int n = before; n < nnear; ++n) spans(near[n], p0, p1, Need::All);
     }
 }
