@@ -29,7 +29,7 @@ struct Accel {
     std::vector<Ball> balls;            // top only: per item, or empty (unit_balls.hpp)
     std::vector<SphereMinus> sphere_minus;  // top only: per item, or empty (ball_chords.hpp)
     std::vector<SubBound> subs;             // their subtrahends
-    BoxGrid grid;  // a big difference's subtrahends: index into `items` (box_grid.hpp); else empty
+    BoxGrid grid;  // a big difference's subtrahends, listing node ids (box_grid.hpp); else empty
 };
 
 // Embree reports failures (out of memory above all) as null handles and

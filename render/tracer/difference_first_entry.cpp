@@ -48,7 +48,7 @@ int RayState::near_subtrahends(const Accel& accel, const glm::dvec3& x, double r
     for (std::uint32_t node : accel.always)
         if (!add(node)) return -1;
     for (int k = 0; k < ncand; ++k)
-        if (!add(accel.items[list[k]])) return -1;
+        if (!add(list[k])) return -1;
     return nnear;
 }
 
@@ -62,7 +62,7 @@ bool RayState::clear_of_others(const Accel& accel, const std::uint32_t* near, in
     const int ncand = accel.grid.near(x, margin, cand, kGridCandidates, list);
     if (ncand < 0) return false;
     for (int k = 0; k < ncand; ++k) {
-        const std::uint32_t node = accel.items[list[k]];
+        const std::uint32_t node = list[k];
         if (!listed(near, nnear, node) && !clear_of(node, x, margin)) return false;
     }
     return true;
@@ -210,7 +210,7 @@ FastPath RayState::any_by_points(const Accel& subtrahends, std::uint32_t base, s
         for (std::uint32_t node : subtrahends.always)
             if (!add(node)) return FastPath::Unknown;
         for (int c = 0; c < ncand; ++c)
-            if (!add(subtrahends.items[list[c]])) return FastPath::Unknown;
+            if (!add(list[c])) return FastPath::Unknown;
         if (nnear == before) {
             Span sliver = *st.at(rbase + std::uint32_t(k));
             sliver.t0 = probe - eps;

@@ -216,7 +216,7 @@ std::uint32_t RayState::spans(std::uint32_t node, double a, double b, Need need)
 
 void RayState::collect_candidates(const Accel& accel, const std::uint32_t* cand, int n, double a, double b) {
     for (std::uint32_t node : accel.always) spans(node, a, b, Need::All);
-    for (int k = 0; k < n; ++k) spans(accel.items[cand[k]], a, b, Need::All);
+    for (int k = 0; k < n; ++k) spans(cand[k], a, b, Need::All);
 }
 
 void RayState::collect(const Accel& accel, double a, double b) {

@@ -69,7 +69,7 @@ struct RayState {
     // crosses on [a, b] (unsorted, possibly overlapping): those its grid
     // lists there when it has one and the window is short, else through its BVH.
     void collect(const Accel& accel, double a, double b);
-    // The grid's candidates for [a, b] (items of `accel`, a superset of
+    // The grid's candidates for [a, b] (nodes of `accel`, a superset of
     // those whose padded box the ray crosses there: spans' own box test
     // widens the window by eps), or -1: no grid, or ask the BVH.
     static constexpr int kGridCandidates = 32;
