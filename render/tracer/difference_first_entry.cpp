@@ -100,7 +100,10 @@ std::uint32_t RayState::first_entry_by_points(const Accel& subtrahends, std::uin
     // gather crosses, as its box test widens [c - 2·eps, c + 2·eps] by eps,
     // with room for that test's round-off.)
     const int nnear = near_subtrahends(subtrahends, o + c * d, 4 * eps * len, 3 * eps * len, near);
-    if (nnear == 0) {  // most rays: the entry is clear of every subtrahend
+    // Most rays: the entry is clear of every subtrahend. (A span no longer
+    // than eps is no piece: the gather's subtraction drops it, so the loop
+    // below decides that one.)
+    if (nnear == 0 && rest.t1 - rest.t0 > eps) {
         if (c > b) return 2;
         st.resize(base + 1);
         *st.at(base) = rest;

@@ -251,3 +251,34 @@ TEST_CASE("difference with a subtrahend grid: first entries and shadows match po
         CHECK(open > 300);
     }
 }
+
+// A ray that cuts the minuend's edge over less than the degenerate rule
+// meets no solid there: the subtraction drops pieces no longer than eps,
+// so the point query's shortcut (c clear of every subtrahend) must too.
+// Across the top edge y = z = 1 at x = 0 (between the holes), the chord
+// is 2·a·√2 long; a far larger chord is the control.
+TEST_CASE("difference with a subtrahend grid: a minuend chord shorter than the degenerate rule is no entry",
+          "[render][difference]") {
+    const csg::Scene s = make_scene(holed(glm::dmat4(1.0)));
+    const glm::dvec3 d = glm::normalize(glm::dvec3(0, 1, -1));
+    for (const bool use_float : {false, true}) {
+        const render::CsgTracer tracer(s, use_float);
+        render::TraceScratch scratch;
+        // Far below each path's rule (double: ~2e-9 here; float: ~4e-5).
+        const double a_short = use_float ? 1e-7 : 1e-12;
+        for (const double a : {a_short, 0.01}) {
+            const glm::dvec3 at(0, 1 - a, 1 - a);  // the chord's middle
+            const glm::dvec3 o = at - 3.0 * d;
+            render::TraceHit hit;
+            const bool found = tracer.intersect(render::TraceRay{o, d, 0, kInf}, hit, scratch);
+            INFO((use_float ? "float" : "double") << " path, a = " << a);
+            if (a == a_short) {
+                CHECK_FALSE(found);
+                CHECK_FALSE(tracer.occluded(render::TraceRay{o, d, 0, 6.0}, scratch));
+            } else {
+                REQUIRE(found);
+                CHECK(hit.t == Approx(3.0 - a * std::sqrt(2.0)).margin(1e-6));
+            }
+        }
+    }
+}
