@@ -213,7 +213,14 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
             std::vector<std::uint32_t> kids(scene.children.begin() + n.first + skip,
                                             scene.children.begin() + n.first + n.count);
             impl_->node_accels.push_back(std::make_unique<Accel>());
-            impl_->build_accel(*impl_->node_accels.back(), kids, false);
+            Accel& accel = *impl_->node_accels.back();
+            impl_->build_accel(accel, kids, false);
+            if (n.op == Op::Difference && accel.bvh) {
+                std::vector<csg::Aabb> boxes;
+                for (std::uint32_t item : accel.items) boxes.push_back(impl_->padded[item]);
+                accel.grid.build(boxes);
+                for (std::uint32_t& id : accel.grid.boxes) id = accel.items[id];  // the nodes themselves: one load less per candidate
+            }
             impl_->accel_of_node[id] = std::int32_t(impl_->node_accels.size() - 1);
         }
     }

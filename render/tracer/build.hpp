@@ -14,6 +14,7 @@
 
 #include "csg/scene.hpp"
 #include "render/primitives/prism_grid.hpp"
+#include "render/tracer/box_grid.hpp"
 #include "render/tracer/tracer.hpp"
 #include "render/tracer/unit_balls.hpp"
 
@@ -28,6 +29,7 @@ struct Accel {
     std::vector<Ball> balls;            // top only: per item, or empty (unit_balls.hpp)
     std::vector<SphereMinus> sphere_minus;  // top only: per item, or empty (ball_chords.hpp)
     std::vector<SubBound> subs;             // their subtrahends
+    BoxGrid grid;  // a big difference's subtrahends, listing node ids (box_grid.hpp); else empty
 };
 
 // Embree reports failures (out of memory above all) as null handles and

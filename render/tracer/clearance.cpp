@@ -41,6 +41,11 @@ bool object_clear(const csg::Leaf& leaf, const glm::dvec3& q, double m) {
         case PrimKind::Cylinder: {  // frustum: radius c[2] at z = c[0], c[3] at z = c[1]
             const double h = c[1] - c[0], dr = c[3] - c[2];
             if (!(h > 0)) return false;
+            if (c[0] - q.z > m || q.z - c[1] > m) return true;
+            if (dr == 0) {  // a straight one (a drilled hole): squares, no root
+                const double r = c[2] + m;
+                return q.x * q.x + q.y * q.y > r * r;
+            }
             const double rho = std::sqrt(q.x * q.x + q.y * q.y);
             // Signed distance to the side line's outer half-plane, and to the slab.
             const double side = ((rho - c[2]) * h - (q.z - c[0]) * dr) / std::sqrt(h * h + dr * dr);
@@ -72,8 +77,11 @@ bool RayState::clear_of_within_box(std::uint32_t node, const glm::dvec3& x, doub
         case Op::Leaf: {
             // World distance >= object distance / |object_from_world| (the
             // Frobenius norm bounds the spectral one), precomputed per leaf.
+            // A leaf only moved skips the matrix (the same numbers).
             const csg::Leaf& leaf = impl->scene.leaves[n.first];
-            return object_clear(leaf, leaf.object_from_world.point(x), margin * impl->leaf_stretch[n.first]);
+            const glm::dvec3 q = impl->leaf_shift_only[n.first] ? x + leaf.object_from_world.offset
+                                                                : leaf.object_from_world.point(x);
+            return object_clear(leaf, q, margin * impl->leaf_stretch[n.first]);
         }
         case Op::Union:
             // A big union is left to its BVH: checking every child would cost

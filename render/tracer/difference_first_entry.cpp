@@ -1,13 +1,72 @@
-// The first entry of a difference with many subtrahends (its own BVH), found
-// without gathering every subtrahend along the minuend's chord: "which
-// subtrahends cover the point c?", growing the window only while c stays
-// covered. A ray through a slab with N holes so costs about log N, not N
-// (README.md, "Tracer design"; bench/render_models holesN).
+// The first entry (and, for shadow rays, any span) of a difference with
+// many subtrahends (its own BVH and grid), found without gathering every
+// subtrahend along the minuend's chord: "which subtrahends cover the point
+// c?", growing the window only while c stays covered. A ray through a slab
+// with N holes so costs about log N, not N (README.md, "Tracer design";
+// bench/render_models holesN). Where the grid (box_grid.hpp) names the few
+// subtrahends near the points that decide, only those are intersected; the
+// rest are proven clear of those points (clearance.cpp), so the answer is
+// the one gathering them all gives.
 #include <algorithm>
 
 #include "render/tracer/ray_state.hpp"
 
 namespace kerf::render {
+
+namespace {
+
+bool listed(const std::uint32_t* near, int nnear, std::uint32_t node) {
+    return std::find(near, near + nnear, node) != near + nnear;
+}
+
+// A leaf whose spans do not depend on the window (only the torus clips to
+// it) and that is convex: its one span, found on a window, is what any
+// wider window that still overlaps it would give.
+bool one_span_leaf(const csg::Scene& scene, std::uint32_t node) {
+    const csg::Node& n = scene.nodes[node];
+    if (n.op != csg::Op::Leaf) return false;
+    const csg::PrimKind kind = scene.leaves[n.first].kind;
+    return kind == csg::PrimKind::Sphere || kind == csg::PrimKind::Box || kind == csg::PrimKind::Cylinder;
+}
+
+}  // namespace
+
+int RayState::near_subtrahends(const Accel& accel, const glm::dvec3& x, double reach, double margin,
+                               std::uint32_t* near) const {
+    if (accel.grid.empty()) return -1;
+    std::uint32_t cand[kGridCandidates];
+    const std::uint32_t* list;
+    const int ncand = accel.grid.near(x, reach, cand, kGridCandidates, list);
+    if (ncand < 0) return -1;
+    int nnear = 0;
+    const auto add = [&](std::uint32_t node) {
+        if (clear_of(node, x, margin)) return true;
+        if (nnear == kMaxNear) return false;
+        near[nnear++] = node;
+        return true;
+    };
+    for (std::uint32_t node : accel.always)
+        if (!add(node)) return -1;
+    for (int k = 0; k < ncand; ++k)
+        if (!add(list[k])) return -1;
+    return nnear;
+}
+
+bool RayState::clear_of_others(const Accel& accel, const std::uint32_t* near, int nnear, const glm::dvec3& x,
+                               double margin) const {
+    for (std::uint32_t node : accel.always)
+        if (!listed(near, nnear, node) && !clear_of(node, x, margin)) return false;
+    if (accel.grid.empty()) return false;
+    std::uint32_t cand[kGridCandidates];
+    const std::uint32_t* list;
+    const int ncand = accel.grid.near(x, margin, cand, kGridCandidates, list);
+    if (ncand < 0) return false;
+    for (int k = 0; k < ncand; ++k) {
+        const std::uint32_t node = list[k];
+        if (!listed(near, nnear, node) && !clear_of(node, x, margin)) return false;
+    }
+    return true;
+}
 
 // Minuend span i lies at base + i (spans after base + count are scratch).
 // Returns 1 with the entry written at base, 0 if this minuend span has no
@@ -18,6 +77,16 @@ namespace kerf::render {
 // inside the current window [c, end] are trusted. The window starts as the
 // point c (most rays: "is the minuend's entry covered?"), then grows to the
 // covering spans' claimed exit, then doubles, until it decides.
+//
+// With the grid, the first window gathers only the subtrahends near c (not
+// clear of it by 3·eps: the others have no span reaching into it, so the
+// window's answer and its claimed exit are the same); none near: c is the
+// entry. A later window that answers with only those is trusted when its
+// entry is clear of every other subtrahend by 2·eps (they cannot cut the
+// piece there, nor start an earlier one: more subtrahends only shrink the
+// pieces); otherwise that window is gathered in full, as are all after it
+// (their claimed exit needs every subtrahend). The answer's far end may
+// differ from the full gather's: callers of First read only the entry.
 std::uint32_t RayState::first_entry_by_points(const Accel& subtrahends, std::uint32_t base, std::uint32_t i,
                                                double b) {
     SpanStack& st = scratch->stack;
@@ -26,15 +95,52 @@ std::uint32_t RayState::first_entry_by_points(const Accel& subtrahends, std::uin
     const double c = rest.t0;
     const double stop = std::min(b, rest.t1) + 2 * eps;  // nothing past this matters
     double end = c + 2 * eps;
-    for (;;) {
+    std::uint32_t near[kMaxNear];
+    // (Within 4·eps·len of c: every subtrahend whose box the first window's
+    // gather crosses, as its box test widens [c - 2·eps, c + 2·eps] by eps,
+    // with room for that test's round-off.)
+    const int nnear = near_subtrahends(subtrahends, o + c * d, 4 * eps * len, 3 * eps * len, near);
+    // Most rays: the entry is clear of every subtrahend. (A span no longer
+    // than eps is no piece: the gather's subtraction drops it, so the loop
+    // below decides that one.)
+    if (nnear == 0 && rest.t1 - rest.t0 > eps) {
+        if (c > b) return 2;
+        st.resize(base + 1);
+        *st.at(base) = rest;
+        return 1;
+    }
+    bool all = nnear < 0;
+    // A near convex leaf's span from the first window, for the later ones
+    // (they all start at c - 2·eps and only grow): the same numbers
+    // without solving its surface again.
+    Span kept[kMaxNear];
+    bool keep[kMaxNear] = {};
+    for (bool first = true;;) {
         st.resize(sbase);
-        collect(subtrahends, c - 2 * eps, end);
+        if (all)
+            collect(subtrahends, c - 2 * eps, end);
+        else
+            for (int k = 0; k < nnear; ++k) {
+                if (keep[k]) {
+                    st.push(kept[k]);
+                    continue;
+                }
+                const std::uint32_t at = st.size();
+                if (spans(near[k], c - 2 * eps, end, Need::All) == 1 && first && one_span_leaf(impl->scene, near[k])) {
+                    kept[k] = *st.at(at);
+                    keep[k] = true;
+                }
+            }
         int r = 0;
         const std::uint32_t rbase = subtract_gathered(base + i, 1, sbase, r);
         double claimed = end;  // where the gathered spans say coverage from c ends
         for (std::uint32_t k = sbase; k < rbase; ++k) claimed = std::max(claimed, st.at(k)->t1);
         if (r > 0 && (st.at(rbase)->t0 == c || st.at(rbase)->t0 < end - eps)) {
             const Span piece = *st.at(rbase);
+            if (!all && !clear_of_others(subtrahends, near, nnear, o + piece.t0 * d, 2 * eps * len)) {
+                all = true;  // the same window with every subtrahend
+                continue;
+            }
             st.resize(sbase);
             if (piece.t0 > b) return 2;
             *st.at(base) = piece;
@@ -45,7 +151,79 @@ std::uint32_t RayState::first_entry_by_points(const Accel& subtrahends, std::uin
             st.resize(sbase);
             return rest.t1 + 2 * eps > stop ? 2 : 0;
         }
+        if (!all && !first) {  // the next window needs every subtrahend's claimed exit
+            all = true;
+            continue;
+        }
+        first = false;
         end = std::min(stop, std::max(claimed + 2 * eps, c + 2 * (end - c)));
+    }
+}
+
+// Any (a shadow ray) for minuend span i on [a, b]: span i minus the
+// subtrahends near a probe; the first piece that overlaps the window by
+// more than 2·eps is probed at its middle, and the subtrahends not clear of
+// that point join the near ones, until a probe is clear of all others
+// (the sliver of eps round it survives them all: Found) or no piece
+// overlaps the window by more than eps (more subtrahends only shrink the
+// pieces: None). Unknown when it cannot say (too many near, a piece
+// between eps and 2·eps, no grid answer): the caller gathers them all.
+FastPath RayState::any_by_points(const Accel& subtrahends, std::uint32_t base, std::uint32_t sbase, std::uint32_t i,
+                                 double a, double b) {
+    SpanStack& st = scratch->stack;
+    const double p0 = std::max(a, st.at(base + i)->t0), p1 = std::min(b, st.at(base + i)->t1);
+    if (!(p1 - p0 > 2 * eps)) return FastPath::Unknown;
+    const double margin = 2 * eps * len;
+    std::uint32_t near[kMaxNear];
+    int nnear = 0;
+    st.resize(sbase);
+    for (;;) {
+        // (Nothing subtracted yet: the span itself is the one piece, as
+        // span_difference with no subtrahend spans would give it.)
+        int r = 1;
+        std::uint32_t rbase = base + i;
+        if (nnear > 0)
+            rbase = subtract_gathered(base + i, 1, sbase, r);
+        else if (!(st.at(base + i)->t1 - st.at(base + i)->t0 > eps))
+            r = 0;
+        int k = 0;
+        double q0 = 0, q1 = 0;
+        for (; k < r; ++k) {
+            const Span& piece = *st.at(rbase + std::uint32_t(k));
+            q0 = std::max(a, piece.t0);
+            q1 = std::min(b, piece.t1);
+            if (q1 - q0 > eps) break;
+        }
+        if (k == r) return FastPath::None;
+        if (!(q1 - q0 > 2 * eps)) return FastPath::Unknown;
+        const double probe = 0.5 * (q0 + q1);
+        const glm::dvec3 x = o + probe * d;
+        // The subtrahends not clear of the probe, not yet subtracted.
+        std::uint32_t cand[kGridCandidates];
+        const std::uint32_t* list;
+        const int ncand = subtrahends.grid.near(x, margin, cand, kGridCandidates, list);
+        if (ncand < 0) return FastPath::Unknown;
+        const int before = nnear;
+        const auto add = [&](std::uint32_t node) {
+            if (listed(near, nnear, node) || clear_of(node, x, margin)) return true;
+            if (nnear == kMaxNear) return false;
+            near[nnear++] = node;
+            return true;
+        };
+        for (std::uint32_t node : subtrahends.always)
+            if (!add(node)) return FastPath::Unknown;
+        for (int c = 0; c < ncand; ++c)
+            if (!add(list[c])) return FastPath::Unknown;
+        if (nnear == before) {
+            Span sliver = *st.at(rbase + std::uint32_t(k));
+            sliver.t0 = probe - eps;
+            sliver.t1 = probe + eps;
+            *st.at(base) = sliver;
+            st.resize(base + 1);
+            return FastPath::Found;
+        }
+        st.resize(before > 0 ? rbase : sbase);  // keep the union so far, drop the pieces
+        for (int n = before; n < nnear; ++n) spans(near[n], p0, p1, Need::All);
     }
 }
 

@@ -179,6 +179,12 @@ std::uint32_t difference_spans(RayState& es, std::uint32_t node, const Node& n, 
             if (found == 2) break;  // beyond the window: nothing to find
             continue;
         }
+        if (need == Need::Any && !few && !es.impl->node_accels[std::size_t(ai)]->grid.empty()) {
+            // Many subtrahends and a grid: only those near probes of the span.
+            const FastPath found = es.any_by_points(*es.impl->node_accels[std::size_t(ai)], base, sbase, i, a, b);
+            if (found == FastPath::Found) return 1;
+            if (found == FastPath::None) continue;
+        }
         const double wa = std::max(a, st.at(base + i)->t0), wb = std::min(b, st.at(base + i)->t1);
         st.resize(sbase);
         collect_children(es, node, n, 1, wa, wb);
@@ -223,7 +229,14 @@ std::uint32_t RayState::spans(std::uint32_t node, double a, double b, Need need)
     return 0;
 }
 
+void RayState::collect_candidates(const Accel& accel, const std::uint32_t* cand, int n, double a, double b) {
+    for (std::uint32_t node : accel.always) spans(node, a, b, Need::All);
+    for (int k = 0; k < n; ++k) spans(cand[k], a, b, Need::All);
+}
+
 void RayState::collect(const Accel& accel, double a, double b) {
+    std::uint32_t cand[kGridCandidates];
+    if (const int n = grid_candidates(accel, a, b, cand); n >= 0) return collect_candidates(accel, cand, n, a, b);
     for (std::uint32_t node : accel.always) spans(node, a, b, Need::All);
     if (!accel.bvh) {
         for (std::uint32_t node : accel.items) spans(node, a, b, Need::All);

@@ -113,8 +113,19 @@ struct RayState {
     // their count. Starts with the node's own box test.
     std::uint32_t spans(std::uint32_t node, double a, double b, Need need);
     // node_spans.cpp: pushes the spans of every node of `accel` the ray
-    // crosses on [a, b] (unsorted, possibly overlapping).
+    // crosses on [a, b] (unsorted, possibly overlapping): those its grid
+    // lists there when it has one and the window is short, else through its BVH.
     void collect(const Accel& accel, double a, double b);
+    // The grid's candidates for [a, b] (nodes of `accel`, a superset of
+    // those whose padded box the ray crosses there: spans' own box test
+    // widens the window by eps), or -1: no grid, or ask the BVH.
+    static constexpr int kGridCandidates = 32;
+    int grid_candidates(const Accel& accel, double a, double b, std::uint32_t* out) const {
+        if (accel.grid.empty()) return -1;
+        return accel.grid.candidates(o, d, invd, a - eps, b + eps, out, kGridCandidates);
+    }
+    // node_spans.cpp: collect with the grid's candidates already found.
+    void collect_candidates(const Accel& accel, const std::uint32_t* cand, int n, double a, double b);
     // True if x is provably outside the node and farther than `margin`
     // (world) from it; false if inside, near, or not known. The node's box
     // first, here, inline: most calls end there (a groove far from the
@@ -160,8 +171,21 @@ struct RayState {
     std::uint32_t leaf_minus_spans(const csg::Node& n, double a, double b, Need need);
     // mesh_spans.cpp
     std::uint32_t mesh_spans(std::uint32_t leaf_id, double a, double b);
-    // difference_first_entry.cpp
+    // difference_first_entry.cpp: a big difference's first entry, and any
+    // span (Found, None or Unknown), from the subtrahends near points of the ray.
     std::uint32_t first_entry_by_points(const Accel& subtrahends, std::uint32_t base, std::uint32_t i, double b);
+    FastPath any_by_points(const Accel& subtrahends, std::uint32_t base, std::uint32_t sbase, std::uint32_t i,
+                           double a, double b);
+    static constexpr int kMaxNear = 4;
+    // The subtrahends of `accel` within `reach` of x (per axis, by the
+    // grid) that are not clear of x by `margin` (at most kMaxNear, node
+    // ids); -1: not known.
+    int near_subtrahends(const Accel& accel, const glm::dvec3& x, double reach, double margin,
+                         std::uint32_t* near) const;
+    // Whether x is clear of every subtrahend of `accel` but near[0, nnear)
+    // (false: not, or not known).
+    bool clear_of_others(const Accel& accel, const std::uint32_t* near, int nnear, const glm::dvec3& x,
+                         double margin) const;
 
     // The spans gathered on the stack from `sbase` up are subtrahends: merges
     // them into their union (left at sbase) and subtracts it from the `nm`

@@ -191,3 +191,94 @@ TEST_CASE("difference fast path: shadow rays leaving grooves and lumps", "[rende
     CHECK(blocked > 800);
     CHECK(open > 300);
 }
+
+namespace {
+
+// A box minuend with 6 × 6 round holes through its top, a tilted one
+// across two of them and a ball breaking through: more than 8 subtrahends,
+// so the difference has its own BVH and subtrahend grid (box_grid.hpp),
+// and its first entries and shadows come from the subtrahends the grid
+// names near a point (difference_first_entry.cpp).
+Tree holed(const glm::dmat4& w) {
+    std::vector<Tree> kids{leaf(box({-1, -1, -1}, {1, 1, 1}, w))};
+    for (int i = 0; i < 6; ++i)
+        for (int j = 0; j < 6; ++j)
+            kids.push_back(leaf(make_leaf(PrimKind::Cylinder, {0, 3, 0.12, 0.12},
+                                          w * translate(-1 + (i + 0.5) / 3, -1 + (j + 0.5) / 3, -1.5))));
+    kids.push_back(leaf(make_leaf(PrimKind::Cylinder, {-1.5, 1.5, 0.08, 0.08},
+                                  w * translate(0.05, 0.1, 1) * rotate_deg(35, {1, 0.3, 0}))));
+    kids.push_back(leaf(sphere(0.2, w * translate(0.5, -0.45, 1.05))));
+    return op(Op::Difference, kids);
+}
+
+}  // namespace
+
+TEST_CASE("difference with a subtrahend grid: first entries and shadows match point membership", "[render][difference]") {
+    for (const double k : {1e-3, 1.0, 1e4}) {
+        const glm::dvec3 c(100 * k, -60 * k, 30 * k);
+        const csg::Scene s = make_scene(holed(translate(c.x, c.y, c.z) * scale(k, k, k)));
+        std::mt19937_64 rng(418);
+        int covered = 0, clear = 0;
+        check_rays(s, "holes", rng, covered, clear, k, c);
+        INFO("scale " << k << ": " << covered << " covered, " << clear << " clear");
+        CHECK(covered > 300);
+        CHECK(clear > 300);
+        // Shadow rays from inside the holes (off the solid), every way: some
+        // leave through the opening, some enter the plate or another hole.
+        const render::CsgTracer tracer(s, false);
+        render::TraceScratch scratch;
+        std::uniform_real_distribution<double> u(-1, 1);
+        int blocked = 0, open = 0;
+        for (int i = 0; i < 3000; ++i) {
+            const int hi = int(3 * (u(rng) + 1)), hj = int(3 * (u(rng) + 1));
+            const glm::dvec3 local(-1 + (hi + 0.5) / 3 + 0.11 * u(rng), -1 + (hj + 0.5) / 3 + 0.11 * u(rng),
+                                   0.5 + 0.5 * u(rng));
+            const glm::dvec3 o = c + k * local;
+            const glm::dvec3 d = glm::normalize(glm::dvec3(u(rng), u(rng), u(rng)) + 1e-3);
+            if (csg_contains(s, o)) continue;
+            render::TraceHit hit;
+            const double t = tracer.intersect(render::TraceRay{o, d, 0, kInf}, hit, scratch) ? hit.t : kInf;
+            INFO("scale " << k << " shadow ray " << i << " first entry " << t);
+            CHECK(is_first_entry(s, o, d, t, k));
+            const double tfar = k * (0.02 + 0.8 * (u(rng) + 1));
+            if (std::abs(t - tfar) < 1e-6 * k) continue;
+            const bool shadow = tracer.occluded(render::TraceRay{o, d, 0, tfar}, scratch);
+            CHECK(shadow == (t < tfar));
+            (shadow ? blocked : open)++;
+        }
+        INFO(blocked << " blocked, " << open << " open");
+        CHECK(blocked > 500);
+        CHECK(open > 300);
+    }
+}
+
+// A ray that cuts the minuend's edge over less than the degenerate rule
+// meets no solid there: the subtraction drops pieces no longer than eps,
+// so the point query's shortcut (c clear of every subtrahend) must too.
+// Across the top edge y = z = 1 at x = 0 (between the holes), the chord
+// is 2·a·√2 long; a far larger chord is the control.
+TEST_CASE("difference with a subtrahend grid: a minuend chord shorter than the degenerate rule is no entry",
+          "[render][difference]") {
+    const csg::Scene s = make_scene(holed(glm::dmat4(1.0)));
+    const glm::dvec3 d = glm::normalize(glm::dvec3(0, 1, -1));
+    for (const bool use_float : {false, true}) {
+        const render::CsgTracer tracer(s, use_float);
+        render::TraceScratch scratch;
+        // Far below each path's rule (double: ~2e-9 here; float: ~4e-5).
+        const double a_short = use_float ? 1e-7 : 1e-12;
+        for (const double a : {a_short, 0.01}) {
+            const glm::dvec3 at(0, 1 - a, 1 - a);  // the chord's middle
+            const glm::dvec3 o = at - 3.0 * d;
+            render::TraceHit hit;
+            const bool found = tracer.intersect(render::TraceRay{o, d, 0, kInf}, hit, scratch);
+            INFO((use_float ? "float" : "double") << " path, a = " << a);
+            if (a == a_short) {
+                CHECK_FALSE(found);
+                CHECK_FALSE(tracer.occluded(render::TraceRay{o, d, 0, 6.0}, scratch));
+            } else {
+                REQUIRE(found);
+                CHECK(hit.t == Approx(3.0 - a * std::sqrt(2.0)).margin(1e-6));
+            }
+        }
+    }
+}
