@@ -73,6 +73,8 @@ public:
     glm::dvec3 transmitted(const TraceRay& ray, ThreadState& ts, const Departure* from = nullptr) const;
 
 private:
+    // `c` seen through the fog over `dist` (radiance()).
+    [[gnu::noinline]] glm::dvec3 fogged(const glm::dvec3& c, double dist) const;
     // The colour of the surface `hit` seen along `ray`, before fog.
     glm::dvec3 shade(const TraceRay& ray, const TraceHit& hit, int depth, ThreadState& ts) const;
     const csg::Material& material_of(std::uint32_t leaf) const;
