@@ -49,9 +49,7 @@ Shader::Shader(const csg::Scene& scene, const CsgTracer& tracer, int max_depth, 
 
 const csg::Material& Shader::material_of(std::uint32_t leaf) const { return leaf_material(scene_, leaf); }
 
-glm::dvec3 Shader::transmitted(const TraceRay& ray, ThreadState& ts, const Departure* from) const {
-    ++ts.rays.shadow;
-    if (!any_transparent_) return glm::dvec3(tracer_.occluded(ray, ts.scratch, from) ? 0.0 : 1.0);
+glm::dvec3 Shader::through_glass(const TraceRay& ray, ThreadState& ts) const {
     tracer_.inside_spans(ray, ts.scratch, ts.spans);
     glm::dvec3 k(1.0);
     const double len = glm::length(ray.d);
