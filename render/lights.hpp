@@ -44,7 +44,10 @@ struct LightView {
     glm::dvec3 l;
     double dist, k;
 };
-inline bool view_light(const csg::Light& light, const glm::dvec3& origin, LightView& v) {
+// Inlined: called once per light per shading point, and out of line its
+// LightView went through memory and was read back wider than written (a
+// store-forwarding stall, ~1 % of a render's cycles).
+[[gnu::always_inline]] inline bool view_light(const csg::Light& light, const glm::dvec3& origin, LightView& v) {
     if (light.directional) {
         v = {-light.direction, std::numeric_limits<double>::infinity(), light.intensity};
     } else {

@@ -37,11 +37,15 @@ inline glm::dvec3 pattern_color(const csg::Material& m, const csg::Affine& mater
     return m.color + v * (m.color2 - m.color);
 }
 
-// The material of `leaf` (a scene without materials: the default light grey).
+// The material of a leaf without one (a scene without materials): the
+// default light grey. At namespace scope, not a function's static, so a
+// shading point does not test an initialisation guard.
+inline const csg::Material kFallbackMaterial{};
+
+// The material of `leaf`.
 inline const csg::Material& leaf_material(const csg::Scene& scene, std::uint32_t leaf) {
-    static const csg::Material fallback;
     const std::uint32_t i = scene.leaves[leaf].material;
-    return i < scene.materials.size() ? scene.materials[i] : fallback;
+    return i < scene.materials.size() ? scene.materials[i] : kFallbackMaterial;
 }
 
 // The colour a surface of material m (the material of leaf `mat_leaf`)

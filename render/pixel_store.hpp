@@ -18,13 +18,18 @@ namespace kerf::render {
 class PixelStore {
 public:
     PixelStore(Image& image, const std::array<int, 4>& region, int channels, ImageContent content, bool bytes)
-        : image_(image), x0_(region[0]), y0_(region[1]), bytes_(bytes), srgb_(srgb_table()) {
+        : x0_(region[0]), y0_(region[1]), bytes_(bytes), srgb_(srgb_table()) {
         image.width = region[2] - region[0];
         image.height = region[3] - region[1];
         image.channels = channels;
         image.content = content;
         const std::size_t values = std::size_t(image.width) * image.height * channels;
         if (bytes) image.srgb8.resize(values); else image.pixels.resize(values);
+        // Never resized again: the pixel loop keeps the addresses and sizes in
+        // members of its own, not re-read through the Image after every byte
+        // store (a byte store may alias anything, so the compiler reloads).
+        srgb8_ = image.srgb8.data(), pixels_ = image.pixels.data();
+        width_ = std::size_t(image.width), channels_ = std::size_t(channels);
     }
 
     // The colour most pixels get (the background): its codes are found
@@ -36,16 +41,18 @@ public:
 
     [[gnu::always_inline]] void color(int x, int y, const glm::dvec3& c) {
         const std::size_t at = index(x, y);
-        if (bytes_ && c == common_) {
-            // Three stores, not std::copy: that became a memmove call per pixel.
-            std::uint8_t* to = &image_.srgb8[at];
-            to[0] = common_bytes_[0], to[1] = common_bytes_[1], to[2] = common_bytes_[2];
-        } else if (bytes_) {
-            image_.srgb8[at] = srgb_byte(srgb_, float(c.x));
-            image_.srgb8[at + 1] = srgb_byte(srgb_, float(c.y));
-            image_.srgb8[at + 2] = srgb_byte(srgb_, float(c.z));
+        if (bytes_) {
+            // The codes first, then three stores (not std::copy: that became
+            // a memmove call per pixel).
+            std::uint8_t* to = srgb8_ + at;
+            const bool common = c == common_;
+            const std::uint8_t r = common ? common_bytes_[0] : srgb_byte(srgb_, float(c.x));
+            const std::uint8_t g = common ? common_bytes_[1] : srgb_byte(srgb_, float(c.y));
+            const std::uint8_t b = common ? common_bytes_[2] : srgb_byte(srgb_, float(c.z));
+            to[0] = r, to[1] = g, to[2] = b;
         } else {
-            image_.pixels[at] = float(c.x), image_.pixels[at + 1] = float(c.y), image_.pixels[at + 2] = float(c.z);
+            float* to = pixels_ + at;
+            to[0] = float(c.x), to[1] = float(c.y), to[2] = float(c.z);
         }
     }
     bool bytes() const { return bytes_; }
@@ -64,19 +71,21 @@ public:
         else if (!premultiplied) c /= a;
         color(x, y, glm::max(c, glm::dvec3(0.0)));
         const std::size_t at = index(x, y) + 3;
-        if (bytes_) image_.srgb8[at] = std::uint8_t(std::lround(std::clamp(a, 0.0, 1.0) * 255));
-        else image_.pixels[at] = float(a);
+        if (bytes_) srgb8_[at] = std::uint8_t(std::lround(std::clamp(a, 0.0, 1.0) * 255));
+        else pixels_[at] = float(a);
     }
     // The float values of an AOV pixel.
-    float* values(int x, int y) { return &image_.pixels[index(x, y)]; }
+    float* values(int x, int y) { return pixels_ + index(x, y); }
 
 private:
     std::size_t index(int x, int y) const {
-        return (std::size_t(y - y0_) * image_.width + std::size_t(x - x0_)) * image_.channels;
+        return (std::size_t(y - y0_) * width_ + std::size_t(x - x0_)) * channels_;
     }
-    Image& image_;
     int x0_, y0_;
     bool bytes_;
+    std::uint8_t* srgb8_;
+    float* pixels_;
+    std::size_t width_, channels_;
     const SrgbTable& srgb_;
     glm::dvec3 common_{-1.0};  // before expect(): -1 gives code 0, as its bytes say
     std::uint8_t common_bytes_[3] = {0, 0, 0};

@@ -17,9 +17,10 @@ constexpr double kAmbient = 0.1;  // POV-Ray's default ambient: shadows are not 
 
 // x^s for the Blinn–Phong highlight: whole exponents (the usual 8..256) by
 // repeated squaring, a few multiplies instead of libm's pow (~2 % of a
-// simple render); others by pow.
+// simple render); others by pow. In [0, 1024] the truncating conversion is
+// the floor, two instructions where std::floor is a libm call (no SSE4.1).
 double highlight(double x, double s) {
-    if (s >= 0 && s <= 1024 && s == std::floor(s)) {
+    if (s >= 0 && s <= 1024 && s == double(unsigned(s))) {
         double r = 1, base = x;
         for (unsigned e = unsigned(s); e != 0; e >>= 1) {
             if (e & 1) r *= base;
@@ -48,9 +49,7 @@ Shader::Shader(const csg::Scene& scene, const CsgTracer& tracer, int max_depth, 
 
 const csg::Material& Shader::material_of(std::uint32_t leaf) const { return leaf_material(scene_, leaf); }
 
-glm::dvec3 Shader::transmitted(const TraceRay& ray, ThreadState& ts, const Departure* from) const {
-    ++ts.rays.shadow;
-    if (!any_transparent_) return glm::dvec3(tracer_.occluded(ray, ts.scratch, from) ? 0.0 : 1.0);
+glm::dvec3 Shader::through_glass(const TraceRay& ray, ThreadState& ts) const {
     tracer_.inside_spans(ray, ts.scratch, ts.spans);
     glm::dvec3 k(1.0);
     const double len = glm::length(ray.d);
@@ -164,10 +163,15 @@ glm::dvec3 Shader::radiance(const TraceRay& ray, int depth, ThreadState& ts, std
         return miss_;  // fog: as if at infinite distance, all fog
     }
     if (surface) *surface = surface_id(hit);
-    const glm::dvec3 c = shade(ray, hit, depth, ts);
-    if (!scene_.fog.on()) return c;
-    // ray.d need not be unit (primary rays): the distance is t·|d|.
-    const double keep = std::exp(-hit.t * glm::length(ray.d) / scene_.fog.distance);
+    if (!scene_.fog.on()) return shade(ray, hit, depth, ts);  // a tail call: no frame kept round it
+    return fogged(shade(ray, hit, depth, ts), hit.t * glm::length(ray.d));
+}
+
+// `c` seen through fog over distance `dist` (ray.d need not be unit, as for
+// primary rays: the distance is t·|d|). Out of line: rare, and kept out of
+// radiance()'s frame.
+glm::dvec3 Shader::fogged(const glm::dvec3& c, double dist) const {
+    const double keep = std::exp(-dist / scene_.fog.distance);
     return keep * c + (1 - keep) * scene_.fog.color;
 }
 
@@ -270,7 +274,9 @@ glm::dvec3 Shader::shade(const TraceRay& ray, const TraceHit& hit, int depth, Th
 
     glm::dvec3 diffuse(0.0), highlights(0.0);
     // The surface's response to light of colour `k` arriving from unit direction l.
-    auto respond = [&](const glm::dvec3& l, double ndl, const glm::dvec3& k) {
+    // Inlined: a call per light per shading point spilled the lambda's
+    // captures and returned through memory.
+    auto respond = [&](const glm::dvec3& l, double ndl, const glm::dvec3& k) __attribute__((always_inline)) {
         const glm::dvec3 h = glm::normalize(l + view);
         diffuse += k * (m.diffuse * ndl) * albedo;
         highlights += k * (m.specular * highlight(std::max(0.0, glm::dot(n, h)), m.shininess));

@@ -70,9 +70,19 @@ public:
     // behind an opaque solid, transparency·exp(−absorption·length) per
     // transparent span crossed (straight: no refraction, no caustics).
     // `from`: the surface the ray leaves (Departure), or null.
-    glm::dvec3 transmitted(const TraceRay& ray, ThreadState& ts, const Departure* from = nullptr) const;
+    // Inline: an opaque scene's shadow ray is one occlusion query, without
+    // a call and a frame of its own round it.
+    glm::dvec3 transmitted(const TraceRay& ray, ThreadState& ts, const Departure* from = nullptr) const {
+        ++ts.rays.shadow;
+        if (!any_transparent_) return glm::dvec3(tracer_.occluded(ray, ts.scratch, from) ? 0.0 : 1.0);
+        return through_glass(ray, ts);
+    }
 
 private:
+    // transmitted() in a scene with transparent solids.
+    glm::dvec3 through_glass(const TraceRay& ray, ThreadState& ts) const;
+    // `c` seen through the fog over `dist` (radiance()).
+    [[gnu::noinline]] glm::dvec3 fogged(const glm::dvec3& c, double dist) const;
     // The colour of the surface `hit` seen along `ray`, before fog.
     glm::dvec3 shade(const TraceRay& ray, const TraceHit& hit, int depth, ThreadState& ts) const;
     const csg::Material& material_of(std::uint32_t leaf) const;
