@@ -59,7 +59,7 @@ public:
     // An sRGB image's pixel from its codes, red in the low byte: those
     // color() would store for the colour they encode.
     void codes(int x, int y, std::uint32_t rgb) {
-        std::uint8_t* to = &image_.srgb8[index(x, y)];
+        std::uint8_t* to = srgb8_ + index(x, y);
         to[0] = std::uint8_t(rgb), to[1] = std::uint8_t(rgb >> 8), to[2] = std::uint8_t(rgb >> 16);
     }
     // Colour and coverage `a` (0..1): `c` is the pixel's mean over all its
