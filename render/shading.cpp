@@ -145,7 +145,9 @@ std::uint32_t Shader::surface(const TraceRay& ray, ThreadState& ts) const {
     TraceHit hit;
     const bool solid = tracer_.intersect(ray, hit, ts.scratch);
     double t;
-    return ground_first(ray, solid, hit, t) || !solid ? 0 : surface_id(hit);
+    if (ground_first(ray, solid, hit, t) || !solid) return 0;
+    ts.hit = hit;
+    return surface_id(hit);
 }
 
 glm::dvec3 Shader::radiance(const TraceRay& ray, int depth, ThreadState& ts, std::uint32_t* surface) const {
@@ -163,7 +165,7 @@ glm::dvec3 Shader::radiance(const TraceRay& ray, int depth, ThreadState& ts, std
         if (surface) *surface = 0;
         return miss_;  // fog: as if at infinite distance, all fog
     }
-    if (surface) *surface = surface_id(hit);
+    if (surface) *surface = surface_id(hit), ts.hit = hit;
     const glm::dvec3 c = shade(ray, hit, depth, ts);
     if (!scene_.fog.on()) return c;
     // ray.d need not be unit (primary rays): the distance is t·|d|.

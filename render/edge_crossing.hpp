@@ -1,0 +1,43 @@
+// Adaptive anti-aliasing's edge prediction (adaptive_aa.cpp, docs/quality.md):
+// where an edge between two surfaces crosses a pixel's side, from the
+// planes tangent to them at the side's two ends. A crease (a hole's rim:
+// the plate's face meets the hole's wall) lies on both surfaces, so along
+// the side the ray meets the one plane before the other up to the edge and
+// after it beyond: the crossing is where the two planes' depths are equal.
+// Over one pixel both surfaces are nearly their tangent planes, so that
+// predicts the edge; the caller confirms it with a sample on either side
+// and falls back to bisection where one disagrees (an occluding edge, where
+// the depth jumps, or a surface that bends within the pixel).
+#pragma once
+#include <optional>
+
+#include <glm/glm.hpp>
+
+namespace kerf::render {
+
+struct TangentPlane {
+    glm::dvec3 point, normal;
+};
+
+// The side runs from the ray (o0, d0) at 0 to (o1, d1) at 1, as a camera's
+// rays run between two neighbouring image points; `p` is the plane seen at
+// 0, `q` at 1. g(o, d) = (n_p·(x_p − o))(n_q·d) − (n_q·(x_q − o))(n_p·d) is
+// (t_p − t_q)(n_p·d)(n_q·d), t the ray's depth at each plane: it is 0
+// where the depths are equal, and linear along the side for a pinhole
+// (fixed o, d linear) and an orthographic camera (o linear, fixed d), so
+// its root is exact there for two planes. Nothing where it has no root
+// strictly inside the side.
+inline std::optional<double> predicted_crossing(const glm::dvec3& o0, const glm::dvec3& d0, const glm::dvec3& o1,
+                                                const glm::dvec3& d1, const TangentPlane& p, const TangentPlane& q) {
+    const auto g = [&](const glm::dvec3& o, const glm::dvec3& d) {
+        return glm::dot(p.normal, p.point - o) * glm::dot(q.normal, d) -
+               glm::dot(q.normal, q.point - o) * glm::dot(p.normal, d);
+    };
+    const double g0 = g(o0, d0), g1 = g(o1, d1);
+    if (!(g0 * g1 < 0)) return std::nullopt;  // no sign change (or a NaN): no crossing between the ends
+    const double s = g0 / (g0 - g1);
+    if (!(s > 0 && s < 1)) return std::nullopt;
+    return s;
+}
+
+}  // namespace kerf::render
