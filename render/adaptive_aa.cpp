@@ -3,6 +3,7 @@
 #include <cmath>
 #include <optional>
 
+#include "csg/membership.hpp"
 #include "render/adaptive.hpp"
 #include "render/corner_probes.hpp"
 #include "render/edge_coverage.hpp"
@@ -169,8 +170,18 @@ std::optional<double> Refinement::predicted(int cx, int cy, bool vertical, const
     glm::dvec3 o0, d0, o1, d1;
     if (!sampler_.ray(cx, cy, o0, d0) || !sampler_.ray(cx + !vertical, cy + vertical, o1, d1)) return std::nullopt;
     const glm::dvec3 at_p = o0 + p.hit.t * d0, at_q = o1 + q.hit.t * d1;
-    return predicted_crossing(o0, d0, o1, d1, {at_p, sampler_.normal(p.hit, at_p)},
-                              {at_q, sampler_.normal(q.hit, at_q)});
+    const TangentPlane p_plane{at_p, sampler_.normal(p.hit, at_p)}, q_plane{at_q, sampler_.normal(q.hit, at_q)};
+    // Where one corner's face meets the other corner's leaf: exact for
+    // planar faces, at a crease or an occluding edge alike.
+    const auto meets = [&](const TangentPlane& face, const TraceHit& other) {
+        const csg::Leaf& leaf = sampler_.scene().leaves[other.surface.leaf];
+        return crossing_on_plane(o0, d0, o1, d1, face, [&](const glm::dvec3& w) {
+            return csg::surface_distance(leaf, leaf.object_from_world.point(w));
+        });
+    };
+    if (const std::optional<double> e = meets(p_plane, q.hit)) return e;
+    if (const std::optional<double> e = meets(q_plane, p.hit)) return e;
+    return predicted_crossing(o0, d0, o1, d1, p_plane, q_plane);
 }
 
 // Where the look changes along the side from corner (cx, cy) to the next

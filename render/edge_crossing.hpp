@@ -9,6 +9,7 @@
 // and falls back to bisection where one disagrees (an occluding edge, where
 // the depth jumps, or a surface that bends within the pixel).
 #pragma once
+#include <cmath>
 #include <optional>
 
 #include <glm/glm.hpp>
@@ -36,6 +37,37 @@ inline std::optional<double> predicted_crossing(const glm::dvec3& o0, const glm:
     const double g0 = g(o0, d0), g1 = g(o1, d1);
     if (!(g0 * g1 < 0)) return std::nullopt;  // no sign change (or a NaN): no crossing between the ends
     const double s = g0 / (g0 - g1);
+    if (!(s > 0 && s < 1)) return std::nullopt;
+    return s;
+}
+
+// Where the point plane `p` puts on the side's rays crosses a surface
+// given by its signed distance (`distance(world point)`, negative inside,
+// continuous): the edge where that surface cuts p's face (a hole's rim,
+// near or far: the plate's face and the hole's cylinder), whether the
+// corner across the edge sees that surface at the edge (a crease) or
+// further away (an occluding edge). Regula falsi (Illinois), no rays, to
+// 1/10,000 of the side; nothing where the distance keeps its sign (or is
+// not finite: a mesh) between the ends.
+template <class Distance>
+std::optional<double> crossing_on_plane(const glm::dvec3& o0, const glm::dvec3& d0, const glm::dvec3& o1,
+                                        const glm::dvec3& d1, const TangentPlane& p, Distance&& distance) {
+    const auto f = [&](double s) {
+        const glm::dvec3 o = glm::mix(o0, o1, s), d = glm::mix(d0, d1, s);
+        return distance(o + glm::dot(p.normal, p.point - o) / glm::dot(p.normal, d) * d);
+    };
+    double a = 0, b = 1, fa = f(0), fb = f(1);
+    if (!std::isfinite(fa) || !std::isfinite(fb) || !(fa * fb < 0)) return std::nullopt;
+    double s = b;
+    for (int i = 0; i < 40 && std::abs(b - a) > 1e-4; ++i) {
+        s = (a * fb - b * fa) / (fb - fa);
+        const double fs = f(s);
+        if (!std::isfinite(fs)) return std::nullopt;
+        if (fs == 0) break;
+        if (fs * fb < 0) a = b, fa = fb;
+        else fa /= 2;  // the end kept twice: halve its weight (Illinois), else it converges from one side only
+        b = s, fb = fs;
+    }
     if (!(s > 0 && s < 1)) return std::nullopt;
     return s;
 }

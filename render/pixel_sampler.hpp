@@ -45,6 +45,7 @@ public:
     // The camera ray through (px, py), as sample() traces it; false
     // outside a fisheye's circle.
     bool ray(double px, double py, glm::dvec3& o, glm::dvec3& d) const { return camera_.ray_unnormalised(px, py, o, d); }
+    const csg::Scene& scene() const { return shader_.scene(); }
     // The solid's unit normal at `hit` (ThreadState::hit), point p.
     glm::dvec3 normal(const TraceHit& hit, const glm::dvec3& p) const { return shader_.normal(hit, p); }
     // Only the surface a sample through (px, py) would see (Shader::surface).

@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <limits>
 
 #include "render/edge_crossing.hpp"
 
@@ -83,4 +84,34 @@ TEST_CASE("edge prediction: nothing where the planes do not cross between the en
     const double f = glm::radians(40.0);
     CHECK_FALSE(predicted_crossing(o.o0, o.d0, o.o1, o.d1, {{0, 0, 0}, {0, 0, 1}},
                                    {{2, 0, 0}, {std::sin(f), 0, std::cos(f)}}));
+}
+
+TEST_CASE("edge prediction: a hole's near and far rim where the plate's face meets the cylinder, exact", "[render][aa]") {
+    // As above, the plate z = 0 minus the cylinder |(x, y)| < R, rays
+    // falling towards -x. Across the far rim (x < 0) the second corner
+    // sees the wall just below the rim (a crease); across the near rim
+    // (x > 0) it sees the far wall deep down the hole (an occluding edge,
+    // where the two planes meet nowhere near). Either way the edge is where
+    // the plate's face leaves the plate for the cylinder.
+    const glm::dvec3 d = glm::normalize(glm::dvec3(-0.5, 0, -1));
+    for (const double R : {4.0, 10.0, 40.0})
+        for (const double side : {-1.0, 1.0}) {
+            const glm::dvec3 A{side * (R + 0.4), 0.3, 0}, B{side * (R - 0.6), -0.2, 0};  // plate, hole
+            const glm::dvec2 a(A), e = glm::dvec2(B) - a;
+            const double qa = glm::dot(e, e), qb = 2 * glm::dot(a, e), qc = glm::dot(a, a) - R * R;
+            const double exact = (-qb - std::sqrt(qb * qb - 4 * qa * qc)) / (2 * qa);
+            const TangentPlane plate{A, {0, 0, 1}};
+            const auto cylinder = [&](const glm::dvec3& p) { return std::hypot(p.x, p.y) - R; };
+            const auto s = kerf::render::crossing_on_plane(A - 5.0 * d, d, B - 5.0 * d, d, plate, cylinder);
+            REQUIRE(s);
+            INFO("R " << R << (side < 0 ? ", far rim" : ", near rim") << ": predicted " << *s << ", exact " << exact);
+            CHECK(*s == Approx(exact).margin(1e-4));
+        }
+    // No sign change (the side stays on the plate), or a mesh's infinite distance: nothing.
+    const TangentPlane plate{{0, 0, 0}, {0, 0, 1}};
+    const glm::dvec3 down{0, 0, -1};
+    const auto far_hole = [](const glm::dvec3& p) { return 100 - std::hypot(p.x - 200, p.y); };
+    CHECK_FALSE(kerf::render::crossing_on_plane({0, 0, 1}, down, {1, 0, 1}, down, plate, far_hole));
+    const auto mesh = [](const glm::dvec3&) { return std::numeric_limits<double>::infinity(); };
+    CHECK_FALSE(kerf::render::crossing_on_plane({0, 0, 1}, down, {1, 0, 1}, down, plate, mesh));
 }
