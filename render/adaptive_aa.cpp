@@ -3,9 +3,11 @@
 #include <cmath>
 #include <optional>
 
+#include "csg/membership.hpp"
 #include "render/adaptive.hpp"
 #include "render/corner_probes.hpp"
 #include "render/edge_coverage.hpp"
+#include "render/edge_crossing.hpp"
 
 namespace kerf::render {
 
@@ -46,8 +48,10 @@ private:
     CornerProbe probe_at(double px, double py, ThreadState& ts, bool traced) const {
         CornerProbe p;
         ts.on_ground = false;
+        ts.hit.t = -1;
         p.color = sampler_.sample(px, py, ts, traced, &p.surface);
         p.on_ground = ts.on_ground;
+        p.hit = ts.hit;
         return p;
     }
     CornerProbe& corner(int cx, int cy, ThreadState& ts, bool traced) const;
@@ -66,6 +70,7 @@ private:
         return like_p == like_q ? -1 : like_q;
     }
     const SideProbe& side(int cx, int cy, bool vertical, ThreadState& ts, bool traced) const;
+    std::optional<double> predicted(int cx, int cy, bool vertical, const CornerProbe& p, const CornerProbe& q) const;
     std::optional<glm::dvec3> straight_edge(int x, int y, const std::array<const CornerProbe*, 4>& k, ThreadState& ts,
                                             bool traced) const;
 
@@ -155,8 +160,34 @@ int Refinement::like(double px, double py, const CornerProbe& p, const CornerPro
     return like_q;
 }
 
+// Where an edge between the surfaces corners p (at (cx, cy)) and q (the
+// next one right, or down) see crosses the side between them, predicted
+// from their tangent planes (edge_crossing.hpp); nothing where either saw
+// no solid.
+std::optional<double> Refinement::predicted(int cx, int cy, bool vertical, const CornerProbe& p,
+                                            const CornerProbe& q) const {
+    if (p.hit.t < 0 || q.hit.t < 0) return std::nullopt;
+    glm::dvec3 o0, d0, o1, d1;
+    if (!sampler_.ray(cx, cy, o0, d0) || !sampler_.ray(cx + !vertical, cy + vertical, o1, d1)) return std::nullopt;
+    const glm::dvec3 at_p = o0 + p.hit.t * d0, at_q = o1 + q.hit.t * d1;
+    const TangentPlane p_plane{at_p, sampler_.normal(p.hit, at_p)}, q_plane{at_q, sampler_.normal(q.hit, at_q)};
+    // Where one corner's face meets the other corner's leaf: exact for
+    // planar faces, at a crease or an occluding edge alike.
+    const auto meets = [&](const TangentPlane& face, const TraceHit& other) {
+        const csg::Leaf& leaf = sampler_.scene().leaves[other.surface.leaf];
+        return crossing_on_plane(o0, d0, o1, d1, face, [&](const glm::dvec3& w) {
+            return csg::surface_distance(leaf, leaf.object_from_world.point(w));
+        });
+    };
+    if (const std::optional<double> e = meets(p_plane, q.hit)) return e;
+    if (const std::optional<double> e = meets(q_plane, p.hit)) return e;
+    return predicted_crossing(o0, d0, o1, d1, p_plane, q_plane);
+}
+
 // Where the look changes along the side from corner (cx, cy) to the next
-// one right (or down): bisection.
+// one right (or down), to 1/2^steps of the side: between two surfaces
+// predicted and confirmed by a sample either side of the prediction, else
+// (or where one disagrees) bisection.
 const SideProbe& Refinement::side(int cx, int cy, bool vertical, ThreadState& ts, bool traced) const {
     SideProbe& s = probes().side(cx, cy, vertical);
     if (s.traced) return s;
@@ -165,7 +196,6 @@ const SideProbe& Refinement::side(int cx, int cy, bool vertical, ThreadState& ts
     s.traced = s.clean = true;
     s.sum[0] = s.sum[1] = glm::dvec3(0.0);
     double lo = 0, hi = 1;
-    int i = 0;
     // The side's middle is the midpoint of the centres of the two pixels
     // it divides. Where both look like the same one of its corners, a
     // straight edge (one half-plane holds both) leaves the middle on
@@ -174,22 +204,25 @@ const SideProbe& Refinement::side(int cx, int cy, bool vertical, ThreadState& ts
     const int bx = vertical ? cx - 1 : cx, by = vertical ? cy : cy - 1;  // the pixel before the side; (cx, cy) after
     if (!sampler_.ghosts() && bx >= area[0] && by >= area[1] && cx < area[2] && cy < area[3]) {
         const int before = centre_like(bx, by, p, q);
-        if (before >= 0 && before == centre_like(cx, cy, p, q)) {
-            (before == 0 ? lo : hi) = 0.5;
-            i = 1;
-        }
+        if (before >= 0 && before == centre_like(cx, cy, p, q)) (before == 0 ? lo : hi) = 0.5;
     }
-    for (; i < steps_; ++i) {
-        const double m = (lo + hi) / 2;
+    const auto step = [&](double m) {
         std::optional<glm::dvec3> color;
         const int seen = like(cx + (vertical ? 0 : m), cy + (vertical ? m : 0), p, q, ts, traced, color);
-        if (seen < 0) {
-            s.clean = false;
-            break;
-        }
+        if (seen < 0) return s.clean = false;
         (seen == 0 ? lo : hi) = m;
         if (color) s.sum[seen] += *color, ++s.count[seen];
-    }
+        return true;
+    };
+    const double precision = std::ldexp(1.0, -steps_);
+    // Between two surfaces (only the surface decides, unshaded) the
+    // prediction's two samples bracket the edge to the precision.
+    if (p.surface != q.surface && !sampler_.ghosts())
+        if (const std::optional<double> e = predicted(cx, cy, vertical, p, q); e && *e > lo && *e < hi)
+            for (const double m : {*e - precision / 2, *e + precision / 2})
+                if (m > lo && m < hi && !step(m)) break;
+    // Bisection: halving a bracket of 1 or 1/2 lands on the precision exactly.
+    while (s.clean && hi - lo > precision) step((lo + hi) / 2);
     s.at = (lo + hi) / 2;
     return s;
 }

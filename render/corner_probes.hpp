@@ -14,6 +14,7 @@
 #include <glm/glm.hpp>
 
 #include "render/tiles.hpp"
+#include "render/tracer/tracer.hpp"
 
 namespace kerf::render {
 
@@ -23,10 +24,12 @@ struct CornerProbe {
     bool on_ground = false;  // ThreadState::on_ground after the sample
     bool traced = false;     // `color`, `surface` and `on_ground` hold the sample's
     double cover = 0;        // what the sample added to the pixel's coverage (--alpha)
+    TraceHit hit{-1, {}};    // the solid surface it hit (ThreadState::hit; t < 0: none)
 };
 
 // Where the look changes along a side, from its first corner (left or
-// top) to its second, found by bisection (adaptive_aa.cpp).
+// top) to its second, found by bisection or predicted from the two
+// surfaces' planes and confirmed (adaptive_aa.cpp).
 struct SideProbe {
     bool traced = false;
     bool clean = false;  // every sample looked like exactly one of the side's two corners

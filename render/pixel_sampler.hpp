@@ -42,6 +42,12 @@ public:
         }
         return trace(o, d, ts, surface);
     }
+    // The camera ray through (px, py), as sample() traces it; false
+    // outside a fisheye's circle.
+    bool ray(double px, double py, glm::dvec3& o, glm::dvec3& d) const { return camera_.ray_unnormalised(px, py, o, d); }
+    const csg::Scene& scene() const { return shader_.scene(); }
+    // The solid's unit normal at `hit` (ThreadState::hit), point p.
+    glm::dvec3 normal(const TraceHit& hit, const glm::dvec3& p) const { return shader_.normal(hit, p); }
     // Only the surface a sample through (px, py) would see (Shader::surface).
     std::uint32_t surface(double px, double py, ThreadState& ts, bool traced) const;
     // Depth of field: one sample through (px, py) from lens point `lens`.

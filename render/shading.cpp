@@ -144,7 +144,9 @@ std::uint32_t Shader::surface(const TraceRay& ray, ThreadState& ts) const {
     TraceHit hit;
     const bool solid = tracer_.intersect(ray, hit, ts.scratch);
     double t;
-    return ground_first(ray, solid, hit, t) || !solid ? 0 : surface_id(hit);
+    if (ground_first(ray, solid, hit, t) || !solid) return 0;
+    ts.hit = hit;
+    return surface_id(hit);
 }
 
 glm::dvec3 Shader::radiance(const TraceRay& ray, int depth, ThreadState& ts, std::uint32_t* surface) const {
@@ -162,7 +164,7 @@ glm::dvec3 Shader::radiance(const TraceRay& ray, int depth, ThreadState& ts, std
         if (surface) *surface = 0;
         return miss_;  // fog: as if at infinite distance, all fog
     }
-    if (surface) *surface = surface_id(hit);
+    if (surface) *surface = surface_id(hit), ts.hit = hit;
     if (!scene_.fog.on()) return shade(ray, hit, depth, ts);  // a tail call: no frame kept round it
     return fogged(shade(ray, hit, depth, ts), hit.t * glm::length(ray.d));
 }

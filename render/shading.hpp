@@ -35,6 +35,10 @@ struct ThreadState {
     // shadow is soft (only the studio look has one): adaptive AA compares
     // it as the shadowless ground, refining silhouettes, not shadow grain.
     bool on_ground = false;
+    // The solid surface the last radiance() or surface() asked for a
+    // surface id hit (t < 0: none): adaptive AA predicts where an edge
+    // between two surfaces crosses a pixel's side from their planes.
+    TraceHit hit{-1, {}};
 };
 
 class Shader {
@@ -59,6 +63,9 @@ public:
     std::uint32_t surface(const TraceRay& ray, ThreadState& ts) const;
     // What a ray that hits nothing sees: the background, or the fog's colour.
     const glm::dvec3& miss() const { return miss_; }
+    const csg::Scene& scene() const { return scene_; }
+    // The solid's world unit normal at `hit` (ThreadState::hit), point p.
+    glm::dvec3 normal(const TraceHit& hit, const glm::dvec3& p) const { return tracer_.normal(hit, p); }
 
     // Linear RGB arriving at `p` along a ray that travels in unit direction
     // `d` inside the solid of material `m` from p on: absorbed on its way to
