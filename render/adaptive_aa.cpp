@@ -383,6 +383,9 @@ bool render_adaptive(const TilePasses& tiles, const PixelSampler& sampler, const
     const std::array<int, 4> area = centres.area();
     // The look of the miss colour, the most common sample's, found once.
     const std::uint64_t miss_look = centres.look(sampler.miss(), 0);
+    // Whether the area has a ring outside the region (a crop): else no
+    // pixel of the first pass needs the test for it.
+    const bool ring = area != region;
     const double rows = region[3] - region[1];
     bool complete = true;
     int set_to = area[1];  // the centres are set on the rows above this
@@ -401,7 +404,7 @@ bool render_adaptive(const TilePasses& tiles, const PixelSampler& sampler, const
                                       seen == sampler.miss() ? miss_look | std::uint64_t(surface) << 32
                                                              : centres.look(seen, surface),
                                       ts.on_ground);
-                                  if (x < region[0] || x >= region[2] || y < region[1] || y >= region[3]) {
+                                  if (ring && (x < region[0] || x >= region[2] || y < region[1] || y >= region[3])) {
                                       PixelSampler::set_covered(0);
                                   } else if (ts.on_ground) {
                                       sampler.put(x, y, c, 1);
