@@ -397,6 +397,10 @@ bool render_adaptive(const TilePasses& tiles, const PixelSampler& sampler, const
                               [&](int x, int y, ThreadState& ts, bool traced) {
                                   std::uint32_t surface;
                                   ts.on_ground = false;
+                                  // --alpha's count starts at 0 here, not at what the thread's last
+                                  // candidate left (one that keeps its centre stores nothing, and
+                                  // which thread ran it varies: the coverage did, run to run).
+                                  PixelSampler::set_covered(0);
                                   const glm::dvec3 c = sampler.sample(x + 0.5, y + 0.5, ts, traced, &surface);
                                   const glm::dvec3& seen = ts.on_ground ? sampler.miss() : c;
                                   const std::uint64_t look = centres.set_look(
