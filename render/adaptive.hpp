@@ -74,7 +74,10 @@ public:
     // (the ground as the background).
     // Returns the look, c's display codes in its low 24 bits.
     std::uint64_t set(int x, int y, const glm::dvec3& c, std::uint32_t surface, bool stand_in = false) {
-        const std::uint64_t l = look(c, surface);
+        return set_look(x, y, look(c, surface), stand_in);
+    }
+    // set() with c's look known (look()).
+    std::uint64_t set_look(int x, int y, std::uint64_t l, bool stand_in) {
         looks_[index(x, y)] = l | std::uint64_t(stand_in) << 24;
         return l;
     }
@@ -130,6 +133,25 @@ public:
         return unlike;
     }
 
+    // The end (exclusive) of the run of pixels from x on row y, inside the
+    // area's border and before `limit`, whose 3 × 3 neighbourhoods all hold
+    // exactly pixel (x, y)'s look, so that unlike_neighbours() is 0 for
+    // them; x when there is none. Background and flat faces are such runs:
+    // one scan of 3 looks a column instead of the 8-neighbour test a pixel.
+    int uniform_run(int x, int y, int limit) const {
+        if (x == x0_ || y == y0_ || y + 1 == y1_) return x;
+        const std::uint64_t* c = &looks_[index(x, y)];
+        const std::size_t w = std::size_t(x1_ - x0_);
+        const std::uint64_t *up = c - w, *down = c + w;
+        const std::uint64_t l = *c;
+        // Columns x - 1 up to x + k - 1 (at most the area's last, and
+        // `limit`) hold the look on all three rows.
+        const int last = std::min(x1_, limit + 1) - x;
+        int k = -1;
+        while (k < last && c[k] == l && up[k] == l && down[k] == l) ++k;
+        return std::max(x, x + k - 1);
+    }
+
     // The surface pixel (x, y)'s centre sample hit (0: none).
     std::uint32_t surface(int x, int y) const { return std::uint32_t(looks_[index(x, y)] >> 32); }
 
@@ -142,6 +164,12 @@ public:
     bool alike(const glm::dvec3& a, std::uint32_t a_surface, const glm::dvec3& b, std::uint32_t b_surface,
                int threshold) const {
         return alike(look(a, a_surface), look(b, b_surface), threshold);
+    }
+
+    // What a sample looks like: surface << 32 | its 8-bit display codes.
+    std::uint64_t look(const glm::dvec3& c, std::uint32_t surface) const {
+        return std::uint64_t(surface) << 32 | std::uint32_t(srgb_byte(srgb_, float(c.x))) |
+               std::uint32_t(srgb_byte(srgb_, float(c.y))) << 8 | std::uint32_t(srgb_byte(srgb_, float(c.z))) << 16;
     }
 
 private:
@@ -158,11 +186,6 @@ private:
                 ++k;
             }
         return unlike;
-    }
-    // What a sample looks like: surface << 32 | its 8-bit display codes.
-    std::uint64_t look(const glm::dvec3& c, std::uint32_t surface) const {
-        return std::uint64_t(surface) << 32 | std::uint32_t(srgb_byte(srgb_, float(c.x))) |
-               std::uint32_t(srgb_byte(srgb_, float(c.y))) << 8 | std::uint32_t(srgb_byte(srgb_, float(c.z))) << 16;
     }
     static bool alike(std::uint64_t a, std::uint64_t b, int threshold) {
         if (a >> 32 != b >> 32) return false;  // another surface

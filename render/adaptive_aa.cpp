@@ -26,15 +26,33 @@ public:
           steps_(std::max(1, int(std::ceil(std::log2(double(options.aa_samples)))))),
           generation_(CornerProbes::next_generation()) {}
 
-    // Most pixels keep their centre: that test inline, the rest not.
-    void pixel(int x, int y, ThreadState& ts, bool traced) const {
+    // Most pixels keep their centre: that test inline, the rest not. A
+    // run of pixels whose neighbourhoods all hold one look
+    // (CentreSamples::uniform_run) is found once, up to the end of the
+    // tile, and its pixels skip the test.
+    // Inline in the pass's loop, the candidate out of it: a call per pixel
+    // that saves the registers candidate() uses cost 20 instructions.
+    [[gnu::always_inline]] void pixel(int x, int y, ThreadState& ts, bool traced) const {
+        static thread_local Run run;
+        if (x < run.to && x >= run.from && y == run.y && run.generation == generation_) return;
+        const int tile_end = region_[0] + ((x - region_[0]) / kTile + 1) * kTile;
+        const int to = centres_.uniform_run(x, y, std::min(tile_end, region_[2]));
+        if (to > x) {
+            run = Run{x, to, y, generation_};
+            return;
+        }
         const unsigned unlike = centres_.unlike_neighbours(x, y, threshold_);
         if (unlike) candidate(x, y, unlike, ts, traced);
     }
 
 private:
+    // Pixels [from, to) of row y of the render with `generation` need no test.
+    struct Run {
+        int from = 0, to = 0, y = 0;
+        std::uint64_t generation = 0;
+    };
     // Pixel (x, y), whose neighbours in `unlike` (CentreSamples::unlike_neighbours) do not look like it.
-    void candidate(int x, int y, unsigned unlike, ThreadState& ts, bool traced) const;
+    [[gnu::noinline]] void candidate(int x, int y, unsigned unlike, ThreadState& ts, bool traced) const;
     // What a probe looks like to the first pass: the ground as a miss.
     bool alike(const CornerProbe& a, const CornerProbe& b) const {
         return centres_.alike(a.on_ground ? sampler_.miss() : a.color, a.surface,
@@ -363,6 +381,11 @@ bool render_adaptive(const TilePasses& tiles, const PixelSampler& sampler, const
     CentreSamples centres(region, options.width, options.height, kAaBand + 2);
     const Refinement refinement(sampler, centres, options, region);
     const std::array<int, 4> area = centres.area();
+    // The look of the miss colour, the most common sample's, found once.
+    const std::uint64_t miss_look = centres.look(sampler.miss(), 0);
+    // Whether the area has a ring outside the region (a crop): else no
+    // pixel of the first pass needs the test for it.
+    const bool ring = area != region;
     const double rows = region[3] - region[1];
     bool complete = true;
     int set_to = area[1];  // the centres are set on the rows above this
@@ -374,10 +397,18 @@ bool render_adaptive(const TilePasses& tiles, const PixelSampler& sampler, const
                               [&](int x, int y, ThreadState& ts, bool traced) {
                                   std::uint32_t surface;
                                   ts.on_ground = false;
+                                  // --alpha's count starts at 0 here, not at what the thread's last
+                                  // candidate left (one that keeps its centre stores nothing, and
+                                  // which thread ran it varies: the coverage did, run to run).
+                                  PixelSampler::set_covered(0);
                                   const glm::dvec3 c = sampler.sample(x + 0.5, y + 0.5, ts, traced, &surface);
-                                  const std::uint64_t look =
-                                      centres.set(x, y, ts.on_ground ? sampler.miss() : c, surface, ts.on_ground);
-                                  if (x < region[0] || x >= region[2] || y < region[1] || y >= region[3]) {
+                                  const glm::dvec3& seen = ts.on_ground ? sampler.miss() : c;
+                                  const std::uint64_t look = centres.set_look(
+                                      x, y,
+                                      seen == sampler.miss() ? miss_look | std::uint64_t(surface) << 32
+                                                             : centres.look(seen, surface),
+                                      ts.on_ground);
+                                  if (ring && (x < region[0] || x >= region[2] || y < region[1] || y >= region[3])) {
                                       PixelSampler::set_covered(0);
                                   } else if (ts.on_ground) {
                                       sampler.put(x, y, c, 1);
