@@ -9,6 +9,7 @@
 
 #include "render/adaptive.hpp"
 #include "render/adaptive_aa.hpp"
+#include "render/pixel_sampler.hpp"
 #include "render/render.hpp"
 #include "tests/render/scene_builder.hpp"
 
@@ -513,6 +514,31 @@ TEST_CASE("adaptive AA's unlike neighbours inside the region (all 8 at once) as 
         }
     CHECK(unlike_seen > 50);
     CHECK(alike_seen > 50);
+}
+
+TEST_CASE("adaptive AA's --alpha coverage starts at nothing for each pixel whatever its thread did before",
+          "[render][aa][alpha]") {
+    // A thread's coverage count (PixelSampler::covered) outlives a pixel: a
+    // candidate that keeps its centre stores nothing and leaves its
+    // corners' count, a render leaves its last pixel's. It once leaked into
+    // the next band's first pixel (a background pixel with alpha 1 on
+    // whichever thread ran it: --alpha differed run to run on 2 threads).
+    // Here a count left on this thread (1 thread: the arena runs here)
+    // must not reach the first pixel, which lies off the solid.
+    const Edge e(200);
+    REQUIRE(e.coverage(0, 0) == 0);
+    render::RenderOptions o = options(e.size, true, 1);
+    o.alpha = render::Alpha::Straight;
+    o.threads = 1;
+    render::PixelSampler::set_covered(0);
+    const render::Image clean = render::render(e.scene, o);
+    render::PixelSampler::set_covered(5);
+    const render::Image dirty = render::render(e.scene, o);
+    render::PixelSampler::set_covered(0);
+    REQUIRE(clean.channels == 4);
+    CHECK(clean.pixels[3] == 0.0f);
+    CHECK(dirty.pixels[3] == 0.0f);
+    CHECK(same_bytes(clean, dirty));
 }
 
 TEST_CASE("adaptive AA refuses a cap below 2 and a threshold outside 0..1", "[render][aa]") {
