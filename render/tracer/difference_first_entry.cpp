@@ -29,43 +29,41 @@ bool one_span_leaf(const csg::Scene& scene, std::uint32_t node) {
     return kind == csg::PrimKind::Sphere || kind == csg::PrimKind::Box || kind == csg::PrimKind::Cylinder;
 }
 
+// f(node) for every subtrahend the grid names within `reach` of x, those it
+// holds outside the grid (`always`) first; false when there is no grid
+// answer (no grid, too many) or f says stop.
+template <class F>
+bool each_near(const Accel& accel, const glm::dvec3& x, double reach, F&& f) {
+    if (accel.grid.empty()) return false;
+    std::uint32_t cand[RayState::kGridCandidates];
+    const std::uint32_t* list;
+    const int ncand = accel.grid.near(x, reach, cand, RayState::kGridCandidates, list);
+    if (ncand < 0) return false;
+    for (std::uint32_t node : accel.always)
+        if (!f(node)) return false;
+    for (int k = 0; k < ncand; ++k)
+        if (!f(list[k])) return false;
+    return true;
+}
+
 }  // namespace
 
 int RayState::near_subtrahends(const Accel& accel, const glm::dvec3& x, double reach, double margin,
                                std::uint32_t* near) const {
-    if (accel.grid.empty()) return -1;
-    std::uint32_t cand[kGridCandidates];
-    const std::uint32_t* list;
-    const int ncand = accel.grid.near(x, reach, cand, kGridCandidates, list);
-    if (ncand < 0) return -1;
     int nnear = 0;
-    const auto add = [&](std::uint32_t node) {
+    const bool all = each_near(accel, x, reach, [&](std::uint32_t node) {
         if (clear_of(node, x, margin)) return true;
         if (nnear == kMaxNear) return false;
         near[nnear++] = node;
         return true;
-    };
-    for (std::uint32_t node : accel.always)
-        if (!add(node)) return -1;
-    for (int k = 0; k < ncand; ++k)
-        if (!add(list[k])) return -1;
-    return nnear;
+    });
+    return all ? nnear : -1;
 }
 
 bool RayState::clear_of_others(const Accel& accel, const std::uint32_t* near, int nnear, const glm::dvec3& x,
                                double margin) const {
-    for (std::uint32_t node : accel.always)
-        if (!listed(near, nnear, node) && !clear_of(node, x, margin)) return false;
-    if (accel.grid.empty()) return false;
-    std::uint32_t cand[kGridCandidates];
-    const std::uint32_t* list;
-    const int ncand = accel.grid.near(x, margin, cand, kGridCandidates, list);
-    if (ncand < 0) return false;
-    for (int k = 0; k < ncand; ++k) {
-        const std::uint32_t node = list[k];
-        if (!listed(near, nnear, node) && !clear_of(node, x, margin)) return false;
-    }
-    return true;
+    return each_near(accel, x, margin,
+                     [&](std::uint32_t node) { return listed(near, nnear, node) || clear_of(node, x, margin); });
 }
 
 // Minuend span i lies at base + i (spans after base + count are scratch).
@@ -199,21 +197,14 @@ FastPath RayState::any_by_points(const Accel& subtrahends, std::uint32_t base, s
         const double probe = 0.5 * (q0 + q1);
         const glm::dvec3 x = o + probe * d;
         // The subtrahends not clear of the probe, not yet subtracted.
-        std::uint32_t cand[kGridCandidates];
-        const std::uint32_t* list;
-        const int ncand = subtrahends.grid.near(x, margin, cand, kGridCandidates, list);
-        if (ncand < 0) return FastPath::Unknown;
         const int before = nnear;
-        const auto add = [&](std::uint32_t node) {
+        const bool all = each_near(subtrahends, x, margin, [&](std::uint32_t node) {
             if (listed(near, nnear, node) || clear_of(node, x, margin)) return true;
             if (nnear == kMaxNear) return false;
             near[nnear++] = node;
             return true;
-        };
-        for (std::uint32_t node : subtrahends.always)
-            if (!add(node)) return FastPath::Unknown;
-        for (int c = 0; c < ncand; ++c)
-            if (!add(list[c])) return FastPath::Unknown;
+        });
+        if (!all) return FastPath::Unknown;
         if (nnear == before) {
             Span sliver = *st.at(rbase + std::uint32_t(k));
             sliver.t0 = probe - eps;
