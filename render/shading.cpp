@@ -277,14 +277,16 @@ glm::dvec3 Shader::shade(const TraceRay& ray, const TraceHit& hit, int depth, Th
     const glm::dvec3 albedo = surface_albedo(scene_, m, hit.surface.mat_leaf, hit.surface.cut, p);
     const double off = tracer_.surface_offset(hit, p);
     const glm::dvec3 origin = p + off * n;
-    const glm::dvec3 view = -glm::normalize(ray.d);
+    // |d|·l − d is the half vector between l and the view, |d|·(l + view),
+    // without the view's three divisions (the highlight needs no length).
+    const double dlen = glm::length(ray.d);
 
     glm::dvec3 diffuse(0.0), highlights(0.0);
     // The surface's response to light of colour `k` arriving from unit direction l.
     // Inlined: a call per light per shading point spilled the lambda's
     // captures and returned through memory.
     auto respond = [&](const glm::dvec3& l, double ndl, const glm::dvec3& k) __attribute__((always_inline)) {
-        const glm::dvec3 h = l + view;  // the half vector, not normalised
+        const glm::dvec3 h = dlen * l - ray.d;  // the half vector, not normalised
         const double nh = glm::dot(n, h);
         diffuse += k * (m.diffuse * ndl) * albedo;
         highlights += k * (m.specular * highlight(nh > 0 ? nh * nh / glm::dot(h, h) : 0.0, m.shininess));
@@ -299,16 +301,19 @@ glm::dvec3 Shader::shade(const TraceRay& ray, const TraceHit& hit, int depth, Th
         open = ambient_visibility(tracer_, origin, n, ao.distance, SamplePattern(ao.samples), shading_rng(origin, 0x414F),
                                   ts.scratch, ts.rays.shadow);
     const glm::dvec3 local = kAmbient * open * albedo + diffuse + highlights;
-    const bool can_branch = depth < max_depth_;
+    const double t = m.transparency;
+    // An opaque surface that mirrors nothing (most), or the depth is spent
+    // (shaded as opaque; POV-Ray: black): the bytes the sums below give
+    // for t = 0 and reflect = 0, without them.
+    if ((t == 0 && m.reflect == 0) || depth >= max_depth_) return local + m.emission;
+    const glm::dvec3 view = -glm::normalize(ray.d);
     // Glass (transparency t): the share t meets a smooth dielectric —
     // Fresnel's reflectance f of it mirrored, the rest refracted inside —
     // and keeps the light sources' highlights; the share 1 − t is the
     // opaque surface, itself mirrored by `reflect`.
-    const double t = m.transparency;
     double f = 0, cos_t = 0;
     const double cos_i = glm::dot(view, n);
     if (t > 0) f = fresnel_dielectric(cos_i, 1 / m.ior, cos_t);
-    if (!can_branch) return local + m.emission;  // the depth is spent: shade it as opaque (POV-Ray: black)
     const double mirror_weight = (1 - t) * m.reflect + t * (f > 1e-9 ? f : 0);
     glm::dvec3 c = (1 - t) * (1 - m.reflect) * local + t * highlights + m.emission;
     if (mirror_weight > 0) c += mirror_weight * mirror(origin, mirror_direction(-view, n), n, m.roughness, depth, ts);
