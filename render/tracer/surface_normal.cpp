@@ -10,15 +10,19 @@ namespace kerf::render {
 
 glm::dvec3 CsgTracer::normal(const TraceHit& hit, const glm::dvec3& world_point) const {
     const csg::Leaf& leaf = impl_->scene.leaves[hit.surface.leaf];
+    // A leaf only moved (most are) skips both matrices, as its spans do
+    // (analytic_spans.hpp): 1·x + 0·y + 0·z is x, so the numbers are the
+    // same (up to the sign of a zero component, which no output sees).
+    const bool shift = impl_->leaf_shift_only[hit.surface.leaf];
+    const glm::dvec3 q = shift ? world_point + leaf.object_from_world.offset : leaf.object_from_world.point(world_point);
     const glm::dvec3 n_obj =
         leaf.kind == csg::PrimKind::Mesh    ? triangle_normal(impl_->scene.meshes[leaf.mesh], hit.surface.prim)
         : leaf.kind == csg::PrimKind::Prism ? csg::normal_prism(impl_->scene.polygons[leaf.polygon], leaf.p, hit.surface.part,
-                                                                hit.surface.prim, leaf.object_from_world.point(world_point))
+                                                                hit.surface.prim, q)
         : leaf.kind == csg::PrimKind::Lathe ? csg::normal_lathe(impl_->scene.polygons[leaf.polygon], hit.surface.part,
-                                                                hit.surface.prim, leaf.object_from_world.point(world_point))
-                                            : csg::object_normal(leaf, leaf.object_from_world.point(world_point),
-                                                                 hit.surface.part);
-    glm::dvec3 n = leaf.normal_to_world(n_obj);
+                                                                hit.surface.prim, q)
+                                            : csg::object_normal(leaf, q, hit.surface.part);
+    glm::dvec3 n = shift ? n_obj : leaf.normal_to_world(n_obj);
     const double len = glm::length(n);
     n = len > 0 ? n / len : glm::dvec3(0, 0, 1);
     return hit.surface.flip ? -n : n;
