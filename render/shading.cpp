@@ -23,7 +23,7 @@ constexpr double kAmbient = 0.1;  // POV-Ray's default ambient: shadows are not 
 // takes one square root); others by pow. In [0, 1024] the truncating
 // conversion is the floor, two instructions where std::floor is a libm
 // call (no SSE4.1).
-double highlight(double x2, double s) {
+[[gnu::always_inline]] inline double highlight(double x2, double s) {
     if (s >= 0 && s <= 1024 && s == double(unsigned(s))) {
         unsigned e = unsigned(s);
         double r = e & 1 ? std::sqrt(x2) : 1, base = x2;
@@ -197,23 +197,29 @@ void Shader::light_rays(const glm::dvec3& origin, const glm::dvec3& n, const Dep
             ray(light, l, ndl, light.color * k, light.shadows ? transmitted(TraceRay{origin, l, 0, dist}, ts, from) : glm::dvec3(1.0));
             continue;
         }
-        // A sphere: the mean response over stratified directions into the
-        // cone it fills, each with its own shadow ray (soft shadows).
-        const ConeBasis cone(l, dist, light.radius);
-        const SamplePattern& pattern = light.probe && ts.refining ? refining_ : patterns_[li];
-        std::uint64_t rng = shading_rng(origin, li);
-        const glm::dvec3 share = light.color * (k / double(pattern.count()));
-        if (light.probe && light.shadows && !ts.refining) {
-            probed_rays(light, cone, pattern, rng, origin, n, share, from, ts, ray);
-            continue;
-        }
-        for (int i = 0; i < pattern.count(); ++i) {
-            double reach;
-            const glm::dvec3 dir = cone.direction(pattern.offset(i, rng), reach);
-            const double ndl = glm::dot(n, dir);
-            if (ndl <= 0) continue;
-            ray(light, dir, ndl, share, light.shadows ? transmitted(TraceRay{origin, dir, 0, reach}, ts, from) : glm::dvec3(1.0));
-        }
+        sphere_rays(li, view, origin, n, from, ts, ray);
+    }
+}
+
+// A sphere: the mean response over stratified directions into the cone it
+// fills, each with its own shadow ray (soft shadows). Out of line: the
+// plain point light's path in shade() keeps its registers.
+template <class Ray>
+void Shader::sphere_rays(std::size_t li, const LightView& view, const glm::dvec3& origin, const glm::dvec3& n,
+                         const Departure* from, ThreadState& ts, Ray& ray) const {
+    const csg::Light& light = lights_[li];
+    const ConeBasis cone(view.l, view.dist, light.radius);
+    const SamplePattern& pattern = light.probe && ts.refining ? refining_ : patterns_[li];
+    std::uint64_t rng = shading_rng(origin, li);
+    const glm::dvec3 share = light.color * (view.k / double(pattern.count()));
+    if (light.probe && light.shadows && !ts.refining)
+        return probed_rays(light, cone, pattern, rng, origin, n, share, from, ts, ray);
+    for (int i = 0; i < pattern.count(); ++i) {
+        double reach;
+        const glm::dvec3 dir = cone.direction(pattern.offset(i, rng), reach);
+        const double ndl = glm::dot(n, dir);
+        if (ndl <= 0) continue;
+        ray(light, dir, ndl, share, light.shadows ? transmitted(TraceRay{origin, dir, 0, reach}, ts, from) : glm::dvec3(1.0));
     }
 }
 
@@ -293,7 +299,7 @@ glm::dvec3 Shader::shade(const TraceRay& ray, const TraceHit& hit, int depth, Th
     };
     // Shadow rays leave the surface outwards only where n was not turned.
     const Departure from = facing ? tracer_.departure(hit, n) : Departure{};
-    light_rays(origin, n, &from, ts, [&](const csg::Light&, const glm::dvec3& l, double ndl, const glm::dvec3& k, const glm::dvec3& through) {
+    light_rays(origin, n, &from, ts, [&](const csg::Light&, const glm::dvec3& l, double ndl, const glm::dvec3& k, const glm::dvec3& through) __attribute__((always_inline)) {
         if (through != glm::dvec3(0.0)) respond(l, ndl, k * through);
     });
     double open = 1;  // ambient occlusion: the ambient light's share that reaches p

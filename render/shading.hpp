@@ -108,6 +108,10 @@ private:
     template <class Ray>
     void light_rays(const glm::dvec3& origin, const glm::dvec3& n, const Departure* from, ThreadState& ts,
                     Ray&& ray) const;
+    // light_rays for light `li`, a sphere seen as `view` from origin.
+    template <class Ray>
+    [[gnu::noinline]] void sphere_rays(std::size_t li, const LightView& view, const glm::dvec3& origin, const glm::dvec3& n,
+                                       const Departure* from, ThreadState& ts, Ray& ray) const;
     // light_rays for a probing light (csg::Light::probe): 5 probe rays (its
     // rim and centre), its `samples` rays only where those disagree.
     template <class Ray>
