@@ -105,3 +105,33 @@ TEST_CASE("the Blinn–Phong highlight is specular·(n·h)^shininess, whole and 
         CHECK(im.at(1, 1, 0) == Approx(0.1 * 0.5 + 0.6 * nl * 0.5 + 0.4 * std::pow(nh, shininess)).epsilon(1e-5));
     }
 }
+
+TEST_CASE("the highlight's half vector uses the unit view, also for a pinhole camera's unnormalised rays", "[render][shading]") {
+    // A pinhole camera 10 above the ground plane looking straight down,
+    // fov 90° on a 3×3 image: pixel (0, 1) looks along d = forward ± (2/3)·right,
+    // |d| = √13/3 (pinhole model: half height tan 45° = 1), so the view is
+    // (∓2, 0, 3)/√13 — the same n·h for either sign. A distant light
+    // tilted 30° along y. Shading normalises nothing it is given here:
+    // a half vector built from d without its length misses the closed form.
+    const double deg = 30, nl = std::cos(glm::radians(deg));
+    const glm::dvec3 l(0, -std::sin(glm::radians(deg)), nl), view = glm::dvec3(2, 0, 3) / std::sqrt(13.0);
+    const double nh = glm::normalize(l + view).z;
+    for (const double shininess : {7.0, 32.0, 12.5}) {
+        csg::Material m = flat({0.5, 0.5, 0.5});
+        m.diffuse = 0.6;
+        m.specular = 0.4;
+        m.shininess = shininess;
+        csg::Scene s = make_scene(leaf(make_leaf(csg::PrimKind::Plane, {0, 0, 1, 0})), {m});
+        s.camera.position = {0, 0, 10};
+        s.camera.look_at = {0, 0, 0};
+        s.camera.up = {0, 1, 0};
+        s.camera.fov = 90;
+        s.lights = {csg::Light{true, {}, -l, {1, 1, 1}, 1}};
+        render::RenderOptions o;
+        o.width = o.height = 3;
+        const render::Image im = render::render(s, o);
+        INFO("shininess " << shininess);
+        CHECK(im.at(0, 1, 0) == Approx(0.1 * 0.5 + 0.6 * nl * 0.5 + 0.4 * std::pow(nh, shininess)).epsilon(1e-6));
+        CHECK(im.at(2, 1, 0) == Approx(im.at(0, 1, 0)).epsilon(1e-6));
+    }
+}
