@@ -17,8 +17,9 @@ constexpr double kAmbient = 0.1;  // POV-Ray's default ambient: shadows are not 
 
 // (n·h)^s for the Blinn–Phong highlight, from x2 = (n·h)² (docs/quality.md,
 // "Shading's rounding"): the half vector need not be normalised, which
-// took a square root and three divisions on every lit shading point's
-// critical path; (n·h')²/(h'·h') is one division. Whole exponents (the
+// took a square root and three divisions per lit shading point, sharing
+// the divider with the normal's and the shadow ray's;
+// (n·h')²/(h'·h') is one division. Whole exponents (the
 // usual 8..256) by repeated squaring of x2, a few multiplies (an odd one
 // takes one square root); others by pow. In [0, 1024] the truncating
 // conversion is the floor, two instructions where std::floor is a libm
