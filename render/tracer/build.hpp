@@ -47,6 +47,15 @@ struct CsgTracer::Impl {
     // The padded box around every bounded unit; everything() when a unit is
     // unbounded. A ray whose line misses it hits nothing (first_hit.cpp).
     csg::Aabb reach = csg::Aabb::everything();
+    // Scenes of at most kCullUnits units, all bounded: each unit's ball
+    // (unit_balls.hpp) or else its box padded as `reach` is, for culling
+    // image blocks unit by unit (tile_cull.cpp). Empty otherwise.
+    struct CullBound {
+        Ball ball;      // r < 0: none, use `box`
+        csg::Aabb box;
+    };
+    static constexpr std::size_t kCullUnits = 64;
+    std::vector<CullBound> cull_units;
     std::vector<csg::Aabb> padded;            // per node: bounds grown by node_eps (box tests)
     // Local tolerances (docs/accuracy.md "Far from the origin"): the
     // degenerate rule's world length per node, from the sizes and positions
