@@ -260,3 +260,34 @@ TEST_CASE("leaf minus leaves: shadow rays leaving grooves and pockets match poin
         }
     }
 }
+
+TEST_CASE("leaf minus leaves: the fishbowl's opening, near spans reused, matches point membership",
+          "[render][tracer][leaf]") {
+    // The fishbowl of bench/scenes.py (a ball minus a smaller ball and a
+    // cone from its centre up through the top), and the same with a slot
+    // (a box) through its wall. A ray into the opening enters the minuend
+    // inside the cone: the fast path intersects the cone alone, finds the
+    // piece behind it inside the inner ball and gives up; the full
+    // subtraction on the same window then takes the cone's spans from the
+    // fast path (leaf_minus.cpp, NearSpans) and intersects only the rest.
+    // Shadow rays leaving the inner wall likewise. Both at four scales.
+    for (const Place& p : kPlaces) {
+        for (const bool slot : {false, true}) {
+            std::vector<Tree> kids = {leaf(sphere(1)), leaf(sphere(0.9)),
+                                      leaf(make_leaf(PrimKind::Cylinder, {0, 1.2, 0.6, 0},
+                                                     translate(0, 0, 1.2) * scale(1, 1, -1)))};
+            if (slot) kids.push_back(leaf(box({-0.15, -1.2, -0.5}, {0.15, 0, 0.2}, rotate_deg(20, {0, 0, 1}))));
+            const csg::Scene s = make_scene(placed(op(Op::Difference, kids), p));
+            Counts c;
+            check_rays(s, p, 91, c, 800, 1.0);
+            INFO((slot ? "slotted " : "") << "fishbowl at scale " << p.k << ": " << c.hits << " hits");
+            CHECK(c.hits > 300);
+            const auto in_minuend = [](const glm::dvec3& q) { return glm::length(q) < 1; };
+            const auto [blocked, open] = check_cut_shadows(s, p, 1.0, in_minuend, 92);
+            INFO((slot ? "slotted " : "") << "fishbowl at scale " << p.k << ": " << blocked << " blocked, " << open
+                                          << " open");
+            CHECK(blocked > 500);
+            CHECK(open > 300);
+        }
+    }
+}
