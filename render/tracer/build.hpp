@@ -94,6 +94,9 @@ struct CsgTracer::Impl {
     // that lies wholly inside it when the leaf is convex, else kNone: a
     // shadow ray leaving its surface outwards skips that unit (Departure).
     std::vector<std::uint32_t> convex_unit;
+    // Whether any query goes through an Embree BVH of units or children
+    // (the top one, a node's): else no ray needs its float copy (make_state).
+    bool float_rays = true;
     std::vector<RTCScene> mesh_bvhs;        // per csg::Mesh used by a leaf (object space)
     std::vector<csg::Aabb> mesh_boxes;        // object-space bounds of each mesh
     std::vector<csg::PrismGrid> prism_grids;  // per Scene::polygons entry used by a prism (prism_spans.cpp)

@@ -246,10 +246,13 @@ inline void start_float_ray(RayState& st, double t_shift) {
     st.d = ray.d;
     st.enter = enter;
     st.leave = leave;
-    for (int i = 0; i < 3; ++i) st.dir[i] = float(ray.d[i]);
     st.len = glm::length(ray.d);
     st.inv_len = 1 / st.len;
-    start_float_ray(st, std::isfinite(enter) ? std::max(0.0, enter) : 0.0);
+    // (A scene queried without Embree, one unit of few leaves, never reads them.)
+    if (impl->float_rays) {
+        for (int i = 0; i < 3; ++i) st.dir[i] = float(ray.d[i]);
+        start_float_ray(st, std::isfinite(enter) ? std::max(0.0, enter) : 0.0);
+    }
     // Round-off of t also grows with the origin's own magnitude (far cameras).
     st.eps_ray = impl->eps_per_distance * glm::length(ray.o);
     st.eps = st.eps_ray * st.inv_len;  // until enter_unit
