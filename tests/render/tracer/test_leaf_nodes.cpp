@@ -188,14 +188,17 @@ std::pair<int, int> check_cut_shadows(const csg::Scene& s, const Place& p, doubl
     std::uniform_real_distribution<double> u(-1, 1);
     const auto unit = [&] { return glm::normalize(glm::dvec3(u(rng), u(rng), u(rng)) + 1e-3); };
     int blocked = 0, open = 0;
-    const auto check = [&](const glm::dvec3& o, const glm::dvec3& d, const char* what, int i) {
+    // `from`: the surface the ray leaves, as the shader hands it over (a cut
+    // face's Departure: shadow_rays.cpp, "Hollow").
+    const auto check = [&](const glm::dvec3& o, const glm::dvec3& d, const char* what, int i,
+                           const render::Departure* from = nullptr) {
         render::TraceHit hit;
         const double t = tracer.intersect(render::TraceRay{o, d, 0, kInf}, hit, scratch) ? hit.t : kInf;
         INFO("scale " << p.k << " " << what << " " << i << " first entry " << t / p.k);
         CHECK(membership_first_entry(s, o, d, t, 3 * p.k, 1e-7 * p.k));
         const double tfar = p.k * (0.02 + (u(rng) + 1));
         if (std::abs(t - tfar) < 1e-6 * p.k) return;
-        const bool shadow = tracer.occluded(render::TraceRay{o, d, 0, tfar}, scratch);
+        const bool shadow = tracer.occluded(render::TraceRay{o, d, 0, tfar}, scratch, from);
         CHECK(shadow == (t < tfar));
         (shadow ? blocked : open)++;
     };
@@ -214,8 +217,11 @@ std::pair<int, int> check_cut_shadows(const csg::Scene& s, const Place& p, doubl
         const glm::dvec3 from = x + tracer.surface_offset(hit, x) * n_out;
         glm::dvec3 dir = unit();
         if (glm::dot(dir, n_out) < 0) dir = -dir;
+        // Every fourth ray nearly along the face (within 1e-3 of it).
+        if (i % 4 == 0) dir = glm::normalize(dir - glm::dot(dir, n_out) * n_out + 1e-3 * (u(rng) + 1) * n_out);
         ++n;
-        check(from, dir, "ray from a cut face", i);
+        const render::Departure leaving = tracer.departure(hit, n_out);
+        check(from, dir, "ray from a cut face", i, &leaving);
     }
     return {blocked, open};
 }
