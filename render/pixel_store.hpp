@@ -55,6 +55,23 @@ public:
             to[0] = float(c.x), to[1] = float(c.y), to[2] = float(c.z);
         }
     }
+    // Pixels [x0, x1) of row y, each as color(x, y, c) would store it: the
+    // first through color, the rest copies of its three values (a culled
+    // block's row of background, without a comparison per pixel).
+    void fill(int x0, int x1, int y, const glm::dvec3& c) {
+        if (x1 <= x0) return;
+        color(x0, y, c);
+        const std::size_t at = index(x0, y), n = std::size_t(x1 - x0);
+        if (bytes_) {
+            std::uint8_t* to = srgb8_ + at;
+            const std::uint8_t r = to[0], g = to[1], b = to[2];
+            for (std::size_t i = 1; i < n; ++i) to[i * channels_] = r, to[i * channels_ + 1] = g, to[i * channels_ + 2] = b;
+        } else {
+            float* to = pixels_ + at;
+            const float r = to[0], g = to[1], b = to[2];
+            for (std::size_t i = 1; i < n; ++i) to[i * channels_] = r, to[i * channels_ + 1] = g, to[i * channels_ + 2] = b;
+        }
+    }
     bool bytes() const { return bytes_; }
     // An sRGB image's pixel from its codes, red in the low byte: those
     // color() would store for the colour they encode.

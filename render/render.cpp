@@ -165,15 +165,23 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
         // The plain render (1 spp, no alpha, no ghosts): the pixel centre's
         // ray straight to the shader and the store, the same calls `sample`
         // and `put` make without their per-pixel branches and counters.
-        complete &= tiles.run(region, progress, [&](int x, int y, ThreadState& ts, bool traced) {
-            ++ts.rays.primary;
-            glm::dvec3 o, d;
-            if (!traced || !camera.ray_unnormalised(x + 0.5, y + 0.5, o, d)) {
-                store.color(x, y, shader.miss());
-                return;
-            }
-            store.color(x, y, shader.radiance(TraceRay{o, d, 0, std::numeric_limits<double>::infinity()}, 0, ts));
-        });
+        // A culled block's rows are filled whole.
+        const glm::dvec3 miss = shader.miss();
+        complete &= tiles.run(
+            region, progress,
+            [&](int x, int y, ThreadState& ts, bool traced) {
+                ++ts.rays.primary;
+                glm::dvec3 o, d;
+                if (!traced || !camera.ray_unnormalised(x + 0.5, y + 0.5, o, d)) {
+                    store.color(x, y, miss);
+                    return;
+                }
+                store.color(x, y, shader.radiance(TraceRay{o, d, 0, std::numeric_limits<double>::infinity()}, 0, ts));
+            },
+            [&](int x0, int x1, int y, ThreadState& ts) {
+                ts.rays.primary += std::uint64_t(x1 - x0);
+                store.fill(x0, x1, y, miss);
+            });
     } else {
         complete &= tiles.run(region, progress, [&](int x, int y, ThreadState& ts, bool traced) {
             PixelSampler::set_covered(0);

@@ -72,18 +72,30 @@ inline void cull_blocks(const CameraModel& camera, const CsgTracer& tracer, cons
         }
 }
 
-// Calls pixel(x, y, thread_state, traced) for every pixel of `region`, and
-// progress(fraction) after each tile, serialised; once `*cancel` is set the
+// The default for an untraced run of pixels: each on its own, as traced
+// ones are.
+template <class Pixel>
+struct PixelByPixel {
+    Pixel& pixel;
+    void operator()(int x0, int x1, int y, ThreadState& ts) const {
+        for (int x = x0; x < x1; ++x) pixel(x, y, ts, false);
+    }
+};
+
+// Calls pixel(x, y, thread_state, traced) for every pixel of `region` (or,
+// for the pixels of a row of a culled block, untraced(x0, x1, y,
+// thread_state), which must do what pixel(x, y, ts, false) does for each),
+// and progress(fraction) after each tile, serialised; once `*cancel` is set the
 // tiles not started are skipped (the caller throws RenderCancelled). A thread with less than
 // `stack_need` bytes of stack left traces nothing (stack_depth.hpp); then
 // the result is false and the image incomplete. A tile is traced unless
 // its rays miss both the solid and the box `also` (where the ground shows a
 // shadow, render/ground.hpp; empty: nothing).
-template <class Pixel>
+template <class Pixel, class Untraced>
 bool for_each_tile(tbb::task_arena& arena, const std::array<int, 4>& region, const CameraModel& camera,
                    const CsgTracer& tracer, const csg::Aabb& also, tbb::enumerable_thread_specific<ThreadState>& states,
                    const std::function<void(double)>& progress, std::size_t stack_need,
-                   const std::atomic<bool>* cancel, Pixel&& pixel) {
+                   const std::atomic<bool>* cancel, Pixel&& pixel, Untraced&& untraced) {
     const int width = region[2] - region[0], height = region[3] - region[1];
     const int tiles_x = (width + kTile - 1) / kTile, tiles_y = (height + kTile - 1) / kTile;
     const int tiles = tiles_x * tiles_y;
@@ -112,7 +124,14 @@ bool for_each_tile(tbb::task_arena& arena, const std::array<int, 4>& region, con
                 cull_blocks(camera, tracer, also, tx0, ty0, tx1, ty1, traced);
                 for (int y = ty0; y < ty1; ++y) {
                     const bool* row = traced[(y - ty0) / kBlock];
-                    for (int x = tx0; x < tx1; ++x) pixel(x, y, ts, row[(x - tx0) / kBlock]);
+                    for (int x0 = tx0; x0 < tx1; x0 += kBlock) {
+                        const int x1 = std::min(x0 + kBlock, tx1);
+                        if (!row[(x0 - tx0) / kBlock]) {
+                            untraced(x0, x1, y, ts);
+                            continue;
+                        }
+                        for (int x = x0; x < x1; ++x) pixel(x, y, ts, true);
+                    }
                 }
                 if (progress) {
                     std::lock_guard<std::mutex> lock(progress_mutex);
@@ -145,8 +164,15 @@ struct TilePasses {
 
     template <class Pixel>
     bool run(const std::array<int, 4>& region, const std::function<void(double)>& progress, Pixel&& pixel) const {
-        return for_each_tile(arena, region, camera, tracer, also, states, progress, stack_need, cancel,
-                             std::forward<Pixel>(pixel));
+        return for_each_tile(arena, region, camera, tracer, also, states, progress, stack_need, cancel, pixel,
+                             PixelByPixel<Pixel>{pixel});
+    }
+    // The same with the untraced runs of culled blocks handed over whole.
+    template <class Pixel, class Untraced>
+    bool run(const std::array<int, 4>& region, const std::function<void(double)>& progress, Pixel&& pixel,
+             Untraced&& untraced) const {
+        return for_each_tile(arena, region, camera, tracer, also, states, progress, stack_need, cancel, pixel,
+                             untraced);
     }
 };
 

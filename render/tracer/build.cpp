@@ -258,8 +258,18 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
         const double pad = 4e-6 * impl_->frame_radius + 4 * eps;
         if (!reach.empty()) reach = {reach.lo - glm::dvec3(pad), reach.hi + glm::dvec3(pad)};
         impl_->reach = reach;
+        const std::vector<std::uint32_t>& items = impl_->top.items;
+        if (items.size() > 1 || (items.size() == 1 && !impl_->top.balls.empty()))
+            if (items.size() <= Impl::kCullUnits)
+                for (std::size_t i = 0; i < items.size(); ++i) {
+                    const csg::Aabb& b = scene.nodes[items[i]].bounds;
+                    impl_->cull_units.push_back({i < impl_->top.balls.size() ? impl_->top.balls[i] : Ball{},
+                                                 b.empty() ? b : csg::Aabb{b.lo - glm::dvec3(pad), b.hi + glm::dvec3(pad)}});
+                }
         impl_->build_ball_bvh();
     }
+    impl_->float_rays = impl_->top.bvh != nullptr;
+    for (const std::unique_ptr<Accel>& a : impl_->node_accels) impl_->float_rays = impl_->float_rays || a->bvh;
 }
 
 CsgTracer::~CsgTracer() = default;

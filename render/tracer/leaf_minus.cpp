@@ -22,16 +22,47 @@ constexpr int kMaxLeafSpans = csg::kMaxSpans;
 // Impl::leaf_minus allows at most this many subtrahends (no BVH of their own).
 constexpr int kMaxGathered = 8 * kMaxLeafSpans;
 
+// The spans of the near subtrahends (by their index into subs) that the
+// fast path intersected on the minuend span's part in the window: when it
+// proves nothing, the full subtraction on that same window takes them from
+// here instead of intersecting those leaves again (the same calls on the
+// same window would give the same bits).
+struct NearSpans {
+    std::uint32_t count = 0;  // 0: none kept
+    std::uint32_t which[kMaxNear];
+    int n[kMaxNear];
+    SpanBuffer<kMaxNear * kMaxLeafSpans> at;
+};
+
 // Minuend span `m` minus the subtrahend leaves subs[which[j]] (or every
-// subtrahend when which is null), each intersected on [wa, wb]: the pieces
-// go to out (at most 1 + kMaxGathered), their count is returned.
+// subtrahend when which is null), each intersected on [wa, wb], in the
+// order of subs: the pieces go to out (at most 1 + kMaxGathered), their
+// count is returned. With which set, the near spans are kept in `kept`;
+// with which null, those already in `kept` are taken from there.
 int minus_leaves(RayState& rs, const Span& m, const std::uint32_t* subs, std::uint32_t nsub,
-                 const std::uint32_t* which, std::uint32_t nwhich, double wa, double wb, Span* out) {
+                 const std::uint32_t* which, std::uint32_t nwhich, double wa, double wb, Span* out, NearSpans& kept) {
     SpanBuffer<kMaxGathered> gathered;
     int ng = 0;
-    const std::uint32_t count = which ? nwhich : nsub;
-    for (std::uint32_t j = 0; j < count; ++j)
-        ng += analytic_node_spans(rs, subs[which ? which[j] : j], wa, wb, gathered.at + ng);
+    if (which) {
+        for (std::uint32_t j = 0; j < nwhich; ++j) {
+            Span* to = kept.at.at + j * kMaxLeafSpans;
+            kept.n[j] = analytic_node_spans(rs, subs[which[j]], wa, wb, to);
+            kept.which[j] = which[j];
+            std::copy(to, to + kept.n[j], gathered.at + ng);
+            ng += kept.n[j];
+        }
+        kept.count = nwhich;
+    } else {
+        for (std::uint32_t k = 0, j = 0; k < nsub; ++k) {
+            if (j < kept.count && kept.which[j] == k) {
+                const Span* from = kept.at.at + j * kMaxLeafSpans;
+                ng = int(std::copy(from, from + kept.n[j], gathered.at + ng) - gathered.at);
+                ++j;
+                continue;
+            }
+            ng += analytic_node_spans(rs, subs[k], wa, wb, gathered.at + ng);
+        }
+    }
     ng = span_normalize_union(gathered.at, ng, rs.eps);
     return span_difference(&m, 1, gathered.at, ng, out, rs.eps);
 }
@@ -81,9 +112,12 @@ bool any_torus(const RayState& rs, const std::uint32_t* subs, const std::uint32_
 }
 
 // first_piece_if_clear and any_piece_if_clear on minuend span m: Found with
-// the answer in `answer`, Past, None, or Unknown (gather every subtrahend).
+// the answer in `answer`, Past, None, or Unknown (gather every subtrahend,
+// those intersected here from `kept`: the window of the full subtraction,
+// [max(a, m.t0), min(b, m.t1)], is the one used here, as First probes only
+// a span that starts inside the window).
 FastPath piece_if_clear(RayState& rs, const Span& m, const std::uint32_t* subs, std::uint32_t nsub, double a,
-                        double b, Need need, Span& answer) {
+                        double b, Need need, Span& answer, NearSpans& kept) {
     double t0 = m.t0, t1 = m.t1, probe;
     const double eps = rs.eps;
     if (const FastPath p = fast_path_probe(t0, t1, a, b, need, eps, probe); p != FastPath::Found) return p;
@@ -100,7 +134,7 @@ FastPath piece_if_clear(RayState& rs, const Span& m, const std::uint32_t* subs, 
     Span* pieces = buffer.at;
     if (need == Need::First) {
         // Span m minus the near subtrahends, on its part in the window.
-        const int r = minus_leaves(rs, m, subs, nsub, near, nnear, probe, std::min(b, m.t1), pieces);
+        const int r = minus_leaves(rs, m, subs, nsub, near, nnear, probe, std::min(b, m.t1), pieces, kept);
         int k = 0;
         while (k < r && !(pieces[k].t0 > a)) ++k;
         // More subtrahends only shrink the pieces: none here, none at all.
@@ -134,7 +168,7 @@ FastPath piece_if_clear(RayState& rs, const Span& m, const std::uint32_t* subs, 
             return FastPath::Found;
         }
     }
-    const int r = minus_leaves(rs, m, subs, nsub, near, nnear, p0, p1, pieces);
+    const int r = minus_leaves(rs, m, subs, nsub, near, nnear, p0, p1, pieces, kept);
     bool unsure = false;
     for (int k = 0; k < r; ++k) {
         const double q0 = std::max(a, pieces[k].t0), q1 = std::min(b, pieces[k].t1);
@@ -166,7 +200,8 @@ std::uint32_t RayState::leaf_minus_spans(const csg::Node& n, double a, double b,
     SpanBuffer<1> answer_buffer;
     Span& answer = answer_buffer.at[0];
     for (int i = 0; i < nm; ++i) {
-        const FastPath found = piece_if_clear(*this, m[i], subs, nsub, a, b, need, answer);
+        NearSpans kept;
+        const FastPath found = piece_if_clear(*this, m[i], subs, nsub, a, b, need, answer, kept);
         if (found == FastPath::Past) break;
         if (found == FastPath::None) continue;
         if (found == FastPath::Unknown) {
@@ -174,7 +209,7 @@ std::uint32_t RayState::leaf_minus_spans(const csg::Node& n, double a, double b,
             SpanBuffer<1 + kMaxGathered> buffer;
             Span* pieces = buffer.at;
             const int r = minus_leaves(*this, m[i], subs, nsub, nullptr, 0, std::max(a, m[i].t0), std::min(b, m[i].t1),
-                                       pieces);
+                                       pieces, kept);
             int k = 0;
             for (; k < r; ++k) {
                 const Span& p = pieces[k];

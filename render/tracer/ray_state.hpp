@@ -246,10 +246,13 @@ inline void start_float_ray(RayState& st, double t_shift) {
     st.d = ray.d;
     st.enter = enter;
     st.leave = leave;
-    for (int i = 0; i < 3; ++i) st.dir[i] = float(ray.d[i]);
     st.len = glm::length(ray.d);
     st.inv_len = 1 / st.len;
-    start_float_ray(st, std::isfinite(enter) ? std::max(0.0, enter) : 0.0);
+    // (A scene queried without Embree, one unit of few leaves, never reads them.)
+    if (impl->float_rays) {
+        for (int i = 0; i < 3; ++i) st.dir[i] = float(ray.d[i]);
+        start_float_ray(st, std::isfinite(enter) ? std::max(0.0, enter) : 0.0);
+    }
     // Round-off of t also grows with the origin's own magnitude (far cameras).
     st.eps_ray = impl->eps_per_distance * glm::length(ray.o);
     st.eps = st.eps_ray * st.inv_len;  // until enter_unit
@@ -337,6 +340,11 @@ struct TopContext {
     bool gather = false;      // inside_spans: keep every unit's spans on the stack
     double gather_eps = 0;    // inside_spans: the largest degenerate rule met
     std::uint32_t skip = csg::kNone;  // occluded: the unit the ray departs from (Departure)
+    // occluded: the unit whose subtrahend the ray starts inside
+    // (Departure::hollow_unit), evaluated from hollow_tnear on.
+    std::uint32_t hollow = csg::kNone;
+    double hollow_tnear = 0;
+    double window_start(std::uint32_t item) const { return item == hollow ? hollow_tnear : tnear; }
     // intersect: the units the ball chords left open (ball_chords.hpp),
     // evaluated after the traversal in the order of their lower bounds, and
     // `ub`, the smallest upper bound the chords gave (never below the answer).

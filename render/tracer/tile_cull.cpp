@@ -5,36 +5,95 @@
 // an orthographic one), so a box outside one of the four side planes of that
 // hull is missed by all of them. render() then fills the tile with what a
 // miss gives, without tracing: most tiles of a simple scene are background.
+// A scene of few units is asked again unit by unit, each by its ball when it
+// has one (unit_balls.hpp): a sphere's box reaches far past its outline, and
+// the pixels between were traced only to be rejected by that ball.
 #include <cmath>
 
 #include "render/tracer/build.hpp"
 
 namespace kerf::render {
 
-bool CsgTracer::misses_all(const glm::dvec3 (&o)[4], const glm::dvec3 (&d)[4]) const {
-    return tile_misses_box(impl_->reach, o, d);
-}
+namespace {
 
-bool tile_misses_box(const csg::Aabb& box, const glm::dvec3 (&o)[4], const glm::dvec3 (&d)[4]) {
-    if (box.empty()) return true;
-    for (int i = 0; i < 3; ++i)
-        if (!std::isfinite(box.lo[i]) || !std::isfinite(box.hi[i])) return false;  // unbounded units
+// The side planes of the hull of four corner rays: unit normals pointing
+// inside, each through the origin of its first ray. Planes are found in
+// order round the quad; `count` stops at the first degenerate one.
+struct HullPlanes {
+    glm::dvec3 n[4];
+    int count = 0;
+};
+
+HullPlanes hull_planes(const glm::dvec3 (&o)[4], const glm::dvec3 (&d)[4]) {
+    HullPlanes h;
     for (int i = 0; i < 4; ++i) {
         const int j = (i + 1) % 4, k = (i + 2) % 4;  // corners go round the tile
         // The plane through ray i that also holds ray j (pinhole: both
         // directions; orthographic: the direction and the step between origins).
         glm::dvec3 n = glm::cross(d[i], o[j] + d[j] - o[i]);
         const double len = glm::length(n);
-        if (!(len > 0)) return false;
+        if (!(len > 0)) break;
         n /= len;
         if (glm::dot(n, o[k] + d[k] - o[i]) < 0) n = -n;  // the tile's inside is positive
-        // Outside by a margin far above round-off: the box's nearest corner.
+        h.n[h.count++] = n;
+    }
+    return h;
+}
+
+// Whether `box` lies outside one of the planes h.n[0, upto) by a margin far
+// above round-off (its nearest corner). Empty boxes always, unbounded never.
+bool box_outside(const csg::Aabb& box, const HullPlanes& h, int upto, const glm::dvec3 (&o)[4]) {
+    if (box.empty()) return true;
+    for (int i = 0; i < 3; ++i)
+        if (!std::isfinite(box.lo[i]) || !std::isfinite(box.hi[i])) return false;  // unbounded units
+    for (int i = 0; i < upto; ++i) {
+        const glm::dvec3& n = h.n[i];
         const glm::dvec3 corner(n.x > 0 ? box.hi.x : box.lo.x, n.y > 0 ? box.hi.y : box.lo.y,
                                 n.z > 0 ? box.hi.z : box.lo.z);
         const double slack = 1e-9 * (glm::length(corner) + glm::length(o[i]) + 1e-300);
         if (glm::dot(n, corner - o[i]) < -slack) return true;
     }
     return false;
+}
+
+// The ball test a traced ray makes first (unit_ball_misses) widens the
+// ball by 4·eps_ray (eps_per_distance·|o|) and ball_slack·|c - o|₁; over
+// the hull, |o| and |c - o|₁ are at most their largest at the corners
+// (both convex in o). A ball outside a side plane by that radius, and by
+// 1e-9 of the distances beyond it, is outside the chord of every ray of
+// the hull: each traced ray's ball test would reject the unit.
+bool ball_outside(const Ball& b, const HullPlanes& h, const glm::dvec3 (&o)[4], double eps_per_distance,
+                  double ball_slack) {
+    double o_max = 0, w_max = 0;
+    for (int i = 0; i < 4; ++i) {
+        const glm::dvec3 w = b.c - o[i];
+        o_max = std::max(o_max, glm::length(o[i]));
+        w_max = std::max(w_max, std::abs(w.x) + std::abs(w.y) + std::abs(w.z));
+    }
+    const double r = b.r + 4 * eps_per_distance * o_max + ball_slack * w_max;
+    for (int i = 0; i < h.count; ++i) {
+        const double slack = 1e-9 * (w_max + r + glm::length(o[i]) + 1e-300);
+        if (glm::dot(h.n[i], b.c - o[i]) < -(r + slack)) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+bool CsgTracer::misses_all(const glm::dvec3 (&o)[4], const glm::dvec3 (&d)[4]) const {
+    const HullPlanes h = hull_planes(o, d);
+    if (box_outside(impl_->reach, h, h.count, o)) return true;
+    if (impl_->cull_units.empty()) return false;
+    for (const Impl::CullBound& u : impl_->cull_units)
+        if (u.ball.r >= 0 ? !ball_outside(u.ball, h, o, impl_->eps_per_distance, impl_->ball_slack)
+                          : !box_outside(u.box, h, h.count, o))
+            return false;
+    return true;
+}
+
+bool tile_misses_box(const csg::Aabb& box, const glm::dvec3 (&o)[4], const glm::dvec3 (&d)[4]) {
+    const HullPlanes h = hull_planes(o, d);
+    return box_outside(box, h, h.count, o);
 }
 
 }  // namespace kerf::render

@@ -44,6 +44,10 @@ struct TraceHit {
 struct Departure {
     std::uint32_t unit = csg::kNone;  // the unit to skip, or kNone
     glm::dvec3 outward{0.0};
+    // A cut face of a convex subtrahend leaf of a leaf-minus-leaves unit:
+    // the ray leaves into that leaf, and the unit has no span before the
+    // leaf's exit (shadow_rays.cpp, "Hollow"). kNone: not such a face.
+    std::uint32_t hollow_unit = csg::kNone, hollow_leaf = csg::kNone;
 };
 
 class CsgTracer {

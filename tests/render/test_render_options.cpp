@@ -221,4 +221,18 @@ TEST_CASE("culled blocks are background exactly where the centre rays miss", "[r
                             whole.srgb8[(std::size_t(y) * o.width + x) * 3 + ch]);
                 }
     }
+    // Linear floats too (a culled block's rows are filled whole, render.cpp):
+    // every pixel the 8-bit image shows as background holds the corner's floats.
+    o.crop.reset();
+    o.srgb8 = false;
+    const render::Image linear = render::render(s, o);
+    REQUIRE(linear.pixels.size() == std::size_t(150 * 110 * 3));
+    int background = 0;
+    for (std::size_t i = 0; i < std::size_t(150 * 110); ++i) {
+        if (!std::equal(&whole.srgb8[3 * i], &whole.srgb8[3 * i] + 3, bg)) continue;
+        ++background;
+        INFO("pixel " << i);
+        CHECK(std::equal(&linear.pixels[3 * i], &linear.pixels[3 * i] + 3, &linear.pixels[0]));
+    }
+    CHECK(background > 10000);
 }

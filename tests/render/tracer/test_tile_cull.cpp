@@ -15,6 +15,29 @@ using namespace kerf;
 using namespace kerf::test;
 using csg::Op;
 
+namespace {
+
+// Whether intersect() misses every one of `samples` rays of the quad: its
+// four corners, then bilinear mixes of them (as a tile's pixels are).
+template <typename Rng>
+int hits_in_quad(const render::CsgTracer& tracer, render::TraceScratch& scratch, const glm::dvec3 (&o)[4],
+                 const glm::dvec3 (&d)[4], int samples, Rng& rng) {
+    std::uniform_real_distribution<double> w(0, 1);
+    const double sx[4] = {0, 1, 1, 0}, sy[4] = {0, 0, 1, 1};
+    int hits = 0;
+    for (int k = 0; k < samples; ++k) {
+        const double a = k < 4 ? sx[k] : w(rng), b = k < 4 ? sy[k] : w(rng);
+        const double wt[4] = {(1 - a) * (1 - b), a * (1 - b), a * b, (1 - a) * b};
+        glm::dvec3 ro(0.0), rd(0.0);
+        for (int i = 0; i < 4; ++i) ro += wt[i] * o[i], rd += wt[i] * d[i];
+        render::TraceHit hit;
+        hits += tracer.intersect(render::TraceRay{ro, rd, 0, std::numeric_limits<double>::infinity()}, hit, scratch);
+    }
+    return hits;
+}
+
+}  // namespace
+
 TEST_CASE("tile culling never drops a ray that hits", "[render][cull]") {
     const csg::Scene s = make_scene(op(Op::Union, {leaf(sphere(1, translate(0.5, 0, 0))),
                                                    leaf(box({-2, -0.5, -0.5}, {-1, 0.5, 0.3}))}));
@@ -47,19 +70,108 @@ TEST_CASE("tile culling never drops a ray that hits", "[render][cull]") {
             continue;
         }
         ++culled;
-        for (int k = 0; k < 40; ++k) {
-            // A point of the quad: bilinear weights, as pixels inside a tile.
-            const double a = k < 4 ? sx[k] : w(rng), b = k < 4 ? sy[k] : w(rng);
-            const double wt[4] = {(1 - a) * (1 - b), a * (1 - b), a * b, (1 - a) * b};
-            glm::dvec3 ro(0.0), rd(0.0);
-            for (int i = 0; i < 4; ++i) ro += wt[i] * o[i], rd += wt[i] * d[i];
-            render::TraceHit hit;
-            INFO("quad " << q << (pinhole ? " pinhole" : " orthographic") << " sample " << k);
-            CHECK_FALSE(tracer.intersect(render::TraceRay{ro, rd, 0, std::numeric_limits<double>::infinity()}, hit,
-                                         scratch));
-        }
+        INFO("quad " << q << (pinhole ? " pinhole" : " orthographic"));
+        CHECK(hits_in_quad(tracer, scratch, o, d, 40, rng) == 0);
     }
     INFO(culled << " culled, " << kept << " kept");
     CHECK(culled > 500);
     CHECK(kept > 500);
+}
+
+namespace {
+
+// Solids whose units have balls (unit_balls.hpp), moved by `at` and scaled
+// by `s`: a fishbowl (a ball minus a smaller one and a cone), a lens (two
+// balls intersected), and, when `crowd`, those two beside a box (no ball)
+// and a sphere minus a box, as units of one union.
+csg::Scene ball_units(double s, glm::dvec3 at, bool crowd) {
+    const glm::dmat4 m = translate(at.x, at.y, at.z) * scale(s, s, s);
+    auto fishbowl = [&](glm::dvec3 c) {
+        const glm::dmat4 p = m * translate(c.x, c.y, c.z);
+        return op(Op::Difference,
+                  {leaf(sphere(1, p)), leaf(sphere(0.9, p)),
+                   leaf(make_leaf(csg::PrimKind::Cylinder, {0, 1.2, 0.6, 0},
+                                  p * translate(0, 0, 1.2) * scale(1, 1, -1)))});
+    };
+    auto lens = [&](glm::dvec3 c) {
+        return op(Op::Intersection, {leaf(sphere(1, m * translate(c.x, c.y, c.z - 0.6))),
+                                     leaf(sphere(1, m * translate(c.x, c.y, c.z + 0.6)))});
+    };
+    if (!crowd) return make_scene(fishbowl({0, 0, 0}));
+    return make_scene(op(Op::Union, {fishbowl({1.4, 0, 0}), lens({-1.4, 0, 0.3}),
+                                     leaf(box({-0.3, -0.3, 1.6}, {0.3, 0.3, 1.9}, m)),
+                                     op(Op::Difference, {leaf(sphere(0.5, m * translate(0, 0.5, -1.5))),
+                                                         leaf(box({-1, -1, -1.5}, {1, 1, -1.2}, m))})}));
+}
+
+}  // namespace
+
+// Scenes of few units are culled unit by unit, each by its ball: a quad is
+// culled only when every ray of it misses (intersect, sampled), also when
+// the quad is tiny and lies just outside a ball's outline (1e-7 to 1e-1 of
+// its radius), at 1e-3, 1e4 and 1e6 moved off the origin; and the balls
+// cull quads the scene's box keeps (else they would save nothing).
+TEST_CASE("tile culling by unit balls never drops a ray that hits", "[render][cull]") {
+    struct Case {
+        double s;
+        glm::dvec3 at;
+        bool crowd;
+    };
+    const Case cases[] = {{1, {0, 0, 0}, false}, {1, {0, 0, 0}, true}, {1e-3, {5e-3, -3e-3, 2e-3}, true},
+                          {1e4, {2e4, 0, -1e4}, true}, {1e6, {3e6, 1e6, 0}, false}};
+    for (const Case& c : cases) {
+        const csg::Scene s = ball_units(c.s, c.at, c.crowd);
+        const render::CsgTracer tracer(s, false);
+        render::TraceScratch scratch;
+        csg::Aabb all;
+        for (const csg::Node& n : s.nodes) all.extend(n.bounds);
+        std::mt19937_64 rng(11);
+        std::uniform_real_distribution<double> u(-1, 1), w(0, 1);
+        int culled = 0, kept = 0, beyond_box = 0;
+        for (int q = 0; q < 3000; ++q) {
+            const bool pinhole = q % 2 == 0;
+            const glm::dvec3 eye = c.at + c.s * glm::dvec3(6 * u(rng), -8, 6 * u(rng));
+            // Half the quads aim round the whole scene, half just outside
+            // (or inside) the outline of a ball of one fishbowl unit.
+            glm::dvec3 target = c.at + c.s * glm::dvec3(2 * u(rng), 0, 2 * u(rng));
+            double size = 0.02 + 0.3 * w(rng);
+            const bool graze = q % 4 >= 2;
+            if (graze) {
+                const glm::dvec3 centre = c.at + c.s * glm::dvec3(c.crowd ? 1.4 : 0, 0, 0);
+                const glm::dvec3 view = glm::normalize(centre - eye);
+                const glm::dvec3 side = glm::normalize(glm::cross(view, glm::dvec3(u(rng), u(rng), u(rng))));
+                const double gap = (q % 8 < 6 ? 1 : -1) * std::pow(10.0, -7 + 6 * w(rng));
+                // The tangent ray's direction leans out by the gap.
+                const double dist = glm::length(centre - eye), r = c.s * (1 + gap);
+                target = eye + dist * (std::sqrt(std::max(0.0, 1 - r * r / (dist * dist))) * view + r / dist * side);
+                size = std::pow(10.0, -6 + 5 * w(rng));
+            }
+            const glm::dvec3 aim = glm::normalize(target - eye);
+            const glm::dvec3 right = glm::normalize(glm::cross(aim, {0, 0, 1})), up = glm::cross(right, aim);
+            glm::dvec3 o[4], d[4];
+            const double sx[4] = {0, 1, 1, 0}, sy[4] = {0, 0, 1, 1};
+            for (int i = 0; i < 4; ++i) {
+                const double px = size * (sx[i] - 0.5), py = size * (sy[i] - 0.5);
+                if (pinhole) {
+                    o[i] = eye;
+                    d[i] = glm::normalize(aim + 0.4 * px * right + 0.4 * py * up);
+                } else {
+                    o[i] = eye + c.s * (3 * px * right + 3 * py * up);
+                    d[i] = aim;
+                }
+            }
+            if (!tracer.misses_all(o, d)) {
+                ++kept;
+                continue;
+            }
+            ++culled;
+            if (!render::tile_misses_box(all, o, d)) ++beyond_box;
+            INFO("scale " << c.s << " quad " << q << (pinhole ? " pinhole" : " orthographic"));
+            CHECK(hits_in_quad(tracer, scratch, o, d, 24, rng) == 0);
+        }
+        INFO("scale " << c.s << ": " << culled << " culled (" << beyond_box << " beyond the box), " << kept << " kept");
+        CHECK(culled > 300);
+        CHECK(beyond_box > 100);
+        CHECK(kept > 300);
+    }
 }
