@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <optional>
+#include <tuple>
 
 #include "csg/membership.hpp"
 #include "render/adaptive.hpp"
@@ -88,7 +89,14 @@ private:
         return like_p == like_q ? -1 : like_q;
     }
     const SideProbe& side(int cx, int cy, bool vertical, ThreadState& ts, bool traced) const;
-    std::optional<double> predicted(int cx, int cy, bool vertical, const CornerProbe& p, const CornerProbe& q) const;
+    struct Prediction {
+        double at = 0;
+        // Which of the two confirming samples is enough: 0 both; 1 only
+        // the one past the prediction (towards q), -1 only the one before.
+        int confirm = 0;
+    };
+    std::optional<Prediction> predicted(int cx, int cy, bool vertical, const CornerProbe& p,
+                                        const CornerProbe& q) const;
     std::optional<glm::dvec3> straight_edge(int x, int y, const std::array<const CornerProbe*, 4>& k, ThreadState& ts,
                                             bool traced) const;
 
@@ -182,24 +190,61 @@ int Refinement::like(double px, double py, const CornerProbe& p, const CornerPro
 // next one right, or down) see crosses the side between them, predicted
 // from their tangent planes (edge_crossing.hpp); nothing where either saw
 // no solid.
-std::optional<double> Refinement::predicted(int cx, int cy, bool vertical, const CornerProbe& p,
-                                            const CornerProbe& q) const {
+//
+// Exact, and confirmed by one sample (Prediction::confirm), where one
+// corner's face meets the other corner's leaf at a point that lies on both
+// leaves' surfaces (within 1/256 of the side): the ray through the
+// prediction passes through a point of the two surfaces' intersection, the
+// edge, whether the face is planar or the side runs along its tangent
+// line; and where the other corner's hit lies behind that face's plane, so
+// that the face is the nearer one there (a crease, or the face occluding
+// what lies behind it, as a hole's rims do). The sample on the other
+// corner's side then refuses a prediction whose face goes on beyond it, or
+// where a third surface lies; one on the face's own side would not add to
+// that. Where the other corner's surface lies in front of the face's plane
+// it may hide the face before the prediction (an overhanging top hides the
+// line where its leaf meets the floor's plane): both samples.
+std::optional<Refinement::Prediction> Refinement::predicted(int cx, int cy, bool vertical, const CornerProbe& p,
+                                                            const CornerProbe& q) const {
     if (p.hit.t < 0 || q.hit.t < 0) return std::nullopt;
     glm::dvec3 o0, d0, o1, d1;
     if (!sampler_.ray(cx, cy, o0, d0) || !sampler_.ray(cx + !vertical, cy + vertical, o1, d1)) return std::nullopt;
     const glm::dvec3 at_p = o0 + p.hit.t * d0, at_q = o1 + q.hit.t * d1;
     const TangentPlane p_plane{at_p, sampler_.normal(p.hit, at_p)}, q_plane{at_q, sampler_.normal(q.hit, at_q)};
-    // Where one corner's face meets the other corner's leaf: exact for
-    // planar faces, at a crease or an occluding edge alike.
-    const auto meets = [&](const TangentPlane& face, const TraceHit& other) {
-        const csg::Leaf& leaf = sampler_.scene().leaves[other.surface.leaf];
-        return crossing_on_plane(o0, d0, o1, d1, face, [&](const glm::dvec3& w) {
-            return csg::surface_distance(leaf, leaf.object_from_world.point(w));
-        });
+    const csg::Scene& scene = sampler_.scene();
+    const auto distance = [&](const TraceHit& hit, const glm::dvec3& w) {
+        const csg::Leaf& leaf = scene.leaves[hit.surface.leaf];
+        return csg::surface_distance(leaf, leaf.object_from_world.point(w));
     };
-    if (const std::optional<double> e = meets(p_plane, q.hit)) return e;
-    if (const std::optional<double> e = meets(q_plane, p.hit)) return e;
-    return predicted_crossing(o0, d0, o1, d1, p_plane, q_plane);
+    // Where `face` (the plane of the corner whose ray is (fo, fd) and hit
+    // `own`) meets the other corner's leaf (`other`, ray (go, gd)), and
+    // whether that is exact.
+    std::optional<Prediction> first;
+    const auto meets = [&](const TangentPlane& face, const TraceHit& own, const TraceHit& other, const glm::dvec3& go,
+                           const glm::dvec3& gd, int towards) -> std::optional<Prediction> {
+        const std::optional<double> e = crossing_on_plane(o0, d0, o1, d1, face, [&](const glm::dvec3& w) {
+            return distance(other, w);
+        });
+        if (!e) return std::nullopt;
+        Prediction r{*e, 0};
+        const auto on_face = [&](double s) {
+            const glm::dvec3 o = glm::mix(o0, o1, s), d = glm::mix(d0, d1, s);
+            return o + glm::dot(face.normal, face.point - o) / glm::dot(face.normal, d) * d;
+        };
+        const double tolerance = glm::distance(on_face(0), on_face(1)) / 256;
+        const double behind = glm::dot(face.normal, face.point - go) / glm::dot(face.normal, gd);
+        if (std::abs(distance(own, on_face(*e))) <= tolerance && behind > 0 && other.t > behind) r.confirm = towards;
+        return r;
+    };
+    for (const auto& [face, own, other, go, gd, towards] :
+         {std::tuple{p_plane, p.hit, q.hit, o1, d1, 1}, std::tuple{q_plane, q.hit, p.hit, o0, d0, -1}}) {
+        const std::optional<Prediction> e = meets(face, own, other, go, gd, towards);
+        if (e && e->confirm) return e;
+        if (e && !first) first = e;
+    }
+    if (first) return first;
+    if (const std::optional<double> e = predicted_crossing(o0, d0, o1, d1, p_plane, q_plane)) return Prediction{*e, 0};
+    return std::nullopt;
 }
 
 // Where the look changes along the side from corner (cx, cy) to the next
@@ -235,10 +280,21 @@ const SideProbe& Refinement::side(int cx, int cy, bool vertical, ThreadState& ts
     const double precision = std::ldexp(1.0, -steps_);
     // Between two surfaces (only the surface decides, unshaded) the
     // prediction's two samples bracket the edge to the precision.
+    // Where the prediction is exact (predicted()), one of them: the one
+    // towards the corner across from the face it came from.
     if (p.surface != q.surface && !sampler_.ghosts())
-        if (const std::optional<double> e = predicted(cx, cy, vertical, p, q); e && *e > lo && *e < hi)
-            for (const double m : {*e - precision / 2, *e + precision / 2})
-                if (m > lo && m < hi && !step(m)) break;
+        if (const std::optional<Prediction> e = predicted(cx, cy, vertical, p, q); e && e->at > lo && e->at < hi) {
+            const double before = e->at - precision / 2, past = e->at + precision / 2;
+            if (e->confirm != 0) {
+                const double m = e->confirm > 0 ? past : before;
+                const double l = lo, h = hi;
+                if (m > lo && m < hi && step(m) && (e->confirm > 0 ? hi == m : lo == m))
+                    lo = std::max(l, before), hi = std::min(h, past);
+            } else {
+                for (const double m : {before, past})
+                    if (m > lo && m < hi && !step(m)) break;
+            }
+        }
     // Bisection: halving a bracket of 1 or 1/2 lands on the precision exactly.
     while (s.clean && hi - lo > precision) step((lo + hi) / 2);
     s.at = (lo + hi) / 2;
