@@ -157,7 +157,11 @@ public:
 
     // Whether a sample (colour c, surface) looks like pixel (x, y)'s centre.
     bool looks_alike(int x, int y, const glm::dvec3& c, std::uint32_t surface, int threshold) const {
-        return alike(look(c, surface), looks_[index(x, y)], threshold);
+        return looks_alike(x, y, look(c, surface), threshold);
+    }
+    // The same for a sample's look (look()).
+    bool looks_alike(int x, int y, std::uint64_t l, int threshold) const {
+        return alike(l, looks_[index(x, y)], threshold);
     }
 
     // Whether two samples look alike.
@@ -170,6 +174,15 @@ public:
     std::uint64_t look(const glm::dvec3& c, std::uint32_t surface) const {
         return std::uint64_t(surface) << 32 | std::uint32_t(srgb_byte(srgb_, float(c.x))) |
                std::uint32_t(srgb_byte(srgb_, float(c.y))) << 8 | std::uint32_t(srgb_byte(srgb_, float(c.z))) << 16;
+    }
+
+    // Whether two looks (look()) are alike: the same surface, and each
+    // display code within the threshold.
+    static bool alike(std::uint64_t a, std::uint64_t b, int threshold) {
+        if (a >> 32 != b >> 32) return false;  // another surface
+        for (int k = 0; k < 24; k += 8)
+            if (std::abs(int((a >> k) & 0xFF) - int((b >> k) & 0xFF)) > threshold) return false;
+        return true;
     }
 
 private:
@@ -186,12 +199,6 @@ private:
                 ++k;
             }
         return unlike;
-    }
-    static bool alike(std::uint64_t a, std::uint64_t b, int threshold) {
-        if (a >> 32 != b >> 32) return false;  // another surface
-        for (int k = 0; k < 24; k += 8)
-            if (std::abs(int((a >> k) & 0xFF) - int((b >> k) & 0xFF)) > threshold) return false;
-        return true;
     }
     static const std::array<double, 256>& decoded() {
         static const std::array<double, 256> table = [] {

@@ -55,13 +55,8 @@ private:
     // Pixel (x, y), whose neighbours in `unlike` (CentreSamples::unlike_neighbours) do not look like it.
     [[gnu::noinline]] void candidate(int x, int y, unsigned unlike, ThreadState& ts, bool traced) const;
     // What a probe looks like to the first pass: the ground as a miss.
-    bool alike(const CornerProbe& a, const CornerProbe& b) const {
-        return centres_.alike(a.on_ground ? sampler_.miss() : a.color, a.surface,
-                              b.on_ground ? sampler_.miss() : b.color, b.surface, threshold_);
-    }
-    bool like_centre(int x, int y, const CornerProbe& p) const {
-        return centres_.looks_alike(x, y, p.on_ground ? sampler_.miss() : p.color, p.surface, threshold_);
-    }
+    bool alike(const CornerProbe& a, const CornerProbe& b) const { return CentreSamples::alike(a.look, b.look, threshold_); }
+    bool like_centre(int x, int y, const CornerProbe& p) const { return centres_.looks_alike(x, y, p.look, threshold_); }
     // A sample through (px, py) with what the first pass compares: its
     // look, surface and whether it saw the ground.
     CornerProbe probe_at(double px, double py, ThreadState& ts, bool traced) const {
@@ -71,6 +66,7 @@ private:
         p.color = sampler_.sample(px, py, ts, traced, &p.surface);
         p.on_ground = ts.on_ground;
         p.hit = ts.hit;
+        p.look = centres_.look(p.on_ground ? sampler_.miss() : p.color, p.surface);  // found once, compared often
         return p;
     }
     CornerProbe& corner(int cx, int cy, ThreadState& ts, bool traced) const;
