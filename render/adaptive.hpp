@@ -9,8 +9,9 @@
 // neighbours; if they all look like its centre it keeps the centre (if
 // that was all 4 corners, it is their mean with the centre); else it
 // probes all 4; if they fall into
-// two runs round the pixel, one straight edge crosses it, located on its
-// sides (edge_coverage.hpp); else it gets the uniform pattern of
+// two runs round the pixel (by look, or by surface where three looks are
+// two surfaces, one of them shaded linearly), one straight edge crosses
+// it, located on its sides (edge_coverage.hpp); else it gets the uniform pattern of
 // RenderOptions::aa_samples (the pixel `--spp 16` gives), unless its
 // shading changes linearly on one surface (9 samples; adaptive_aa.cpp). A
 // side sample between two surfaces asks only which one it hits. The decision

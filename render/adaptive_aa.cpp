@@ -247,8 +247,9 @@ std::optional<Refinement::Prediction> Refinement::predicted(int cx, int cy, bool
 
 // Where the look changes along the side from corner (cx, cy) to the next
 // one right (or down), to 1/2^steps of the side: between two surfaces
-// predicted and confirmed by a sample either side of the prediction, else
-// (or where one disagrees) bisection.
+// predicted and confirmed by a sample either side of the prediction (one,
+// where it is exact: predicted()), else (or where one disagrees)
+// bisection.
 const SideProbe& Refinement::side(int cx, int cy, bool vertical, ThreadState& ts, bool traced) const {
     SideProbe& s = probes().side(cx, cy, vertical);
     if (s.traced) return s;
