@@ -9,8 +9,9 @@
 // neighbours; if they all look like its centre it keeps the centre (if
 // that was all 4 corners, it is their mean with the centre); else it
 // probes all 4; if they fall into
-// two runs round the pixel, one straight edge crosses it, located on its
-// sides (edge_coverage.hpp); else it gets the uniform pattern of
+// two runs round the pixel (by look, or by surface where three looks are
+// two surfaces, one of them shaded linearly), one straight edge crosses
+// it, located on its sides (edge_coverage.hpp); else it gets the uniform pattern of
 // RenderOptions::aa_samples (the pixel `--spp 16` gives), unless its
 // shading changes linearly on one surface (9 samples; adaptive_aa.cpp). A
 // side sample between two surfaces asks only which one it hits. The decision
@@ -157,7 +158,11 @@ public:
 
     // Whether a sample (colour c, surface) looks like pixel (x, y)'s centre.
     bool looks_alike(int x, int y, const glm::dvec3& c, std::uint32_t surface, int threshold) const {
-        return alike(look(c, surface), looks_[index(x, y)], threshold);
+        return looks_alike(x, y, look(c, surface), threshold);
+    }
+    // The same for a sample's look (look()).
+    bool looks_alike(int x, int y, std::uint64_t l, int threshold) const {
+        return alike(l, looks_[index(x, y)], threshold);
     }
 
     // Whether two samples look alike.
@@ -170,6 +175,15 @@ public:
     std::uint64_t look(const glm::dvec3& c, std::uint32_t surface) const {
         return std::uint64_t(surface) << 32 | std::uint32_t(srgb_byte(srgb_, float(c.x))) |
                std::uint32_t(srgb_byte(srgb_, float(c.y))) << 8 | std::uint32_t(srgb_byte(srgb_, float(c.z))) << 16;
+    }
+
+    // Whether two looks (look()) are alike: the same surface, and each
+    // display code within the threshold.
+    static bool alike(std::uint64_t a, std::uint64_t b, int threshold) {
+        if (a >> 32 != b >> 32) return false;  // another surface
+        for (int k = 0; k < 24; k += 8)
+            if (std::abs(int((a >> k) & 0xFF) - int((b >> k) & 0xFF)) > threshold) return false;
+        return true;
     }
 
 private:
@@ -186,12 +200,6 @@ private:
                 ++k;
             }
         return unlike;
-    }
-    static bool alike(std::uint64_t a, std::uint64_t b, int threshold) {
-        if (a >> 32 != b >> 32) return false;  // another surface
-        for (int k = 0; k < 24; k += 8)
-            if (std::abs(int((a >> k) & 0xFF) - int((b >> k) & 0xFF)) > threshold) return false;
-        return true;
     }
     static const std::array<double, 256>& decoded() {
         static const std::array<double, 256> table = [] {

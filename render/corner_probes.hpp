@@ -22,7 +22,8 @@ struct CornerProbe {
     glm::dvec3 color;
     std::uint32_t surface = 0;
     bool on_ground = false;  // ThreadState::on_ground after the sample
-    bool traced = false;     // `color`, `surface` and `on_ground` hold the sample's
+    bool traced = false;     // `color`, `surface`, `on_ground` and `look` hold the sample's
+    std::uint64_t look = 0;  // what it looks like to the first pass (CentreSamples::look; the ground as a miss)
     double cover = 0;        // what the sample added to the pixel's coverage (--alpha)
     TraceHit hit{-1, {}};    // the solid surface it hit (ThreadState::hit; t < 0: none)
 };

@@ -6,8 +6,9 @@
 // after it beyond: the crossing is where the two planes' depths are equal.
 // Over one pixel both surfaces are nearly their tangent planes, so that
 // predicts the edge; the caller confirms it with a sample on either side
-// and falls back to bisection where one disagrees (an occluding edge, where
-// the depth jumps, or a surface that bends within the pixel).
+// (one, where the prediction is exact) and falls back to bisection where
+// one disagrees (an occluding edge, where the depth jumps, or a surface
+// that bends within the pixel).
 #pragma once
 #include <cmath>
 #include <optional>
