@@ -18,7 +18,10 @@ namespace {
 
 // The side planes of the hull of four corner rays: unit normals pointing
 // inside, each through the origin of its first ray. Planes are found in
-// order round the quad; `count` stops at the first degenerate one.
+// order round the quad; one degenerate plane (two corner rays the same, as
+// at a far origin or a vanishing field of view) leaves none: the plane
+// before it takes its side from a corner that then lies in that plane, a
+// sign of round-off, so no plane of such a quad can be trusted.
 struct HullPlanes {
     glm::dvec3 n[4];
     int count = 0;
@@ -32,7 +35,7 @@ HullPlanes hull_planes(const glm::dvec3 (&o)[4], const glm::dvec3 (&d)[4]) {
         // directions; orthographic: the direction and the step between origins).
         glm::dvec3 n = glm::cross(d[i], o[j] + d[j] - o[i]);
         const double len = glm::length(n);
-        if (!(len > 0)) break;
+        if (!(len > 0)) return HullPlanes{};
         n /= len;
         if (glm::dot(n, o[k] + d[k] - o[i]) < 0) n = -n;  // the tile's inside is positive
         h.n[h.count++] = n;

@@ -78,6 +78,30 @@ TEST_CASE("tile culling never drops a ray that hits", "[render][cull]") {
     CHECK(kept > 500);
 }
 
+// A quad with two corner rays the same (a far origin or a vanishing field
+// of view rounds them together) has a degenerate side plane; the plane
+// before it takes its side from a corner lying in it, so its sign is
+// round-off. Here it comes out facing away from the quad: a sphere inside
+// the quad's rays must still be traced (culling it would drop real hits).
+TEST_CASE("tile culling keeps a quad with two corner rays the same", "[render][cull]") {
+    const glm::dvec3 eye(0, 0, 0), c(0, 5, -0.03);
+    const glm::dvec3 o[4] = {eye, eye, eye, eye};
+    const glm::dvec3 d[4] = {{-0.12, 1, -0.12}, {0.12, 1, -0.12}, {0.12, 1, -0.12}, {0, 1, 0.12}};
+    for (const bool ball : {false, true}) {
+        const csg::Scene s =
+            ball ? make_scene(leaf(sphere(0.25, translate(c.x, c.y, c.z))))
+                 : make_scene(op(Op::Union, {leaf(sphere(0.25, translate(c.x, c.y, c.z))),
+                                             leaf(box({-0.02, 4.9, -0.05}, {0.02, 5.1, -0.01}))}));
+        const render::CsgTracer tracer(s, false);
+        render::TraceScratch scratch;
+        std::mt19937_64 rng(3);
+        INFO((ball ? "one ball" : "a ball and a box"));
+        REQUIRE(hits_in_quad(tracer, scratch, o, d, 40, rng) > 0);
+        CHECK_FALSE(tracer.misses_all(o, d)); CHECK_FALSE(render::tile_misses_box(csg::Aabb{{-0.25, 4.75, -0.28}, {0.25, 5.25, 0.22}}, o, d));
+        CHECK_FALSE(render::tile_misses_box(csg::Aabb{{-0.1, 4.9, -0.1}, {0.1, 5.1, 0.05}}, o, d));
+    }
+}
+
 namespace {
 
 // Solids whose units have balls (unit_balls.hpp), moved by `at` and scaled
