@@ -85,6 +85,10 @@ struct CsgTracer::Impl {
     // that lies wholly inside it when the leaf is convex, else kNone: a
     // shadow ray leaving its surface outwards skips that unit (Departure).
     std::vector<std::uint32_t> convex_unit;
+    // Per leaf: when it is a convex subtrahend (sphere, box, cylinder) of a
+    // difference that holds a unit, that unit's root node and the leaf's
+    // node (Departure::hollow, into), else kNone.
+    std::vector<std::uint32_t> hollow_unit, hollow_node;
     std::vector<RTCScene> mesh_bvhs;        // per csg::Mesh used by a leaf (object space)
     std::vector<csg::Aabb> mesh_boxes;        // object-space bounds of each mesh
     std::vector<csg::PrismGrid> prism_grids;  // per Scene::polygons entry used by a prism (prism_spans.cpp)

@@ -337,6 +337,7 @@ struct TopContext {
     bool gather = false;      // inside_spans: keep every unit's spans on the stack
     double gather_eps = 0;    // inside_spans: the largest degenerate rule met
     std::uint32_t skip = csg::kNone;  // occluded: the unit the ray departs from (Departure)
+    std::uint32_t hollow = csg::kNone, into = csg::kNone;  // occluded: Departure::hollow, into
     // intersect: the units the ball chords left open (ball_chords.hpp),
     // evaluated after the traversal in the order of their lower bounds, and
     // `ub`, the smallest upper bound the chords gave (never below the answer).

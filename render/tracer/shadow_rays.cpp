@@ -21,18 +21,35 @@ bool convex_leaf(csg::PrimKind kind) {
            kind == csg::PrimKind::Plane;
 }
 
+// Solids with one span per line whatever the window (a plane's is a
+// half-line): a subtrahend that a ray can leave only once.
+bool one_span_leaf(csg::PrimKind kind) {
+    return kind == csg::PrimKind::Sphere || kind == csg::PrimKind::Box || kind == csg::PrimKind::Cylinder;
+}
+
 // Marks the leaves under `node` that hold all of it: the node itself if a
 // leaf, a difference's minuend, every operand of an intersection (a union's
-// operands each hold only a part of it).
-void mark_holders(const csg::Scene& scene, std::uint32_t node, std::uint32_t unit, std::vector<std::uint32_t>& out) {
+// operands each hold only a part of it). The one-span leaves those
+// differences subtract get the unit's root node in `hollow_unit` (and their
+// own node in `hollow_node`): inside them the unit has nothing.
+void mark_holders(const csg::Scene& scene, std::uint32_t node, std::uint32_t unit, std::uint32_t root,
+                  CsgTracer::Impl& impl) {
     const csg::Node& n = scene.nodes[node];
     switch (n.op) {
         case csg::Op::Leaf:
-            if (convex_leaf(scene.leaves[n.first].kind)) out[n.first] = unit;
+            if (convex_leaf(scene.leaves[n.first].kind)) impl.convex_unit[n.first] = unit;
             return;
-        case csg::Op::Difference: return mark_holders(scene, scene.children[n.first], unit, out);
+        case csg::Op::Difference:
+            for (std::uint32_t k = 1; k < n.count; ++k) {
+                const std::uint32_t c = scene.children[n.first + k];
+                const csg::Node& sub = scene.nodes[c];
+                if (sub.op != csg::Op::Leaf || !one_span_leaf(scene.leaves[sub.first].kind)) continue;
+                impl.hollow_unit[sub.first] = root;
+                impl.hollow_node[sub.first] = c;
+            }
+            return mark_holders(scene, scene.children[n.first], unit, root, impl);
         case csg::Op::Intersection:
-            for (std::uint32_t k = 0; k < n.count; ++k) mark_holders(scene, scene.children[n.first + k], unit, out);
+            for (std::uint32_t k = 0; k < n.count; ++k) mark_holders(scene, scene.children[n.first + k], unit, root, impl);
             return;
         case csg::Op::Union: return;
     }
@@ -50,11 +67,22 @@ bool unit_blocks(TopContext& ctx, std::uint32_t item, std::uint32_t node) {
     TraceScratch& s = *ctx.state->scratch;
     const std::uint32_t base = s.stack.size();
     ctx.state->enter_unit(node);
-    const std::uint32_t n = ctx.state->spans(node, ctx.tnear, ctx.best, Need::Any);
+    // Departure into a subtrahend: the ray starts inside the leaf `into`
+    // (its span begins at or before tnear), where this unit has nothing;
+    // every piece the full evaluation finds lies outside that span (it
+    // subtracts the same numbers: a one-span leaf's span does not depend
+    // on the window), so the window may start where the ray leaves it.
+    double a = ctx.tnear;
+    if (node == ctx.hollow) {
+        if (ctx.state->spans(ctx.into, a, ctx.best, Need::All) == 1 && s.stack.at(base)->t0 <= a)
+            a = std::max(a, s.stack.at(base)->t1);
+        s.stack.resize(base);
+    }
+    const std::uint32_t n = ctx.state->spans(node, a, ctx.best, Need::Any);
     bool blocks = false;
     for (std::uint32_t i = 0; i < n && !blocks; ++i) {
         const Span& sp = *s.stack.at(base + i);
-        blocks = std::min(sp.t1, ctx.best) - std::max(sp.t0, ctx.tnear) > ctx.state->eps;
+        blocks = std::min(sp.t1, ctx.best) - std::max(sp.t0, a) > ctx.state->eps;
     }
     s.stack.resize(base);
     return blocks;
@@ -132,21 +160,26 @@ void top_ball_occluded_filter(const RTCFilterFunctionNArguments* args) {
 
 void CsgTracer::Impl::find_convex_units() {
     convex_unit.assign(scene.leaves.size(), csg::kNone);
+    hollow_unit.assign(scene.leaves.size(), csg::kNone);
+    hollow_node.assign(scene.leaves.size(), csg::kNone);
     // A leaf referenced by more than one node holds none: its hit does not
     // say which unit it came from.
     std::vector<std::uint32_t> refs(scene.leaves.size(), 0);
     for (const csg::Node& n : scene.nodes)
         if (n.op == csg::Op::Leaf) ++refs[n.first];
     const std::uint32_t nitems = std::uint32_t(top.items.size());
-    for (std::uint32_t i = 0; i < nitems + top.always.size(); ++i)
-        mark_holders(scene, i < nitems ? top.items[i] : top.always[i - nitems], i, convex_unit);
+    for (std::uint32_t i = 0; i < nitems + top.always.size(); ++i) {
+        const std::uint32_t root = i < nitems ? top.items[i] : top.always[i - nitems];
+        mark_holders(scene, root, i, root, *this);
+    }
     for (std::size_t leaf = 0; leaf < refs.size(); ++leaf)
-        if (refs[leaf] != 1) convex_unit[leaf] = csg::kNone;
+        if (refs[leaf] != 1) convex_unit[leaf] = hollow_unit[leaf] = hollow_node[leaf] = csg::kNone;
 }
 
 Departure CsgTracer::departure(const TraceHit& hit, const glm::dvec3& outward) const {
-    if (hit.surface.flip) return {};
-    return {impl_->convex_unit[hit.surface.leaf], outward};
+    const std::uint32_t leaf = hit.surface.leaf;
+    if (hit.surface.flip) return {csg::kNone, outward, impl_->hollow_unit[leaf], impl_->hollow_node[leaf]};
+    return {impl_->convex_unit[leaf], outward};
 }
 
 bool CsgTracer::occluded(const TraceRay& ray, TraceScratch& scratch, const Departure* from) const {
@@ -162,6 +195,10 @@ bool CsgTracer::occluded(const TraceRay& ray, TraceScratch& scratch, const Depar
     if (!make_state(st, impl_.get(), ray, scratch)) return false;
     TopContext ctx(st, ray);
     if (departs) ctx.skip = from->unit;
+    if (from) {
+        ctx.hollow = from->hollow;
+        ctx.into = from->into;
+    }
     for (std::uint32_t i = 0; i < impl_->top.always.size(); ++i)
         if (nitems + i != ctx.skip && unit_blocks(ctx, csg::kNone, impl_->top.always[i])) return true;
     if (!impl_->top.bvh) {
