@@ -155,18 +155,11 @@ int BoxGrid::candidates(const glm::dvec3& o, const glm::dvec3& d, const glm::dve
     return n;
 }
 
-// Every cell within r + σ/2 (and the round-off of x) of x: a box within r
-// of x per axis overlaps that range, so one of its cells is among them.
-int BoxGrid::near(const glm::dvec3& x, double r, std::uint32_t* out, int cap, const std::uint32_t*& list) const {
-    const double grow = r + 0.5 * slack + 1e-12 * sum_abs(x);
-    const int k0[3] = {cell_of(0, x[0] - grow), cell_of(1, x[1] - grow), cell_of(2, x[2] - grow)};
-    const int k1[3] = {cell_of(0, x[0] + grow), cell_of(1, x[1] + grow), cell_of(2, x[2] + grow)};
+// near(): every cell within r + σ/2 (and the round-off of x) of x: a box
+// within r of x per axis overlaps that range, so one of its cells is among
+// them. Here the ranges k0..k1 that span more than one cell.
+int BoxGrid::near_cells(const int* k0, const int* k1, std::uint32_t* out, int cap, const std::uint32_t*& list) const {
     const int n0 = k1[0] - k0[0] + 1, n1 = k1[1] - k0[1] + 1, n2 = k1[2] - k0[2] + 1;
-    if ((n0 | n1 | n2) == 1) {  // most queries
-        const std::size_t c = std::size_t(k0[0]) + std::size_t(res[0]) * (std::size_t(k0[1]) + std::size_t(res[1]) * std::size_t(k0[2]));
-        list = boxes.data() + first[c];
-        return int(first[c + 1] - first[c]);
-    }
     if (n0 * n1 > kMaxCells || n0 * n1 * n2 > kMaxCells) return -1;
     list = out;
     int n = 0;

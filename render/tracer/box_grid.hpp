@@ -6,6 +6,7 @@
 // read only after the build; a query allocates nothing.
 #pragma once
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -40,7 +41,22 @@ struct BoxGrid {
     // superset of the boxes within distance r of it. `list` is set to
     // where they are: a cell's own list when one cell holds them (most
     // queries, nothing copied), else `out`.
-    int near(const glm::dvec3& x, double r, std::uint32_t* out, int cap, const std::uint32_t*& list) const;
+    // Inline: the one-cell answer (most queries) is a few loads; a call
+    // and its frame were a large share of it (holes_40).
+    int near(const glm::dvec3& x, double r, std::uint32_t* out, int cap, const std::uint32_t*& list) const {
+        const double grow = r + 0.5 * slack + 1e-12 * (std::abs(x.x) + std::abs(x.y) + std::abs(x.z));
+        const int k0[3] = {cell_of(0, x[0] - grow), cell_of(1, x[1] - grow), cell_of(2, x[2] - grow)};
+        const int k1[3] = {cell_of(0, x[0] + grow), cell_of(1, x[1] + grow), cell_of(2, x[2] + grow)};
+        if (((k1[0] - k0[0]) | (k1[1] - k0[1]) | (k1[2] - k0[2])) == 0) {
+            const std::size_t c =
+                std::size_t(k0[0]) + std::size_t(res[0]) * (std::size_t(k0[1]) + std::size_t(res[1]) * std::size_t(k0[2]));
+            list = boxes.data() + first[c];
+            return int(first[c + 1] - first[c]);
+        }
+        return near_cells(k0, k1, out, cap, list);
+    }
+    // near() over the cells k0..k1 (more than one).
+    int near_cells(const int* k0, const int* k1, std::uint32_t* out, int cap, const std::uint32_t*& list) const;
     // The cell index of x along axis i, clamped to the grid: monotone in x,
     // so overlapping intervals map to overlapping index ranges. (Truncation
     // is the floor here, x - lo being >= 0.)

@@ -96,10 +96,10 @@ struct CsgTracer::Impl {
     // that lies wholly inside it when the leaf is convex, else kNone: a
     // shadow ray leaving its surface outwards skips that unit (Departure).
     std::vector<std::uint32_t> convex_unit;
-    // Per leaf: the unit whose top node is a leaf minus leaves (leaf_minus)
-    // with this leaf, convex, as one of its subtrahends, else kNone: a
-    // shadow ray leaving its cut face starts inside it (Departure::hollow_unit).
-    std::vector<std::uint32_t> hollow_unit;
+    // Per leaf: when it is a convex subtrahend (sphere, box, cylinder) of a
+    // difference that holds a unit, that unit's root node and the leaf's
+    // node (Departure::hollow, into), else kNone.
+    std::vector<std::uint32_t> hollow_unit, hollow_node;
     // Whether any query goes through an Embree BVH of units or children
     // (the top one, a node's): else no ray needs its float copy (make_state).
     bool float_rays = true;

@@ -113,30 +113,35 @@ std::uint32_t RayState::first_entry_by_points(const Accel& subtrahends, std::uin
     // without solving its surface again.
     Span kept[kMaxNear];
     bool keep[kMaxNear] = {};
+    int r = 0;
+    std::uint32_t rbase = sbase;
+    bool same = false;  // this window gathers what the last one did: its pieces stand
     for (bool first = true;;) {
-        st.resize(sbase);
-        if (all)
-            collect(subtrahends, c - 2 * eps, end);
-        else
-            for (int k = 0; k < nnear; ++k) {
-                if (keep[k]) {
-                    st.push(kept[k]);
-                    continue;
+        if (!same) {
+            st.resize(sbase);
+            if (all)
+                collect(subtrahends, c - 2 * eps, end);
+            else
+                for (int k = 0; k < nnear; ++k) {
+                    if (keep[k]) {
+                        st.push(kept[k]);
+                        continue;
+                    }
+                    const std::uint32_t at = st.size();
+                    if (spans(near[k], c - 2 * eps, end, Need::All) == 1 && first && one_span_leaf(impl->scene, near[k])) {
+                        kept[k] = *st.at(at);
+                        keep[k] = true;
+                    }
                 }
-                const std::uint32_t at = st.size();
-                if (spans(near[k], c - 2 * eps, end, Need::All) == 1 && first && one_span_leaf(impl->scene, near[k])) {
-                    kept[k] = *st.at(at);
-                    keep[k] = true;
-                }
-            }
-        int r = 0;
-        const std::uint32_t rbase = subtract_gathered(base + i, 1, sbase, r);
+            rbase = subtract_gathered(base + i, 1, sbase, r);
+        }
         double claimed = end;  // where the gathered spans say coverage from c ends
         for (std::uint32_t k = sbase; k < rbase; ++k) claimed = std::max(claimed, st.at(k)->t1);
         if (r > 0 && (st.at(rbase)->t0 == c || st.at(rbase)->t0 < end - eps)) {
             const Span piece = *st.at(rbase);
             if (!all && !clear_of_others(subtrahends, near, nnear, o + piece.t0 * d, 2 * eps * len)) {
                 all = true;  // the same window with every subtrahend
+                same = false;
                 continue;
             }
             st.resize(sbase);
@@ -151,8 +156,13 @@ std::uint32_t RayState::first_entry_by_points(const Accel& subtrahends, std::uin
         }
         if (!all && !first) {  // the next window needs every subtrahend's claimed exit
             all = true;
+            same = false;
             continue;
         }
+        // Every near subtrahend kept (the second window, near ones only):
+        // the same spans from the same minuend span, so the same union and
+        // pieces; only the window's end, which decides trust, moves.
+        same = !all && std::all_of(keep, keep + nnear, [](bool k) { return k; });
         first = false;
         end = std::min(stop, std::max(claimed + 2 * eps, c + 2 * (end - c)));
     }

@@ -340,11 +340,7 @@ struct TopContext {
     bool gather = false;      // inside_spans: keep every unit's spans on the stack
     double gather_eps = 0;    // inside_spans: the largest degenerate rule met
     std::uint32_t skip = csg::kNone;  // occluded: the unit the ray departs from (Departure)
-    // occluded: the unit whose subtrahend the ray starts inside
-    // (Departure::hollow_unit), evaluated from hollow_tnear on.
-    std::uint32_t hollow = csg::kNone;
-    double hollow_tnear = 0;
-    double window_start(std::uint32_t item) const { return item == hollow ? hollow_tnear : tnear; }
+    std::uint32_t hollow = csg::kNone, into = csg::kNone;  // occluded: Departure::hollow, into
     // intersect: the units the ball chords left open (ball_chords.hpp),
     // evaluated after the traversal in the order of their lower bounds, and
     // `ub`, the smallest upper bound the chords gave (never below the answer).

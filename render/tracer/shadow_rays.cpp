@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <limits>
 
-#include "render/tracer/analytic_spans.hpp"
 #include "render/tracer/ball_chords.hpp"
 
 namespace kerf::render {
@@ -22,18 +21,35 @@ bool convex_leaf(csg::PrimKind kind) {
            kind == csg::PrimKind::Plane;
 }
 
+// Solids with one span per line whatever the window (a plane's is a
+// half-line): a subtrahend that a ray can leave only once.
+bool one_span_leaf(csg::PrimKind kind) {
+    return kind == csg::PrimKind::Sphere || kind == csg::PrimKind::Box || kind == csg::PrimKind::Cylinder;
+}
+
 // Marks the leaves under `node` that hold all of it: the node itself if a
 // leaf, a difference's minuend, every operand of an intersection (a union's
-// operands each hold only a part of it).
-void mark_holders(const csg::Scene& scene, std::uint32_t node, std::uint32_t unit, std::vector<std::uint32_t>& out) {
+// operands each hold only a part of it). The one-span leaves those
+// differences subtract get the unit's root node in `hollow_unit` (and their
+// own node in `hollow_node`): inside them the unit has nothing.
+void mark_holders(const csg::Scene& scene, std::uint32_t node, std::uint32_t unit, std::uint32_t root,
+                  CsgTracer::Impl& impl) {
     const csg::Node& n = scene.nodes[node];
     switch (n.op) {
         case csg::Op::Leaf:
-            if (convex_leaf(scene.leaves[n.first].kind)) out[n.first] = unit;
+            if (convex_leaf(scene.leaves[n.first].kind)) impl.convex_unit[n.first] = unit;
             return;
-        case csg::Op::Difference: return mark_holders(scene, scene.children[n.first], unit, out);
+        case csg::Op::Difference:
+            for (std::uint32_t k = 1; k < n.count; ++k) {
+                const std::uint32_t c = scene.children[n.first + k];
+                const csg::Node& sub = scene.nodes[c];
+                if (sub.op != csg::Op::Leaf || !one_span_leaf(scene.leaves[sub.first].kind)) continue;
+                impl.hollow_unit[sub.first] = root;
+                impl.hollow_node[sub.first] = c;
+            }
+            return mark_holders(scene, scene.children[n.first], unit, root, impl);
         case csg::Op::Intersection:
-            for (std::uint32_t k = 0; k < n.count; ++k) mark_holders(scene, scene.children[n.first + k], unit, out);
+            for (std::uint32_t k = 0; k < n.count; ++k) mark_holders(scene, scene.children[n.first + k], unit, root, impl);
             return;
         case csg::Op::Union: return;
     }
@@ -45,19 +61,28 @@ void mark_holders(const csg::Scene& scene, std::uint32_t node, std::uint32_t uni
 // it (CsgTracer::surface_offset), provably stays outside the convex leaf.
 constexpr double kDepartureCos = 1e-6;
 
-// `item`: the unit's index in the top BVH (its ball), or kNone; `index`:
-// its index among the units (items, then the unbounded ones), for Hollow.
-bool unit_blocks(TopContext& ctx, std::uint32_t item, std::uint32_t node, std::uint32_t index) {
-    const double tnear = ctx.window_start(index);
-    if (unit_ball_misses(*ctx.state, item, tnear, ctx.best)) return false;
+// `item`: the unit's index in the top BVH (its ball), or kNone.
+bool unit_blocks(TopContext& ctx, std::uint32_t item, std::uint32_t node) {
+    if (unit_ball_misses(*ctx.state, item, ctx.tnear, ctx.best)) return false;
     TraceScratch& s = *ctx.state->scratch;
     const std::uint32_t base = s.stack.size();
     ctx.state->enter_unit(node);
-    const std::uint32_t n = ctx.state->spans(node, tnear, ctx.best, Need::Any);
+    // Departure into a subtrahend: the ray starts inside the leaf `into`
+    // (its span begins at or before tnear), where this unit has nothing;
+    // every piece the full evaluation finds lies outside that span (it
+    // subtracts the same numbers: a one-span leaf's span does not depend
+    // on the window), so the window may start where the ray leaves it.
+    double a = ctx.tnear;
+    if (node == ctx.hollow) {
+        if (ctx.state->spans(ctx.into, a, ctx.best, Need::All) == 1 && s.stack.at(base)->t0 <= a)
+            a = std::max(a, s.stack.at(base)->t1);
+        s.stack.resize(base);
+    }
+    const std::uint32_t n = ctx.state->spans(node, a, ctx.best, Need::Any);
     bool blocks = false;
     for (std::uint32_t i = 0; i < n && !blocks; ++i) {
         const Span& sp = *s.stack.at(base + i);
-        blocks = std::min(sp.t1, ctx.best) - std::max(sp.t0, tnear) > ctx.state->eps;
+        blocks = std::min(sp.t1, ctx.best) - std::max(sp.t0, a) > ctx.state->eps;
     }
     s.stack.resize(base);
     return blocks;
@@ -77,7 +102,6 @@ bool unit_blocks(TopContext& ctx, std::uint32_t item, std::uint32_t node, std::u
 // (ball_chords.hpp): 0 no span in the window, 1 a span longer than the
 // degenerate rule in it, -1 not proven (evaluate it).
 [[gnu::always_inline]] inline int blocks_by_chords(TopContext& ctx, std::uint32_t item, std::uint32_t node) {
-    if (item == ctx.hollow) return -1;  // (its window starts later: evaluated)
     ball_chords_detail::Centre m;
     double h2;
     if (!outer_chord_reaches(*ctx.state, item, ctx.tnear, ctx.best, m, h2)) return 0;
@@ -93,7 +117,7 @@ bool unit_blocks(TopContext& ctx, std::uint32_t item, std::uint32_t node, std::u
         by_chords = blocks_by_chords(ctx, item, node);
         if (by_chords == 0) return false;
     }
-    return by_chords == 1 || unit_blocks(ctx, item, node, item);
+    return by_chords == 1 || unit_blocks(ctx, item, node);
 }
 
 }  // namespace
@@ -136,62 +160,27 @@ void top_ball_occluded_filter(const RTCFilterFunctionNArguments* args) {
 
 void CsgTracer::Impl::find_convex_units() {
     convex_unit.assign(scene.leaves.size(), csg::kNone);
+    hollow_unit.assign(scene.leaves.size(), csg::kNone);
+    hollow_node.assign(scene.leaves.size(), csg::kNone);
     // A leaf referenced by more than one node holds none: its hit does not
     // say which unit it came from.
     std::vector<std::uint32_t> refs(scene.leaves.size(), 0);
     for (const csg::Node& n : scene.nodes)
         if (n.op == csg::Op::Leaf) ++refs[n.first];
     const std::uint32_t nitems = std::uint32_t(top.items.size());
-    for (std::uint32_t i = 0; i < nitems + top.always.size(); ++i)
-        mark_holders(scene, i < nitems ? top.items[i] : top.always[i - nitems], i, convex_unit);
-    for (std::size_t leaf = 0; leaf < refs.size(); ++leaf)
-        if (refs[leaf] != 1) convex_unit[leaf] = csg::kNone;
-    hollow_unit.assign(scene.leaves.size(), csg::kNone);
     for (std::uint32_t i = 0; i < nitems + top.always.size(); ++i) {
-        const std::uint32_t id = i < nitems ? top.items[i] : top.always[i - nitems];
-        const csg::Node& n = scene.nodes[id];
-        if (!leaf_minus[id] || n.op != csg::Op::Difference) continue;
-        for (std::uint32_t k = 1; k < n.count; ++k) {
-            const csg::Node& sub = scene.nodes[scene.children[n.first + k]];
-            if (refs[sub.first] == 1 && convex_leaf(scene.leaves[sub.first].kind) &&
-                scene.leaves[sub.first].kind != csg::PrimKind::Plane)
-                hollow_unit[sub.first] = i;
-        }
+        const std::uint32_t root = i < nitems ? top.items[i] : top.always[i - nitems];
+        mark_holders(scene, root, i, root, *this);
     }
+    for (std::size_t leaf = 0; leaf < refs.size(); ++leaf)
+        if (refs[leaf] != 1) convex_unit[leaf] = hollow_unit[leaf] = hollow_node[leaf] = csg::kNone;
 }
 
 Departure CsgTracer::departure(const TraceHit& hit, const glm::dvec3& outward) const {
-    if (hit.surface.flip) return {csg::kNone, outward, impl_->hollow_unit[hit.surface.leaf], hit.surface.leaf};
-    return {impl_->convex_unit[hit.surface.leaf], outward};
+    const std::uint32_t leaf = hit.surface.leaf;
+    if (hit.surface.flip) return {csg::kNone, outward, impl_->hollow_unit[leaf], impl_->hollow_node[leaf]};
+    return {impl_->convex_unit[leaf], outward};
 }
-
-namespace {
-
-// Hollow: a ray that leaves a cut face of a convex subtrahend leaf of a leaf
-// minus leaves, steeply into that leaf (as Departure), starts inside it:
-// the unit's pieces are the minuend's spans less the union of the
-// subtrahends' spans, and that union's span round the start ends at or
-// after the leaf's exit t1 — the very bits of the leaf's spans the unit's
-// evaluation finds (analytic_spans, any window). So no piece starts before
-// t1: the unit evaluated from t1 on has the same pieces in the window, each
-// overlapping it as much, and the same answer, while the stretch inside
-// the leaf (the bowl's hollow a shadow ray crosses) costs nothing.
-// Sets the unit's window start (kept at tnear when not proven); apart from
-// occluded(), whose other rays do not pay for its frame.
-[[gnu::noinline]] void set_hollow(TopContext& ctx, RayState& st, const Departure& from, const TraceRay& ray) {
-    if (!(ray.tnear >= 0 && glm::dot(from.outward, ray.d) > kDepartureCos * glm::length(ray.d))) return;
-    const Accel& top = st.impl->top;
-    st.enter_unit(from.hollow_unit < top.items.size() ? top.items[from.hollow_unit]
-                                                      : top.always[from.hollow_unit - top.items.size()]);
-    double start = ray.tnear;
-    analytic_spans(st, from.hollow_leaf, ray.tnear, ray.tnear, [&](const Span& s) {
-        if (s.t0 <= ray.tnear && s.t1 > start) start = s.t1;
-    });
-    ctx.hollow = from.hollow_unit;
-    ctx.hollow_tnear = start;
-}
-
-}  // namespace
 
 bool CsgTracer::occluded(const TraceRay& ray, TraceScratch& scratch, const Departure* from) const {
     // The unit the ray departs from, when it leaves steeply enough: it lies
@@ -206,12 +195,15 @@ bool CsgTracer::occluded(const TraceRay& ray, TraceScratch& scratch, const Depar
     if (!make_state(st, impl_.get(), ray, scratch)) return false;
     TopContext ctx(st, ray);
     if (departs) ctx.skip = from->unit;
-    if (from && from->hollow_unit != csg::kNone) set_hollow(ctx, st, *from, ray);
+    if (from) {
+        ctx.hollow = from->hollow;
+        ctx.into = from->into;
+    }
     for (std::uint32_t i = 0; i < impl_->top.always.size(); ++i)
-        if (nitems + i != ctx.skip && unit_blocks(ctx, csg::kNone, impl_->top.always[i], nitems + i)) return true;
+        if (nitems + i != ctx.skip && unit_blocks(ctx, csg::kNone, impl_->top.always[i])) return true;
     if (!impl_->top.bvh) {
         for (std::uint32_t i = 0; i < nitems; ++i)
-            if (i != ctx.skip && unit_blocks(ctx, i, impl_->top.items[i], i)) return true;
+            if (i != ctx.skip && unit_blocks(ctx, i, impl_->top.items[i])) return true;
         return false;
     }
     // Through the units' balls when they are Embree spheres and the segment

@@ -41,13 +41,15 @@ struct TraceHit {
 // that surface is a convex leaf holding its whole unit (CsgTracer::departure),
 // a ray leaving it outwards can never meet that unit again, so occluded()
 // skips the unit: one primitive test fewer per shadow ray of a lit point.
+// A subtrahend's face instead (a hole's wall): the ray starts in that
+// convex leaf, inside which its difference, and so the unit it holds, has
+// nothing; occluded() asks that unit only from where the ray leaves the
+// leaf (shadow_rays.cpp, "Departure into a subtrahend").
 struct Departure {
     std::uint32_t unit = csg::kNone;  // the unit to skip, or kNone
     glm::dvec3 outward{0.0};
-    // A cut face of a convex subtrahend leaf of a leaf-minus-leaves unit:
-    // the ray leaves into that leaf, and the unit has no span before the
-    // leaf's exit (shadow_rays.cpp, "Hollow"). kNone: not such a face.
-    std::uint32_t hollow_unit = csg::kNone, hollow_leaf = csg::kNone;
+    std::uint32_t hollow = csg::kNone;  // the root node of the unit the leaf cuts, or kNone
+    std::uint32_t into = csg::kNone;    // the subtrahend leaf's node
 };
 
 class CsgTracer {
@@ -75,7 +77,8 @@ public:
 
     // The Departure of a ray leaving `hit`'s surface along its normal
     // `outward` (unit kNone when the surface is not a convex leaf holding
-    // its unit, or is a subtrahend's flipped face).
+    // its unit, or is a subtrahend's flipped face; hollow set for a convex
+    // subtrahend's face).
     Departure departure(const TraceHit& hit, const glm::dvec3& outward) const;
 
     // How far along its normal a ray leaving the surface of `hit` at `p`

@@ -106,3 +106,86 @@ TEST_CASE("departure: shadow rays leaving a convex leaf that holds its unit skip
     CHECK(skipped > 2000);  // the departure is taken (the test exercises it)
     CHECK(blocked > 500);   // and the other units still cast shadows
 }
+
+namespace {
+
+// Units far apart (no two overlap): a plate minus a 5 × 5 grid of
+// cylinders, a tilted cylinder, a ball and a box (a big difference: its own
+// BVH and grid); a ball minus two crossing cylinders (a small difference);
+// a block with a hole and a ball in that hole, under a union inside an
+// intersection (the union's operands hold only a part of the unit: the
+// ball is inside the hole's cylinder, so its inside is not empty of it).
+Tree hollows(const glm::dmat4& w) {
+    std::vector<Tree> plate{leaf(box({-1, -1, -1}, {1, 1, 1}, w))};
+    for (int i = 0; i < 5; ++i)
+        for (int j = 0; j < 5; ++j)
+            plate.push_back(leaf(make_leaf(PrimKind::Cylinder, {0, 3, 0.15, 0.15},
+                                           w * translate(-1 + (i + 0.5) * 0.4, -1 + (j + 0.5) * 0.4, -1.5))));
+    plate.push_back(leaf(make_leaf(PrimKind::Cylinder, {-1.5, 1.5, 0.1, 0.1}, w * translate(0.05, 0.1, 1) * rotate_deg(35, {1, 0.3, 0}))));
+    plate.push_back(leaf(sphere(0.25, w * translate(0.5, -0.45, 1.05))));
+    plate.push_back(leaf(box({-0.3, -0.3, -0.3}, {0.3, 0.3, 0.3}, w * translate(-1, 1, 0) * rotate_deg(30, {0, 0, 1}))));
+    const glm::dmat4 w2 = w * translate(4, 0, 0);
+    Tree ball = op(Op::Difference, {leaf(sphere(1, w2)), leaf(make_leaf(PrimKind::Cylinder, {-2, 2, 0.4, 0.4}, w2)),
+                                    leaf(make_leaf(PrimKind::Cylinder, {-2, 2, 0.3, 0.3}, w2 * rotate_deg(90, {1, 0, 0})))});
+    const glm::dmat4 w3 = w * translate(0, 4, 0);
+    Tree block = op(Op::Intersection,
+                    {leaf(box({-1.5, -1.5, -1.5}, {1.5, 1.5, 1.5}, w3)),
+                     op(Op::Union, {op(Op::Difference, {leaf(box({-1, -1, -1}, {1, 1, 1}, w3)),
+                                                        leaf(make_leaf(PrimKind::Cylinder, {-2, 2, 0.6, 0.6}, w3))}),
+                                    leaf(sphere(0.3, w3 * translate(0, 0, 0.2)))})});
+    return op(Op::Union, {op(Op::Difference, plate), ball, block});
+}
+
+}  // namespace
+
+TEST_CASE("departure into a subtrahend: shadow rays from a hole's wall start where they leave the hole",
+          "[render][oracle]") {
+    // The answer with the departure must be the full evaluation's; and
+    // point membership (no ray code) finds no point of the solid on the
+    // ray while it is still inside the hole's leaf.
+    const bool use_float = GENERATE(false, true);
+    for (const double k : {1e-3, 1.0, 1e4}) {
+        const glm::dvec3 c(100 * k, -60 * k, 30 * k);
+        const csg::Scene s = make_scene(hollows(translate(c.x, c.y, c.z) * scale(k, k, k)));
+        const render::CsgTracer tracer(s, use_float);
+        render::TraceScratch scratch;
+        RandomCsg g(7);
+        int taken = 0, blocked = 0, unmarked = 0;
+        for (int i = 0; i < 4000; ++i) {
+            const glm::dvec3 aim = c + k * glm::dvec3(g.uni(-1.2, 5.2), g.uni(-1.2, 5.2), g.uni(-1.2, 1.2));
+            const glm::dvec3 o = aim + 12 * k * glm::normalize(glm::dvec3(g.uni(-1, 1), g.uni(-1, 1), g.uni(-0.3, 1)) + 1e-3);
+            const glm::dvec3 d = aim - o;
+            render::TraceHit hit;
+            if (!tracer.intersect(render::TraceRay{o, d, 0, kInf}, hit, scratch) || !hit.surface.flip) continue;
+            const glm::dvec3 p = o + hit.t * d;
+            const glm::dvec3 n = tracer.normal(hit, p);
+            if (glm::dot(n, d) > 0) continue;  // the shader turns n: no departure there
+            const render::Departure from = tracer.departure(hit, n);
+            if (from.hollow == csg::kNone) ++unmarked;
+            const glm::dvec3 origin = p + tracer.surface_offset(hit, p) * n;
+            const csg::Leaf& hole = s.leaves[hit.surface.leaf];
+            for (int j = 0; j < 6; ++j) {
+                glm::dvec3 l = glm::normalize(glm::dvec3(g.uni(-1, 1), g.uni(-1, 1), g.uni(-1, 1)) + 1e-3);
+                if (glm::dot(l, n) < 0) l = -l;
+                if (j % 2 == 1) l = glm::normalize(l - glm::dot(l, n) * n + std::pow(10.0, -g.uni(1, 9)) * n);
+                const double tfar = k * g.uni(0.05, 6);
+                const render::TraceRay ray{origin, l, 0, tfar};
+                const bool full = tracer.occluded(ray, scratch);
+                INFO("float " << use_float << " scale " << k << " ray " << i << " shadow " << j);
+                CHECK(tracer.occluded(ray, scratch, &from) == full);
+                blocked += full ? 1 : 0;
+                if (from.hollow == csg::kNone) continue;
+                ++taken;
+                for (int m = 1; m <= 200; ++m) {
+                    const glm::dvec3 x = origin + (tfar * m / 200) * l;
+                    if (!csg::contains(hole, hole.object_from_world.point(x))) break;
+                    CHECK_FALSE(csg::contains(s, x));
+                }
+            }
+        }
+        INFO(taken << " taken, " << blocked << " blocked, " << unmarked << " hits on unmarked subtrahends");
+        CHECK(taken > 1000);
+        CHECK(blocked > 300);
+        CHECK(unmarked > 20);  // the block's hole (under a union) is never taken
+    }
+}

@@ -282,3 +282,37 @@ TEST_CASE("difference with a subtrahend grid: a minuend chord shorter than the d
         }
     }
 }
+
+// Two overlapping holes A and B (x = ∓0.075, r = 0.1) in a plate with a
+// grid of small ones. A ray enters the plate's top inside A, δ outside B,
+// sloping towards B: it leaves A inside B, and its first entry is B's far
+// wall. For δ of a few degenerate rules, B is near the entry point but its
+// span starts past the first window (none there), so a later window must
+// gather it again; δ runs from far below the rule to far above it.
+TEST_CASE("difference with a subtrahend grid: a near subtrahend met only past the first window still cuts",
+          "[render][difference]") {
+    for (const double k : {1.0, 1e4}) {
+        const glm::dvec3 c(100 * k, -60 * k, 30 * k);
+        const glm::dmat4 w = translate(c.x, c.y, c.z) * scale(k, k, k);
+        std::vector<Tree> kids{leaf(box({-1, -1, -1}, {1, 1, 1}, w))};
+        for (int i = 0; i < 6; ++i)
+            for (int j = 0; j < 6; ++j)
+                kids.push_back(leaf(make_leaf(PrimKind::Cylinder, {0, 3, 0.05, 0.05},
+                                              w * translate(-1 + (i + 0.5) / 3, -1 + (j + 0.5) / 3, -1.5))));
+        for (const double x : {-0.075, 0.075})
+            kids.push_back(leaf(make_leaf(PrimKind::Cylinder, {0, 3, 0.1, 0.1}, w * translate(x, 0, -1.5))));
+        const csg::Scene s = make_scene(op(Op::Difference, kids));
+        const render::CsgTracer tracer(s, false);
+        render::TraceScratch scratch;
+        const glm::dvec3 d(0.3, 0, -1);
+        for (double delta = 1e-14; delta < 1e-5; delta *= std::sqrt(10.0)) {
+            const glm::dvec3 entry = c + k * glm::dvec3(-0.025 - delta, 0, 1);
+            const glm::dvec3 o = entry - 4 * k * d;
+            render::TraceHit hit;
+            const double t = tracer.intersect(render::TraceRay{o, d, 0, kInf}, hit, scratch) ? hit.t : kInf;
+            INFO("scale " << k << " delta " << delta << " entry " << t);
+            CHECK(t == Approx(k * (4 + (0.2 + delta) / 0.3)).epsilon(1e-9));
+            CHECK(is_first_entry(s, o, d, t, k));
+        }
+    }
+}
