@@ -77,7 +77,7 @@ FastPath RayState::any_piece_if_clear(const csg::Node& n, std::uint32_t base, st
         const Span& piece = *st.at(rbase + std::uint32_t(k));
         const double q0 = std::max(a, piece.t0), q1 = std::min(b, piece.t1);
         if (!(q1 - q0 > eps)) continue;
-        if (!(q1 - q0 > 2 * eps)) {
+        if (!probe_fits(q0, q1, eps)) {
             unsure = true;
             continue;
         }

@@ -180,7 +180,7 @@ FastPath RayState::any_by_points(const Accel& subtrahends, std::uint32_t base, s
                                  double a, double b) {
     SpanStack& st = scratch->stack;
     const double p0 = std::max(a, st.at(base + i)->t0), p1 = std::min(b, st.at(base + i)->t1);
-    if (!(p1 - p0 > 2 * eps)) return FastPath::Unknown;
+    if (!probe_fits(p0, p1, eps)) return FastPath::Unknown;
     const double margin = 2 * eps * len;
     std::uint32_t near[kMaxNear];
     int nnear = 0;
@@ -203,7 +203,7 @@ FastPath RayState::any_by_points(const Accel& subtrahends, std::uint32_t base, s
             if (q1 - q0 > eps) break;
         }
         if (k == r) return FastPath::None;
-        if (!(q1 - q0 > 2 * eps)) return FastPath::Unknown;
+        if (!probe_fits(q0, q1, eps)) return FastPath::Unknown;
         const double probe = 0.5 * (q0 + q1);
         const glm::dvec3 x = o + probe * d;
         // The subtrahends not clear of the probe, not yet subtracted.

@@ -173,7 +173,7 @@ FastPath piece_if_clear(RayState& rs, const Span& m, const std::uint32_t* subs, 
     for (int k = 0; k < r; ++k) {
         const double q0 = std::max(a, pieces[k].t0), q1 = std::min(b, pieces[k].t1);
         if (!(q1 - q0 > eps)) continue;
-        if (!(q1 - q0 > 2 * eps)) {
+        if (!probe_fits(q0, q1, eps)) {
             unsure = true;
             continue;
         }

@@ -48,6 +48,15 @@ enum class FastPath : std::uint8_t {
 // is too short), Past when it starts past the window, else Found. (The
 // ends, not the Span: a 16-byte copy of a span just written field by field
 // stalls on store forwarding.)
+// Whether a part [q0, q1] of a piece has a middle to probe whose sliver of
+// eps either side lies inside it. A part that runs to infinity (a
+// half-space's, on a shadow ray to a directional light) has none: its
+// middle is at infinity, clear of everything, and the sliver [inf, inf]
+// has no length, so a proof there would let the light through.
+inline bool probe_fits(double q0, double q1, double eps) {
+    return q1 - q0 > 2 * eps && q1 < kInf;
+}
+
 inline FastPath fast_path_probe(double& t0, double& t1, double a, double b, Need need, double eps, double& probe) {
     if (need == Need::First) {
         if (!(t0 > a)) return FastPath::Unknown;  // starts inside the minuend: the entry is later
@@ -56,7 +65,7 @@ inline FastPath fast_path_probe(double& t0, double& t1, double a, double b, Need
         return FastPath::Found;
     }
     const double p0 = std::max(a, t0), p1 = std::min(b, t1);
-    if (!(p1 - p0 > 2 * eps)) return FastPath::Unknown;
+    if (!probe_fits(p0, p1, eps)) return FastPath::Unknown;
     probe = 0.5 * (p0 + p1);
     t0 = probe - eps;
     t1 = probe + eps;

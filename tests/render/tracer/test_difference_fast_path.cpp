@@ -316,3 +316,33 @@ TEST_CASE("difference with a subtrahend grid: a near subtrahend met only past th
         }
     }
 }
+
+// A half-space minus a few leaves, asked by shadow rays to a directional
+// light (tfar = infinity) that run down into it for ever: the minuend's
+// part in the window has no middle, so the clearance probe must not be
+// taken at infinity (its sliver [inf, inf] has no length, and the unit
+// would let the light through the ground). Every ray must be blocked, as
+// point membership says (the solid is on the ray just past its start);
+// 1 and 3 subtrahends take leaf_minus.cpp's path, 12 the big difference's.
+TEST_CASE("shadow rays to infinity through a half-space minus leaves are blocked", "[render][fastpath]") {
+    for (const int nsub : {1, 3, 12}) {
+        std::vector<Tree> kids{leaf(make_leaf(PrimKind::Plane, {0, 0, 1, 0}))};
+        for (int i = 0; i < nsub; ++i) kids.push_back(leaf(sphere(0.5, translate(5 + 2 * i, 5, 0))));
+        // (With three, one is a torus near the rays: the far-wall probe of
+        // leaf_minus.cpp looks just before the part's end.)
+        if (nsub == 3) kids.back() = leaf(make_leaf(PrimKind::Torus, {1, 0.25}, translate(0, 0, 0.1)));
+        const csg::Scene s = make_scene(op(Op::Difference, kids));
+        const render::CsgTracer tracer(s, false);
+        render::TraceScratch scratch;
+        int blocked = 0, rays = 0;
+        for (double x = -2; x <= 2; x += 0.5)
+            for (double y = -2; y <= 2; y += 0.5) {
+                const glm::dvec3 o(x, y, 0.5), d(-0.3, -0.2, -1);
+                INFO(nsub << " subtrahends, from " << x << ", " << y);
+                REQUIRE(csg_contains(s, o + 1.0 * d));
+                ++rays;
+                blocked += tracer.occluded(render::TraceRay{o, d, 1e-6, kInf}, scratch);
+            }
+        CHECK(blocked == rays);
+    }
+}
