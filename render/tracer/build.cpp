@@ -259,6 +259,7 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
         if (!reach.empty()) reach = {reach.lo - glm::dvec3(pad), reach.hi + glm::dvec3(pad)};
         impl_->reach = reach;
         impl_->build_ball_bvh();
+        impl_->build_apexes();
     }
 }
 
