@@ -106,6 +106,10 @@ struct CsgTracer::Impl {
     std::vector<RTCScene> mesh_bvhs;        // per csg::Mesh used by a leaf (object space)
     std::vector<csg::Aabb> mesh_boxes;        // object-space bounds of each mesh
     std::vector<csg::PrismGrid> prism_grids;  // per Scene::polygons entry used by a prism (prism_spans.cpp)
+    // The camera's and the point lights' positions (ray_cones.hpp), when
+    // every unit has a ball and they are few; else empty.
+    std::vector<Apex> apexes;
+    static constexpr std::size_t kMaxConeUnits = 256;
 
     Impl(const csg::Scene& s, bool f) : scene(s), use_float(f) {}
     ~Impl();
@@ -115,6 +119,7 @@ struct CsgTracer::Impl {
     void build_prism_grids();  // prism_spans.cpp
     void find_convex_units();  // shadow_rays.cpp
     void build_ball_bvh();     // build.cpp, after the balls and `reach`
+    void build_apexes();       // ray_cones.cpp, after the balls and `reach`
 };
 
 // Embree callbacks the build installs, each defined beside the query it serves.

@@ -6,6 +6,7 @@
 // chords of their balls and evaluated after the traversal, nearest bound
 // first (README.md, "Ball chords").
 #include <algorithm>
+#include <limits>
 
 #include "render/tracer/ball_chords.hpp"
 
@@ -109,6 +110,19 @@ void evaluate_queued(TopContext& ctx) {
     return true;
 }
 
+// A camera ray in a ray cone (ray_cones.hpp): its units, nearest the camera
+// first, until the next one lies wholly past the best entry or upper bound
+// (a point of the ray at t is within t·|d| + rho of the apex).
+void visit_cone(TopContext& ctx, const RayCone& cone) {
+    const double len = ctx.state->len;
+    float tfar = std::numeric_limits<float>::infinity();  // (no Embree ray to shrink)
+    for (const ConeUnit& u : cone.units) {
+        if (u.key > std::min(ctx.best, ctx.ub) * len * (1 + 1e-9)) break;
+        visit_unit(ctx, u.item, tfar);
+    }
+    if (ctx.ncandidates > 0) evaluate_queued(ctx);
+}
+
 }  // namespace
 
 void top_intersect_callback(const RTCIntersectFunctionNArguments* args) {
@@ -145,6 +159,8 @@ bool CsgTracer::intersect(const TraceRay& ray, TraceHit& hit, TraceScratch& scra
     if (!impl_->top.bvh) {
         for (std::size_t i = 0; i < impl_->top.items.size(); ++i)
             try_unit_entry(ctx, std::uint32_t(i), impl_->top.items[i]);
+    } else if (const RayCone* cone = ray_cone(st, ray, true)) {
+        visit_cone(ctx, *cone);
     } else {
         // Camera rays from outside go through the units' balls as Embree
         // spheres, the rest through their boxes (the same answer).

@@ -375,6 +375,13 @@ struct TopContext {
     }
 };
 
+// ray_cones.cpp: the thread's cone (ray_cones.hpp) holding the ray, when it
+// starts at the camera (`from`) or ends at a point light; null otherwise.
+const RayCone* ray_cone_of_apex(const RayState& st, const TraceRay& ray, bool from);
+inline const RayCone* ray_cone(const RayState& st, const TraceRay& ray, bool from) {
+    return st.impl->apexes.empty() ? nullptr : ray_cone_of_apex(st, ray, from);
+}
+
 // inside_spans.cpp: pushes every span of the unit `node` on (tnear, best).
 void gather_unit(TopContext& ctx, std::uint32_t node);
 

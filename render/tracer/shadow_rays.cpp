@@ -206,6 +206,17 @@ bool CsgTracer::occluded(const TraceRay& ray, TraceScratch& scratch, const Depar
             if (i != ctx.skip && unit_blocks(ctx, i, impl_->top.items[i])) return true;
         return false;
     }
+    // A shadow ray to a point light in a ray cone (ray_cones.hpp): its units,
+    // nearest the light first, until the next one lies wholly beyond the
+    // segment's start (a point of it is within (tfar - t)·|d| + rho of the light).
+    if (const RayCone* cone = ray_cone(st, ray, false)) {
+        const double seg = (ray.tfar - ray.tnear) * st.len * (1 + 1e-9);
+        for (const ConeUnit& u : cone->units) {
+            if (u.key > seg) break;
+            if (u.item != ctx.skip && item_blocks(ctx, u.item)) return true;
+        }
+        return false;
+    }
     // Through the units' balls when they are Embree spheres and the segment
     // ends outside every ball (a light beyond the crowd), else through their
     // boxes.

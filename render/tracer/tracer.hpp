@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include "csg/scene.hpp"
+#include "render/tracer/ray_cones.hpp"
 #include "render/tracer/span_list.hpp"
 
 namespace kerf::render {
@@ -23,6 +24,7 @@ struct TraceCounters {
 struct TraceScratch {
     SpanStack stack;
     TraceCounters counters;
+    RayCones cones;  // this thread's ray cones (ray_cones.hpp)
 };
 
 // d need not be unit length; t is measured in units of d.

@@ -130,4 +130,17 @@ private:
 // Strict point membership of the whole CSG expression (csg/membership.hpp).
 inline bool csg_contains(const csg::Scene& s, const glm::dvec3& p) { return csg::contains(s, p); }
 
+// Whether t is the solid's first entry along o + t·d on (0, t_end), by point
+// membership alone: outside at every one of 4000 samples before t and just
+// before it, inside just after (t infinite: outside at every sample).
+inline bool is_first_entry(const csg::Scene& s, const glm::dvec3& o, const glm::dvec3& d, double t, double t_end,
+                           double h) {
+    constexpr int kSamples = 4000;
+    const double step = t_end / kSamples;
+    for (int i = 1; i <= kSamples && step * i < t - h; ++i)
+        if (csg_contains(s, o + step * i * d)) return false;
+    if (std::isinf(t)) return true;
+    return !csg_contains(s, o + (t - h) * d) && csg_contains(s, o + (t + h) * d);
+}
+
 }  // namespace kerf::test

@@ -159,18 +159,6 @@ Crowd lenses(RandomCsg& g, const glm::dvec3& at) {
     return c;
 }
 
-// Whether t is the solid's first entry along o + t·d on (0, t_end), by point
-// membership alone: outside at every sample before t and just before it,
-// inside just after (t = kInf: outside at every sample).
-bool is_first_entry(const csg::Scene& s, const glm::dvec3& o, const glm::dvec3& d, double t, double t_end, double h) {
-    constexpr int kSamples = 4000;
-    const double step = t_end / kSamples;
-    for (int i = 1; i <= kSamples && step * i < t - h; ++i)
-        if (csg_contains(s, o + step * i * d)) return false;
-    if (std::isinf(t)) return true;
-    return !csg_contains(s, o + (t - h) * d) && csg_contains(s, o + (t + h) * d);
-}
-
 // One ray along o + t·d (unit d) checked against point membership: its
 // first entry, a shadow-style query on (0, tfar) and one towards a light
 // beyond the crowd. Returns 1 if it hits. h_thin > 0: an entry into a

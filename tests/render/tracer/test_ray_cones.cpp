@@ -1,0 +1,204 @@
+// Ray cones (render/tracer/ray_cones.hpp): camera rays (starting exactly at
+// the scene's camera) and shadow rays ending at a point light test only the
+// units whose grown balls meet a cone around them, built per thread by the
+// first ray of a direction and reused by the rays within its half-angle.
+// Checked against point membership along the ray (no ray code): rays aimed
+// within ±0.01 % of the units' spheres (float: 1 %) and rays tangent to them
+// (double only), each right
+// after a ray that built a cone whose edge it nearly lies on (the grazed
+// ball then lies at the cone's edge too), at unit size, tiny, huge and far
+// from the origin, in double and float. And the cone never changes the
+// work: a ray traced after another's cone counts the same primitive tests
+// as on a fresh thread.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "render/tracer/tracer.hpp"
+#include "tests/render/random_csg.hpp"
+#include "tests/render/scene_builder.hpp"
+
+using namespace kerf;
+using namespace kerf::test;
+using csg::Op;
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+struct Ball {
+    glm::dvec3 c;
+    double r;
+};
+
+// 60 overlapping units of `size` around `at`, every one inside a sphere
+// (its ball; the cones serve crowds whose every unit has one): cells (a
+// sphere minus 1-2 smaller spheres, sometimes a box too), sphere ∩ box,
+// lenses. Similarities only, so `balls` (the spheres to aim at) are exact.
+struct Crowd {
+    Tree tree = op(Op::Union, {});
+    std::vector<Ball> units, balls;
+};
+
+Crowd crowd(RandomCsg& g, const glm::dvec3& at, double size) {
+    Crowd c;
+    for (int k = 0; k < 60; ++k) {
+        const double r = size * g.uni(0.3, 0.6);
+        const glm::dvec3 p = at + size * glm::dvec3(g.uni(-1, 1), g.uni(-1, 1), g.uni(-1, 1));
+        const glm::dvec3 axis = glm::normalize(glm::dvec3(g.uni(-1, 1), g.uni(-1, 1), g.uni(-1, 1)) + 1e-3);
+        const glm::dmat4 m = translate(p.x, p.y, p.z) * rotate_deg(g.uni(0, 360), axis);
+        c.units.push_back({p, r});
+        c.balls.push_back({p, r});
+        const int kind = g.pick(10);
+        std::vector<Tree> kids{leaf(sphere(r, m))};
+        if (kind < 7) {
+            for (int h = 1 + g.pick(2); h > 0; --h) {
+                const double ri = g.uni(0.5, 0.9) * r;
+                const glm::dvec3 off = g.uni(-0.3, 0.3) * r * glm::dvec3(1, g.uni(-1, 1), g.uni(-1, 1));
+                kids.push_back(leaf(sphere(ri, m * translate(off.x, off.y, off.z))));
+                c.balls.push_back({glm::dvec3(m * glm::dvec4(off, 1)), ri});
+            }
+            if (g.pick(4) == 0) kids.push_back(leaf(box(glm::dvec3(-0.2 * r), glm::dvec3(0.2 * r), m)));
+            c.tree.kids.push_back(op(Op::Difference, kids));
+        } else if (kind < 9) {
+            kids.push_back(leaf(box(glm::dvec3(-0.7 * r), glm::dvec3(0.7 * r), m)));
+            c.tree.kids.push_back(op(Op::Intersection, kids));
+        } else {
+            kids.push_back(leaf(box(glm::dvec3(0.5 * r), glm::dvec3(2 * r), m)));  // a corner cut off
+            c.tree.kids.push_back(op(Op::Difference, kids));
+        }
+    }
+    return c;
+}
+
+// The cones' half-angle around apex p as the tracer chooses it
+// (ray_cones.cpp): half the middle unit ball's radius over the distance to
+// the middle of the units' boxes.
+double cone_alpha(const csg::Scene& s, const Crowd& c, const glm::dvec3& p) {
+    std::vector<double> r;
+    for (const Ball& b : c.units) r.push_back(b.r);
+    std::nth_element(r.begin(), r.begin() + long(r.size() / 2), r.end());
+    csg::Aabb box;
+    for (std::uint32_t k = 0; k < s.nodes[s.root].count; ++k) box.extend(s.nodes[s.children[s.nodes[s.root].first + k]].bounds);
+    return std::clamp(0.5 * r[r.size() / 2] / glm::length(0.5 * (box.lo + box.hi) - p), 1e-3, 0.25);
+}
+
+// d turned by `angle` away from the point c seen from p (in their plane).
+glm::dvec3 turned_away(const glm::dvec3& d, const glm::dvec3& p, const glm::dvec3& c, double angle) {
+    const glm::dvec3 w = c - p;
+    const glm::dvec3 e = glm::normalize(w - glm::dot(w, d) / glm::dot(d, d) * d);
+    return glm::length(d) * (std::cos(angle) * glm::normalize(d) - std::sin(angle) * e);
+}
+
+// A direction from p towards ball b: at a point within ±band of its surface,
+// or (every other one) tangent to it, tilted in or out by up to `band` / 1000.
+glm::dvec3 aim(RandomCsg& g, const glm::dvec3& p, const Ball& b, double band, bool tangent) {
+    const glm::dvec3 u = glm::normalize(glm::dvec3(g.uni(-1, 1), g.uni(-1, 1), g.uni(-1, 1)) + 1e-3);
+    if (!tangent) return glm::normalize(b.c + g.uni(1 - band, 1 + band) * b.r * u - p);
+    const glm::dvec3 w = b.c - p;
+    const double dw = glm::length(w), beta = std::asin(b.r / dw) * (1 + 1e-3 * g.uni(-band, band));
+    const glm::dvec3 e = glm::normalize(u - glm::dot(u, w) / (dw * dw) * w);
+    return std::cos(beta) * (w / dw) + std::sin(beta) * e;
+}
+
+struct Result {
+    int hits = 0, shadows = 0, in_primed = 0;
+};
+
+// Camera and shadow rays at the crowd of `size` around `at` (h: the
+// oracle's step), each traced right after a ray whose cone it lies in,
+// near its edge (`edge` of the half-angle off the axis).
+Result check(std::uint64_t seed, const glm::dvec3& at, double size, double h, bool use_float, double edge) {
+    const double band = use_float ? 1e-2 : 1e-4;
+    RandomCsg g(seed);
+    const Crowd c = crowd(g, at, size);
+    csg::Scene s = make_scene(c.tree);
+    s.camera.position = at + size * glm::dvec3(1.5, -6, 2.5);
+    s.camera.look_at = at;
+    s.lights[0].position = at + size * glm::dvec3(-5, -8, 10);
+    const glm::dvec3 cam = s.camera.position, light = s.lights[0].position;
+    const render::CsgTracer tracer(s, use_float);
+    const double alpha_cam = cone_alpha(s, c, cam), alpha_light = cone_alpha(s, c, light);
+    Result res;
+    for (int i = 0; i < 300; ++i) {
+        const Ball& b = c.balls[std::size_t(g.pick(int(c.balls.size())))];
+        INFO("seed " << seed << " ray " << i);
+        // A camera ray, first on a fresh thread, then after a ray along the
+        // edge of its would-be cone: the same entry and the same work.
+        const glm::dvec3 d = size * aim(g, cam, b, band, i % 2 == 1 && !use_float);
+        const render::TraceRay ray{cam, d, 0, kInf};
+        render::TraceScratch fresh, primed;
+        render::TraceHit hit, hit2;
+        const bool found = tracer.intersect(ray, hit, fresh);
+        render::TraceHit ignored;
+        tracer.intersect(render::TraceRay{cam, turned_away(d, cam, b.c, edge * alpha_cam), 0, kInf}, ignored, primed);
+        const std::uint64_t built = primed.cones.built, tests = primed.counters.interval_tests;
+        const bool found2 = tracer.intersect(ray, hit2, primed);
+        res.in_primed += primed.cones.built == built && built > 0;
+        CHECK(found == found2);
+        CHECK((found ? hit.t : kInf) == (found2 ? hit2.t : kInf));
+        CHECK(fresh.counters.interval_tests == primed.counters.interval_tests - tests);
+        const double t = found ? hit.t : kInf;
+        INFO("camera ray entry " << t);
+        CHECK(is_first_entry(s, cam, d, t, 14, h));
+        res.hits += found;
+        // A shadow ray from a point near a ball (outside the solid) to the
+        // light, as shading makes it (unit d, tfar the distance), after a
+        // ray ending at the light from a cone's edge: blocked exactly when
+        // its first entry comes before the light.
+        const glm::dvec3 ds = -aim(g, light, b, band, i % 2 == 0 && !use_float);
+        const glm::dvec3 o = light - size * g.uni(8, 16) * ds;
+        if (csg_contains(s, o)) continue;
+        const double dist = glm::length(light - o);
+        const glm::dvec3 dir = (light - o) / dist;
+        render::TraceHit entry;
+        const double te = tracer.intersect(render::TraceRay{o, dir, 0, kInf}, entry, fresh) ? entry.t : kInf;
+        CHECK(is_first_entry(s, o, dir, te, dist, h * size));
+        render::TraceScratch shadow;
+        const glm::dvec3 away = turned_away(-dir, light, b.c, edge * alpha_light);
+        const glm::dvec3 o2 = light + dist * glm::normalize(away);
+        const double dist2 = glm::length(light - o2);
+        (void)tracer.occluded(render::TraceRay{o2, (light - o2) / dist2, 0, dist2}, shadow);
+        const std::uint64_t built2 = shadow.cones.built;
+        CHECK(tracer.occluded(render::TraceRay{o, dir, 0, dist}, shadow) == (te < dist));
+        res.in_primed += shadow.cones.built == built2 && built2 > 0;
+        res.shadows += te < dist;
+    }
+    return res;
+}
+
+}  // namespace
+
+TEST_CASE("ray cones: camera and shadow rays grazing a crowd at a cone's edge keep every entry and shadow",
+          "[render][oracle]") {
+    Result r;
+    for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+        const Result x = check(seed, glm::dvec3(0.0), 1, 1e-7, false, 1 - 3e-6);
+        r.hits += x.hits, r.shadows += x.shadows, r.in_primed += x.in_primed;
+    }
+    CHECK(r.hits > 400);
+    CHECK(r.shadows > 100);
+    CHECK(r.in_primed > 1500);  // the rays did use the cone built before them
+}
+
+TEST_CASE("ray cones inside their cones, tiny, huge, far from the origin and in float keep every entry too",
+          "[render][oracle]") {
+    const glm::dvec3 far = 1e6 * glm::normalize(glm::dvec3(0.4, -1, 0.3));
+    const struct {
+        std::uint64_t seed;
+        glm::dvec3 at;
+        double size, h, edge;
+        bool use_float;
+    } cases[] = {{11, glm::dvec3(0.0), 1, 1e-7, 0.5, false},   {12, glm::dvec3(0.0), 1e-4, 1e-7, 1 - 3e-6, false},
+                 {13, glm::dvec3(0.0), 1e4, 1e-7, 1 - 3e-6, false}, {14, far, 1, 1e-6, 1 - 3e-6, false},
+                 {15, glm::dvec3(0.0), 1, 1e-4, 1 - 3e-6, true}};
+    for (const auto& k : cases) {
+        INFO("case " << k.seed);
+        const Result x = check(k.seed, k.at, k.size, k.h, k.use_float, k.edge);
+        CHECK(x.hits > 100);
+        CHECK(x.in_primed > 400);
+    }
+}
