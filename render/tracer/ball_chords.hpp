@@ -102,7 +102,7 @@ struct UnitChords {
     const double inv_len2 = st.inv_len * st.inv_len;
     const Ball& ball = impl.top.balls[item];
     m = ball_chords_detail::centre(st, ball.c, inv_len2);
-    const double rr = ball.r + 4 * st.eps_ray + impl.ball_slack * m.w1;
+    const double rr = grown_radius(ball.r, 4 * st.eps_ray, impl.ball_slack, m.w1);
     h2 = (rr * rr - m.q2 + 1e-13 * (m.w1 * m.w1 + rr * rr)) * inv_len2;
     const double gap = std::max(a - m.tc, m.tc - b);
     return std::min(h2, h2 - gap * std::abs(gap)) > 0;

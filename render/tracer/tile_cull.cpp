@@ -73,7 +73,7 @@ bool ball_outside(const Ball& b, const HullPlanes& h, const glm::dvec3 (&o)[4], 
         o_max = std::max(o_max, glm::length(o[i]));
         w_max = std::max(w_max, std::abs(w.x) + std::abs(w.y) + std::abs(w.z));
     }
-    const double r = b.r + 4 * eps_per_distance * o_max + ball_slack * w_max;
+    const double r = grown_radius(b.r, 4 * eps_per_distance * o_max, ball_slack, w_max);
     for (int i = 0; i < h.count; ++i) {
         const double slack = 1e-9 * (w_max + r + glm::length(o[i]) + 1e-300);
         if (glm::dot(h.n[i], b.c - o[i]) < -(r + slack)) return true;

@@ -58,6 +58,14 @@ std::vector<Ball> unit_balls(const csg::Scene& scene, const std::vector<std::uin
 std::vector<SphereMinus> sphere_minus_units(const csg::Scene& scene, const std::vector<std::uint32_t>& units,
                                             const std::vector<double>& pad, std::vector<SubBound>& subs);
 
+// A unit's ball as a ray's own tests grow it: slack_abs for the ray's
+// origin magnitude (4·eps_ray), slack_rel per unit of w1 = |c - o|₁. One
+// formula for every test that must keep what another keeps (ball_misses,
+// the outer chord, tile culling's bound over a tile's rays).
+inline double grown_radius(double r, double slack_abs, double slack_rel, double w1) {
+    return r + slack_abs + slack_rel * w1;
+}
+
 // True if the segment [a, b] of o + t·d is provably outside `ball`: the
 // line misses it or its chord lies wholly before a or after b. inv_len2 =
 // 1/|d|²; slack_abs: world padding for the ray's origin magnitude; slack_rel:
@@ -68,7 +76,7 @@ inline bool ball_misses(const Ball& ball, const glm::dvec3& o, const glm::dvec3&
     const glm::dvec3 w = ball.c - o;
     const double tc = glm::dot(w, d) * inv_len2;
     const glm::dvec3 c0 = w - tc * d;  // from the line's closest point to the centre
-    const double r = ball.r + slack_abs + slack_rel * (std::abs(w.x) + std::abs(w.y) + std::abs(w.z));
+    const double r = grown_radius(ball.r, slack_abs, slack_rel, std::abs(w.x) + std::abs(w.y) + std::abs(w.z));
     const double h2 = (r * r - glm::dot(c0, c0)) * inv_len2;
     // The chord [tc - h, tc + h] misses [a, b] when the window's gap to tc
     // (positive on at most one side) exceeds h: squared, so no square root
