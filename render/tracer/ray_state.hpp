@@ -257,7 +257,8 @@ inline void start_float_ray(RayState& st, double t_shift) {
     st.leave = leave;
     st.len = glm::length(ray.d);
     st.inv_len = 1 / st.len;
-    // (A scene queried without Embree, one unit of few leaves, never reads them.)
+    // (A scene queried without any Embree BVH, of units or of a node's
+    // children (build.hpp, float_rays), never reads them.)
     if (impl->float_rays) {
         for (int i = 0; i < 3; ++i) st.dir[i] = float(ray.d[i]);
         start_float_ray(st, std::isfinite(enter) ? std::max(0.0, enter) : 0.0);
