@@ -34,7 +34,7 @@ public:
     // Inline in the pass's loop, the candidate out of it: a call per pixel
     // that saves the registers candidate() uses cost 20 instructions.
     [[gnu::always_inline]] void pixel(int x, int y, ThreadState& ts, bool traced) const {
-        static thread_local Run run;
+        Run& run = last_run();
         if (x < run.to && x >= run.from && y == run.y && run.generation == generation_) return;
         const int tile_end = region_[0] + ((x - region_[0]) / kTile + 1) * kTile;
         const int to = centres_.uniform_run(x, y, std::min(tile_end, region_[2]));
@@ -46,12 +46,26 @@ public:
         if (unlike) candidate(x, y, unlike, ts, traced);
     }
 
+    // pixel(x, y, ts, false) for pixels [x0, x1) of row y (a culled
+    // block's row): nothing when the run found last covers them all, as
+    // background's runs mostly do.
+    void untraced(int x0, int x1, int y, ThreadState& ts) const {
+        const Run& run = last_run();
+        if (x0 >= run.from && x1 <= run.to && y == run.y && run.generation == generation_) return;
+        for (int x = x0; x < x1; ++x) pixel(x, y, ts, false);
+    }
+
 private:
     // Pixels [from, to) of row y of the render with `generation` need no test.
     struct Run {
         int from = 0, to = 0, y = 0;
         std::uint64_t generation = 0;
     };
+    // The calling thread's last run.
+    static Run& last_run() {
+        static thread_local Run run;
+        return run;
+    }
     // Pixel (x, y), whose neighbours in `unlike` (CentreSamples::unlike_neighbours) do not look like it.
     [[gnu::noinline]] void candidate(int x, int y, unsigned unlike, ThreadState& ts, bool traced) const;
     // What a probe looks like to the first pass: the ground as a miss.
@@ -525,11 +539,23 @@ bool render_adaptive(const TilePasses& tiles, const PixelSampler& sampler, const
                                       // The codes the look found for c: not found again.
                                       sampler.put_codes(x, y, c, std::uint32_t(look & 0xFFFFFF));
                                   }
+                              },
+                              // A culled block's row: what the pixel above does for misses, as a run
+                              // (no looks found, no comparisons: the bytes of store.fill are the
+                              // miss look's codes, and --alpha's pixels still go one by one).
+                              [&](int x0, int x1, int y, ThreadState& ts) {
+                                  ts.rays.primary += std::uint64_t(x1 - x0);
+                                  ts.on_ground = false;
+                                  centres.set_looks(x0, x1, y, miss_look);
+                                  PixelSampler::set_covered(0);
+                                  if (ring && (y < region[1] || y >= region[3])) return;
+                                  sampler.put_misses(std::max(x0, region[0]), std::min(x1, region[2]), y);
                               });
         set_to = next;
         // Only candidates are written again; the rest keep their centre.
         complete &= tiles.run({region[0], y0, region[2], y1}, progress_part(progress, from + (to - from) / 4, to),
-                              [&](int x, int y, ThreadState& ts, bool traced) { refinement.pixel(x, y, ts, traced); });
+                              [&](int x, int y, ThreadState& ts, bool traced) { refinement.pixel(x, y, ts, traced); },
+                              [&](int x0, int x1, int y, ThreadState& ts) { refinement.untraced(x0, x1, y, ts); });
     }
     return complete;
 }

@@ -81,6 +81,14 @@ public:
         hits_ = 0;
     }
 
+    // put(x, y, miss(), 1) for pixels [x0, x1) of row y with nothing
+    // covered (a culled block's row): without --alpha, filled as one run.
+    void put_misses(int x0, int x1, int y) const {
+        hits_ = 0;
+        if (!alpha()) return store_.fill(x0, x1, y, shader_.miss());
+        for (int x = x0; x < x1; ++x) put(x, y, shader_.miss(), 1);
+    }
+
     // Coverage: the samples of the pixel being shaded that hit a solid (a
     // sample seeing a ghost over the background counts the ghost's
     // opacity). A pixel is shaded start to end on one thread, so it is a
