@@ -83,6 +83,12 @@ public:
         return l;
     }
 
+    // set_look(x, y, l, false) for pixels [x0, x1) of row y (a culled
+    // block's row, all misses).
+    void set_looks(int x0, int x1, int y, std::uint64_t l) {
+        std::fill_n(looks_.begin() + std::ptrdiff_t(index(x0, y)), std::max(0, x1 - x0), l);
+    }
+
     // The centre sample's colour to 8-bit precision (linear, decoded from
     // its display codes), when the look holds it: not a stand-in, and no
     // channel at 255 (which may have been clipped).

@@ -27,23 +27,29 @@ public:
           steps_(std::max(1, int(std::ceil(std::log2(double(options.aa_samples)))))),
           generation_(CornerProbes::next_generation()) {}
 
-    // Most pixels keep their centre: that test inline, the rest not. A
-    // run of pixels whose neighbourhoods all hold one look
-    // (CentreSamples::uniform_run) is found once, up to the end of the
-    // tile, and its pixels skip the test.
-    // Inline in the pass's loop, the candidate out of it: a call per pixel
-    // that saves the registers candidate() uses cost 20 instructions.
-    [[gnu::always_inline]] void pixel(int x, int y, ThreadState& ts, bool traced) const {
-        static thread_local Run run;
-        if (x < run.to && x >= run.from && y == run.y && run.generation == generation_) return;
-        const int tile_end = region_[0] + ((x - region_[0]) / kTile + 1) * kTile;
-        const int to = centres_.uniform_run(x, y, std::min(tile_end, region_[2]));
-        if (to > x) {
-            run = Run{x, to, y, generation_};
-            return;
+    // The pixels [x0, x1) of row y, one row of a block of a tile (tiles.hpp;
+    // `traced` false: a culled block's). Most pixels keep their centre:
+    // that test inline, the rest (candidate()) not. A run of pixels whose
+    // neighbourhoods all hold one look (CentreSamples::uniform_run) is
+    // found once, up to the end of the tile, and its pixels skip the
+    // test; the run outlives the call, so that the blocks to its right on
+    // the row skip it too (a background row's next blocks, whole). Taken a
+    // row at a time, not a pixel: the run's bounds are read once a row.
+    void row(int x0, int x1, int y, ThreadState& ts, bool traced) const {
+        Run& run = last_run();
+        int x = x0;
+        if (y == run.y && run.generation == generation_ && run.from <= x0) x = std::max(x0, std::min(run.to, x1));
+        const int limit = std::min(region_[0] + ((x0 - region_[0]) / kTile + 1) * kTile, region_[2]);
+        while (x < x1) {
+            const int to = centres_.uniform_run(x, y, limit);
+            if (to > x) {
+                run = Run{x, to, y, generation_};
+                x = to;
+                continue;
+            }
+            if (const unsigned unlike = centres_.unlike_neighbours(x, y, threshold_)) candidate(x, y, unlike, ts, traced);
+            ++x;
         }
-        const unsigned unlike = centres_.unlike_neighbours(x, y, threshold_);
-        if (unlike) candidate(x, y, unlike, ts, traced);
     }
 
 private:
@@ -52,6 +58,11 @@ private:
         int from = 0, to = 0, y = 0;
         std::uint64_t generation = 0;
     };
+    // The calling thread's last run.
+    static Run& last_run() {
+        static thread_local Run run;
+        return run;
+    }
     // Pixel (x, y), whose neighbours in `unlike` (CentreSamples::unlike_neighbours) do not look like it.
     [[gnu::noinline]] void candidate(int x, int y, unsigned unlike, ThreadState& ts, bool traced) const;
     // What a probe looks like to the first pass: the ground as a miss.
@@ -525,11 +536,24 @@ bool render_adaptive(const TilePasses& tiles, const PixelSampler& sampler, const
                                       // The codes the look found for c: not found again.
                                       sampler.put_codes(x, y, c, std::uint32_t(look & 0xFFFFFF));
                                   }
+                              },
+                              // A culled block's row: what the pixel above does for misses, as a run
+                              // (no looks found, no comparisons: the bytes of store.fill are the
+                              // miss look's codes, and --alpha's pixels still go one by one).
+                              [&](int x0, int x1, int y, ThreadState& ts) {
+                                  ts.rays.primary += std::uint64_t(x1 - x0);
+                                  ts.on_ground = false;
+                                  centres.set_looks(x0, x1, y, miss_look);
+                                  PixelSampler::set_covered(0);
+                                  if (ring && (y < region[1] || y >= region[3])) return;
+                                  sampler.put_misses(std::max(x0, region[0]), std::min(x1, region[2]), y);
                               });
         set_to = next;
         // Only candidates are written again; the rest keep their centre.
-        complete &= tiles.run({region[0], y0, region[2], y1}, progress_part(progress, from + (to - from) / 4, to),
-                              [&](int x, int y, ThreadState& ts, bool traced) { refinement.pixel(x, y, ts, traced); });
+        complete &= tiles.run_rows({region[0], y0, region[2], y1}, progress_part(progress, from + (to - from) / 4, to),
+                                   [&](int x0, int x1, int y, ThreadState& ts, bool traced) {
+                                       refinement.row(x0, x1, y, ts, traced);
+                                   });
     }
     return complete;
 }

@@ -5,6 +5,7 @@
 // anti-aliasing (adaptive_aa.cpp).
 #pragma once
 #include <cstdint>
+#include <limits>
 
 #include <glm/glm.hpp>
 
@@ -24,7 +25,8 @@ public:
     // colour without coverage (and for AOVs).
     PixelSampler(const CameraModel& camera, const Shader& shader, const GhostLayers* ghosts, const PathTracer* path,
                  PixelStore& store, Alpha alpha, std::uint64_t seed)
-        : camera_(camera), shader_(shader), ghosts_(ghosts), path_(path), store_(store), alpha_(alpha), seed_(seed) {}
+        : camera_(camera), shader_(shader), ghosts_(ghosts), path_(path), store_(store), alpha_(alpha), seed_(seed),
+          plain_(!ghosts && !path && alpha == Alpha::None) {}
 
     bool alpha() const { return alpha_ != Alpha::None; }
     bool ghosts() const { return ghosts_ != nullptr; }
@@ -40,6 +42,10 @@ public:
             if (surface) *surface = 0;
             return shader_.miss();
         }
+        // The Whitted shader alone (what trace() comes to without ghosts,
+        // paths or coverage): called here, not through trace()'s branches
+        // (~40 instructions a sample, 1.3 % of holes_40's default render).
+        if (plain_) return shader_.radiance(TraceRay{o, d, 0, std::numeric_limits<double>::infinity()}, 0, ts, surface);
         return trace(o, d, ts, surface);
     }
     // The camera ray through (px, py), as sample() traces it; false
@@ -81,6 +87,14 @@ public:
         hits_ = 0;
     }
 
+    // put(x, y, miss(), 1) for pixels [x0, x1) of row y with nothing
+    // covered (a culled block's row): without --alpha, filled as one run.
+    void put_misses(int x0, int x1, int y) const {
+        hits_ = 0;
+        if (!alpha()) return store_.fill(x0, x1, y, shader_.miss());
+        for (int x = x0; x < x1; ++x) put(x, y, shader_.miss(), 1);
+    }
+
     // Coverage: the samples of the pixel being shaded that hit a solid (a
     // sample seeing a ghost over the background counts the ghost's
     // opacity). A pixel is shaded start to end on one thread, so it is a
@@ -101,6 +115,7 @@ private:
     PixelStore& store_;
     Alpha alpha_;
     std::uint64_t seed_;
+    bool plain_;  // no ghosts, no path tracer, no coverage: a sample is the shader's radiance
     static inline thread_local double hits_ = 0;
     static inline thread_local double last_ = 0;
 };

@@ -82,8 +82,25 @@ struct PixelByPixel {
     }
 };
 
+// A pass that takes each row of a block whole, traced or not (for_each_tile).
+template <class Row>
+struct ByRows {
+    Row& row;
+};
+
+// The pixels [x0, x1) of row y of a traced block: one by one, or whole (ByRows).
+template <class Pixel>
+void traced_row(Pixel& pixel, int x0, int x1, int y, ThreadState& ts) {
+    for (int x = x0; x < x1; ++x) pixel(x, y, ts, true);
+}
+template <class Row>
+void traced_row(ByRows<Row>& rows, int x0, int x1, int y, ThreadState& ts) {
+    rows.row(x0, x1, y, ts, true);
+}
+
 // Calls pixel(x, y, thread_state, traced) for every pixel of `region` (or,
-// for the pixels of a row of a culled block, untraced(x0, x1, y,
+// for a ByRows pass, its row(x0, x1, y, thread_state, true) for a row of a
+// traced block; for the pixels of a row of a culled block, untraced(x0, x1, y,
 // thread_state), which must do what pixel(x, y, ts, false) does for each),
 // and progress(fraction) after each tile, serialised; once `*cancel` is set the
 // tiles not started are skipped (the caller throws RenderCancelled). A thread with less than
@@ -130,7 +147,7 @@ bool for_each_tile(tbb::task_arena& arena, const std::array<int, 4>& region, con
                             untraced(x0, x1, y, ts);
                             continue;
                         }
-                        for (int x = x0; x < x1; ++x) pixel(x, y, ts, true);
+                        traced_row(pixel, x0, x1, y, ts);
                     }
                 }
                 if (progress) {
@@ -173,6 +190,14 @@ struct TilePasses {
              Untraced&& untraced) const {
         return for_each_tile(arena, region, camera, tracer, also, states, progress, stack_need, cancel, pixel,
                              untraced);
+    }
+    // The same with every block's rows handed over whole: row(x0, x1, y,
+    // thread_state, traced) for the pixels [x0, x1) of row y.
+    template <class Row>
+    bool run_rows(const std::array<int, 4>& region, const std::function<void(double)>& progress, Row&& row) const {
+        ByRows<Row> rows{row};
+        return for_each_tile(arena, region, camera, tracer, also, states, progress, stack_need, cancel, rows,
+                             [&row](int x0, int x1, int y, ThreadState& ts) { row(x0, x1, y, ts, false); });
     }
 };
 
