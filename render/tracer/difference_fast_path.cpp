@@ -25,7 +25,7 @@ std::uint32_t minus_near(RayState& rs, const std::uint32_t* subs, const std::uin
 // of minuend span i (its entry; for Any, the middle of its part inside the
 // window) that is farther than twice the degenerate rule's reach from every
 // subtrahend is in the difference, and gathering spans would give the same
-// answer. For First, when only one or two subtrahends are near the entry (a
+// answer. For First, when only a few (kMaxNear) subtrahends are near the entry (a
 // ray into a groove), only those are intersected; the piece they leave
 // starts at e, and e is the answer if it is clear of all the others.
 // Minuend spans are at base.., scratch from sbase on (see FastPath).
@@ -57,7 +57,7 @@ FastPath RayState::first_piece_if_clear(const csg::Node& n, std::uint32_t base, 
     return FastPath::Found;
 }
 
-// Any (a shadow ray), with one or two subtrahends near the probe (a ray
+// Any (a shadow ray), with a few (kMaxNear) subtrahends near the probe (a ray
 // leaving a groove): span i minus only those, on the window; a piece that
 // overlaps the window by more than 2·eps and whose middle is clear of all
 // the other subtrahends answers (the sliver of eps round it survives them

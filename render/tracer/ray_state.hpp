@@ -73,8 +73,11 @@ inline FastPath fast_path_probe(double& t0, double& t1, double a, double b, Need
 }
 
 // At most this many subtrahends near the probe are intersected by the fast
-// path; more: gather them all.
-constexpr std::uint32_t kMaxNear = 2;
+// paths (the small differences', leaf_minus's, the subtrahend grid's); more:
+// gather them all. One constant for every buffer sized by it: a class-scope
+// twin (4) once hid this one (2) inside RayState's own members, so
+// near_subtrahends filled four entries into leaf_minus's arrays of two.
+constexpr std::uint32_t kMaxNear = 4;
 
 // The squared distance from x to the box (0 inside). Empty boxes (lo =
 // +inf) give +inf: an empty solid is far from everything.
@@ -185,7 +188,6 @@ struct RayState {
     std::uint32_t first_entry_by_points(const Accel& subtrahends, std::uint32_t base, std::uint32_t i, double b);
     FastPath any_by_points(const Accel& subtrahends, std::uint32_t base, std::uint32_t sbase, std::uint32_t i,
                            double a, double b);
-    static constexpr int kMaxNear = 4;
     // The subtrahends of `accel` within `reach` of x (per axis, by the
     // grid) that are not clear of x by `margin` (at most kMaxNear, node
     // ids); -1: not known.
