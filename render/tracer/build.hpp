@@ -5,6 +5,7 @@
 // need the layout.
 #pragma once
 #include <cmath>
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -110,8 +111,16 @@ struct CsgTracer::Impl {
     // every unit has a ball and they are few; else empty.
     std::vector<Apex> apexes;
     static constexpr std::size_t kMaxConeUnits = 256;
+    // Unique per tracer in the process: a thread's cones name their owner
+    // by it, not by address (a tracer built where a freed one stood must
+    // not take that one's cones, whose unit indices are another scene's).
+    const std::uint64_t id = next_id();
 
     Impl(const csg::Scene& s, bool f) : scene(s), use_float(f) {}
+    static std::uint64_t next_id() {
+        static std::atomic<std::uint64_t> counter{0};
+        return ++counter;
+    }
     ~Impl();
     void build_accel(Accel& accel, const std::vector<std::uint32_t>& nodes, bool top_level);
     void local_tolerances(const std::vector<std::uint32_t>& units);  // build.cpp

@@ -29,10 +29,11 @@ double l1(const glm::dvec3& v) { return std::abs(v.x) + std::abs(v.y) + std::abs
 // listed into `cone`.
 void build_cone(const RayState& st, std::uint32_t a, const glm::dvec3& dir, RayCone& cone) {
     const Apex& ap = st.impl->apexes[a];
-    cone.owner = st.impl;
+    cone.owner = st.impl->id;
     cone.apex = a;
     cone.axis = dir / glm::length(dir);
     cone.units.clear();
+    cone.units.reserve(ap.order.size());  // once per slot and scene: no growth while listing
     // A ball meets the cone when the angle from the axis to its centre is
     // at most alpha plus its angular radius beta: cos(angle) >= cos(alpha +
     // beta) (alpha + beta < pi). The margin 1e-12 in the cosines is beyond
@@ -49,7 +50,7 @@ const RayCone* find_cone(const RayState& st, std::uint32_t a, const glm::dvec3& 
     RayCones& rc = st.scratch->cones;
     const double need = st.impl->apexes[a].cos_in * st.len;
     const auto holds = [&](const RayCone& c) {
-        return c.owner == st.impl && c.apex == a && glm::dot(dir, c.axis) >= need;
+        return c.owner == st.impl->id && c.apex == a && glm::dot(dir, c.axis) >= need;
     };
     int& last = rc.last[a];
     if (holds(rc.cones[last])) return &rc.cones[last];

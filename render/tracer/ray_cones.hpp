@@ -43,7 +43,7 @@ struct ConeUnit {
 };
 
 struct RayCone {
-    const void* owner = nullptr;  // the tracer (CsgTracer::Impl) it belongs to
+    std::uint64_t owner = 0;      // the tracer it belongs to (CsgTracer::Impl::id)
     std::uint32_t apex = 0;
     glm::dvec3 axis{0.0};         // unit, pointing away from the apex
     std::vector<ConeUnit> units;  // in the apex's order

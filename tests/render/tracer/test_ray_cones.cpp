@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include "render/tracer/tracer.hpp"
@@ -201,4 +202,44 @@ TEST_CASE("ray cones inside their cones, tiny, huge, far from the origin and in 
         CHECK(x.hits > 100);
         CHECK(x.in_primed > 400);
     }
+}
+
+// A thread's cones belong to the tracer that built them: a scratch kept
+// across tracers (the second built where the first, now freed, may have
+// stood) must not hand the second scene the first one's unit lists. Two
+// different crowds from one camera; each camera ray on the second tracer
+// with the first's primed scratch gives the fresh scratch's entry.
+TEST_CASE("ray cones are not reused across tracers", "[render][oracle]") {
+    RandomCsg g1(21), g2(22);
+    const Crowd c1 = crowd(g1, glm::dvec3(0.0), 1), c2 = crowd(g2, glm::dvec3(0.0), 1);
+    auto scene = [](const Crowd& c) {
+        csg::Scene s = make_scene(c.tree);
+        s.camera.position = glm::dvec3(1.5, -6, 2.5);
+        s.camera.look_at = glm::dvec3(0.0);
+        s.lights[0].position = glm::dvec3(-5, -8, 10);
+        return s;
+    };
+    const csg::Scene s1 = scene(c1), s2 = scene(c2);
+    const glm::dvec3 cam = s1.camera.position;
+    int differ = 0, hits = 0;
+    for (int i = 0; i < 200; ++i) {
+        const Ball& b = c2.balls[std::size_t(g2.pick(int(c2.balls.size())))];
+        const glm::dvec3 d = aim(g2, cam, b, 1e-2, false);
+        const render::TraceRay ray{cam, d, 0, kInf};
+        render::TraceScratch kept, fresh;
+        render::TraceHit h1, h2, h3;
+        {
+            const auto first = std::make_unique<render::CsgTracer>(s1, false);
+            first->intersect(ray, h1, kept);
+        }
+        const auto second = std::make_unique<render::CsgTracer>(s2, false);
+        const bool a = second->intersect(ray, h2, kept), b2 = second->intersect(ray, h3, fresh);
+        INFO("ray " << i);
+        CHECK(a == b2);
+        differ += a != b2 || (a && h2.t != h3.t);
+        hits += b2;
+        CHECK(is_first_entry(s2, cam, d, b2 ? h3.t : kInf, 14, 1e-7));
+    }
+    CHECK(differ == 0);
+    CHECK(hits > 100);
 }
