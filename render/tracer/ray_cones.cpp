@@ -127,7 +127,7 @@ void CsgTracer::Impl::build_apexes() {
             const Ball& b = top.balls[i];
             // The ball, grown by those slacks and by rho: the ray lies within
             // rho of its cone.
-            radius[i] = b.r + slack_abs + rel * (l1(b.c - p) + ap.reach + ap.rho + b.r) + ap.rho;
+            radius[i] = grown_radius(b.r, slack_abs, rel, l1(b.c - p) + ap.reach + ap.rho + b.r) + ap.rho;
             key[i] = glm::length(b.c - p) - radius[i];
         }
         ap.order.resize(n);
