@@ -62,6 +62,7 @@ int run(const Options& o) {
     if (o.stats) {
         print_stats(stats, image);
         std::fputs(phase_memory_line(memory).c_str(), stderr);
+        std::fputs(phase_time_line(memory).c_str(), stderr);
     }
     return kOk;
 }

@@ -1,17 +1,24 @@
 #include "cli/phase_memory.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 
 namespace kerf::cli {
 
+namespace {
+// Set during static initialisation, before main: the origin of the marks' times.
+const std::chrono::steady_clock::time_point g_start = std::chrono::steady_clock::now();
+}  // namespace
+
 void PhaseMemory::enter(const char* name) {
     std::lock_guard lock(mutex_);
     if (name && current_ == name) return;
     if (!current_.empty()) {
-        Mark m{current_, -1, -1};
+        Mark m{current_, -1, -1,
+               std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - g_start).count()};
         std::ifstream status("/proc/self/status");
         for (std::string line; std::getline(status, line);) {
             if (line.rfind("VmHWM:", 0) == 0) m.peak_kb = std::strtol(line.c_str() + 6, nullptr, 10);
@@ -35,6 +42,22 @@ std::string phase_memory_line(const PhaseMemory& m) {
         const PhaseMemory::Mark& k = m.marks()[i];
         std::snprintf(buf, sizeof buf, "%s %s %.0f/%.0f", i ? "," : "", k.phase.c_str(), k.peak_kb / 1024.0,
                       k.resident_kb / 1024.0);
+        line += buf;
+    }
+    return line + "\n";
+}
+
+}  // namespace kerf::cli
+
+namespace kerf::cli {
+
+std::string phase_time_line(const PhaseMemory& m) {
+    if (m.marks().empty()) return {};
+    std::string line = "stats: time (ms since start-up) at the end of:";
+    char buf[96];
+    for (std::size_t i = 0; i < m.marks().size(); ++i) {
+        const PhaseMemory::Mark& k = m.marks()[i];
+        std::snprintf(buf, sizeof buf, "%s %s %.1f", i ? "," : "", k.phase.c_str(), k.ms);
         line += buf;
     }
     return line + "\n";
