@@ -65,7 +65,15 @@ CsgTracer::Impl::~Impl() {
     if (device) rtcReleaseDevice(device);
 }
 
-void CsgTracer::Impl::build_accel(Accel& accel, const std::vector<std::uint32_t>& nodes, bool top_level) {
+void Accel::commit_now() const {
+    const std::lock_guard lock(commit_lock);
+    if (committed.load(std::memory_order_relaxed)) return;  // another thread built it meanwhile
+    rtcCommitScene(bvh);
+    check_embree(device, "the scene");
+    committed.store(true, std::memory_order_release);
+}
+
+void CsgTracer::Impl::build_accel(Accel& accel, const std::vector<std::uint32_t>& nodes, bool top_level, bool lazy) {
     for (std::uint32_t node : nodes) {
         const csg::Aabb& b = scene.nodes[node].bounds;
         if (b.empty()) continue;  // an empty solid can never be hit
@@ -107,6 +115,11 @@ void CsgTracer::Impl::build_accel(Accel& accel, const std::vector<std::uint32_t>
     rtcCommitGeometry(geom);
     rtcAttachGeometry(accel.bvh, geom);
     rtcReleaseGeometry(geom);
+    if (lazy) {
+        accel.device = device;
+        accel.committed.store(false, std::memory_order_release);
+        return;
+    }
     rtcCommitScene(accel.bvh);
     check_embree(device, "the scene");
     std::vector<RTCBounds>().swap(accel.boxes);
@@ -214,7 +227,9 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
                                             scene.children.begin() + n.first + n.count);
             impl_->node_accels.push_back(std::make_unique<Accel>());
             Accel& accel = *impl_->node_accels.back();
-            impl_->build_accel(accel, kids, false);
+            // A difference's BVH waits for its first query (Accel::ready), but
+            // not a huge one's: its boxes would stay resident until then.
+            impl_->build_accel(accel, kids, false, n.op == Op::Difference && kids.size() < kHugeAccel);
             if (n.op == Op::Difference && accel.bvh) {
                 std::vector<csg::Aabb> boxes;
                 for (std::uint32_t item : accel.items) boxes.push_back(impl_->padded[item]);

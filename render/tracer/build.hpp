@@ -1,6 +1,7 @@
 // What a CsgTracer builds once and every query then only reads: the Embree
 // device, the top BVH over the root's units, the own BVHs of large union and
-// difference nodes, and one triangle scene per mesh. Its own header because
+// difference nodes (a difference's committed on first use: Accel::ready),
+// and one triangle scene per mesh. Its own header because
 // the build (build.cpp, mesh_spans.cpp) and the per-ray files all
 // need the layout.
 #pragma once
@@ -8,6 +9,7 @@
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <vector>
 
 #include <embree3/rtcore.h>
@@ -31,6 +33,23 @@ struct Accel {
     std::vector<SphereMinus> sphere_minus;  // top only: per item, or empty (ball_chords.hpp)
     std::vector<SubBound> subs;             // their subtrahends
     BoxGrid grid;  // a big difference's subtrahends, listing node ids (box_grid.hpp); else empty
+
+    // A big difference's BVH is committed (built) by the first query that
+    // needs it, not with the tracer: its grid answers nearly every query
+    // (holes_40 makes none of Embree), and the build was ~1 ms of serial
+    // start-up (docs/performance.md, "Holes, the process around the
+    // render"). Until then `boxes` stay for Embree's bounds callback.
+    // Thread-safe: the first caller builds under the lock, the others wait.
+    void ready() const {
+        if (committed.load(std::memory_order_acquire)) return;
+        commit_now();
+    }
+    mutable std::atomic<bool> committed{true};  // false: `bvh` holds its geometry, not yet built
+    RTCDevice device = nullptr;                 // for the error check after a late commit
+
+private:
+    void commit_now() const;  // build.cpp
+    mutable std::mutex commit_lock;
 };
 
 // Embree reports failures (out of memory above all) as null handles and
@@ -122,7 +141,8 @@ struct CsgTracer::Impl {
         return ++counter;
     }
     ~Impl();
-    void build_accel(Accel& accel, const std::vector<std::uint32_t>& nodes, bool top_level);
+    // `lazy`: leave the commit to the first query (Accel::ready).
+    void build_accel(Accel& accel, const std::vector<std::uint32_t>& nodes, bool top_level, bool lazy = false);
     void local_tolerances(const std::vector<std::uint32_t>& units);  // build.cpp
     void build_meshes();  // mesh_spans.cpp
     void build_prism_grids();  // prism_spans.cpp

@@ -249,6 +249,7 @@ void RayState::collect(const Accel& accel, double a, double b) {
     ctx.a = a;
     ctx.b = b;
     RTCRayHit rh = make_rayhit(*this, a, b);
+    accel.ready();
     rtcIntersect1(accel.bvh, &ctx.rtc, &rh);
 }
 

@@ -8,9 +8,13 @@
 // minuend's face where the subtrahend should have cut it.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <latch>
 #include <limits>
 #include <random>
+#include <thread>
+#include <vector>
 
 #include "tests/render/random_csg.hpp"
 #include "render/tracer/tracer.hpp"
@@ -250,6 +254,51 @@ TEST_CASE("difference with a subtrahend grid: first entries and shadows match po
         CHECK(blocked > 500);
         CHECK(open > 300);
     }
+}
+
+TEST_CASE("a big difference has its own BVH built by its first query, from two threads at once", "[render][difference]") {
+    // The holed box under an intersection with a ball: the intersection asks
+    // the difference for all its spans along the ball's chord, which spans
+    // more grid cells than the grid answers for, so the gather goes to the
+    // difference's BVH, committed only then (build.hpp, Accel::ready). Two
+    // threads start on a fresh tracer at once; every first entry must match
+    // point membership (an uncommitted BVH finds no subtrahend, and the
+    // holes' walls would be missing).
+    const csg::Scene s = make_scene(op(Op::Intersection, {holed(glm::dmat4(1)), leaf(sphere(1.3, glm::dmat4(1)))}));
+    const render::CsgTracer tracer(s, false);
+    struct Ray {
+        glm::dvec3 o, d;
+        double t;
+    };
+    std::vector<Ray> rays[2];
+    std::latch start(2);
+    const auto shoot = [&](int who) {
+        std::mt19937_64 rng(77 + who);
+        std::uniform_real_distribution<double> u(-1, 1);
+        render::TraceScratch scratch;
+        start.arrive_and_wait();
+        for (int i = 0; i < 1500; ++i) {
+            const glm::dvec3 target(u(rng), u(rng), 0.9 * u(rng));
+            const glm::dvec3 o = 4.0 * glm::normalize(glm::dvec3(u(rng), u(rng), 0.3 * u(rng)) + 1e-3);
+            const glm::dvec3 d = glm::normalize(target - o);
+            render::TraceHit hit;
+            rays[who].push_back({o, d, tracer.intersect(render::TraceRay{o, d, 0, kInf}, hit, scratch) ? hit.t : kInf});
+        }
+    };
+    std::thread other(shoot, 1);
+    shoot(0);
+    other.join();
+    int walls = 0;  // entries on a hole's wall or the ball, not the box's faces
+    for (int who = 0; who < 2; ++who)
+        for (std::size_t i = 0; i < rays[who].size(); ++i) {
+            const Ray& r = rays[who][i];
+            INFO("thread " << who << " ray " << i << " first entry " << r.t);
+            CHECK(is_first_entry(s, r.o, r.d, r.t));
+            const glm::dvec3 p = r.o + r.t * r.d;
+            if (std::isfinite(r.t) && std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) < 1 - 1e-6) ++walls;
+        }
+    INFO(walls << " entries inside the box");
+    CHECK(walls > 300);
 }
 
 // A ray that cuts the minuend's edge over less than the degenerate rule
