@@ -25,7 +25,7 @@ public:
           // A straight edge located to 1/2^steps of a side: 1/16 for the
           // default 16 samples, as fine as their 4 × 4 strata.
           steps_(std::max(1, int(std::ceil(std::log2(double(options.aa_samples)))))),
-          generation_(CornerProbes::next_generation()) {}
+          precision_(std::ldexp(1.0, -steps_)), generation_(CornerProbes::next_generation()) {}
 
     // The pixels [x0, x1) of row y, one row of a block of a tile (tiles.hpp;
     // `traced` false: a culled block's). Most pixels keep their centre:
@@ -104,6 +104,13 @@ private:
     };
     std::optional<Prediction> predicted(int cx, int cy, bool vertical, const CornerProbe& p,
                                         const CornerProbe& q) const;
+    // The signed distance from world point w to the leaf whose surface `hit` is on.
+    double leaf_distance(const TraceHit& hit, const glm::dvec3& w) const {
+        const csg::Leaf& leaf = sampler_.scene().leaves[hit.surface.leaf];
+        return csg::surface_distance(leaf, leaf.object_from_world.point(w));
+    }
+    bool faces_show(int x, int y, glm::dvec2 at, const std::array<const CornerProbe*, 4>& k, const int (&face)[2],
+                    const int (&other)[2], std::uint32_t surface) const;
     std::optional<glm::dvec3> straight_edge(int x, int y, const std::array<const CornerProbe*, 4>& k, ThreadState& ts,
                                             bool traced) const;
     bool by_surface(int x, int y, const std::array<const CornerProbe*, 4>& k, std::array<bool, 4>& a, int& b,
@@ -121,6 +128,7 @@ private:
     const SamplePattern refine_;
     const int threshold_;
     const int steps_;
+    const double precision_;  // 1/2^steps_ of a side
     const std::uint64_t generation_;
 };
 
@@ -220,11 +228,7 @@ std::optional<Refinement::Prediction> Refinement::predicted(int cx, int cy, bool
     if (!sampler_.ray(cx, cy, o0, d0) || !sampler_.ray(cx + !vertical, cy + vertical, o1, d1)) return std::nullopt;
     const glm::dvec3 at_p = o0 + p.hit.t * d0, at_q = o1 + q.hit.t * d1;
     const TangentPlane p_plane{at_p, sampler_.normal(p.hit, at_p)}, q_plane{at_q, sampler_.normal(q.hit, at_q)};
-    const csg::Scene& scene = sampler_.scene();
-    const auto distance = [&](const TraceHit& hit, const glm::dvec3& w) {
-        const csg::Leaf& leaf = scene.leaves[hit.surface.leaf];
-        return csg::surface_distance(leaf, leaf.object_from_world.point(w));
-    };
+    const auto distance = [&](const TraceHit& hit, const glm::dvec3& w) { return leaf_distance(hit, w); };
     // Where `face` (the plane of the corner whose ray is (fo, fd) and hit
     // `own`) meets the other corner's leaf (`other`, ray (go, gd)), and
     // whether that is exact.
@@ -287,7 +291,7 @@ const SideProbe& Refinement::side(int cx, int cy, bool vertical, ThreadState& ts
         if (color) s.sum[seen] += *color, ++s.count[seen];
         return true;
     };
-    const double precision = std::ldexp(1.0, -steps_);
+    const double precision = precision_;
     // Between two surfaces (only the surface decides, unshaded) the
     // prediction's two samples bracket the edge to the precision.
     // Where the prediction is exact (predicted()), one of them: the one
@@ -298,8 +302,10 @@ const SideProbe& Refinement::side(int cx, int cy, bool vertical, ThreadState& ts
             if (e->confirm != 0) {
                 const double m = e->confirm > 0 ? past : before;
                 const double l = lo, h = hi;
-                if (m > lo && m < hi && step(m) && (e->confirm > 0 ? hi == m : lo == m))
+                if (m > lo && m < hi && step(m) && (e->confirm > 0 ? hi == m : lo == m)) {
                     lo = std::max(l, before), hi = std::min(h, past);
+                    s.exact = std::int8_t(e->confirm);
+                }
             } else {
                 for (const double m : {before, past})
                     if (m > lo && m < hi && !step(m)) break;
@@ -356,6 +362,50 @@ bool Refinement::by_surface(int x, int y, const std::array<const CornerProbe*, 4
     return true;
 }
 
+// Whether the surfaces' local model says the ray through pixel (x, y)'s
+// point `at` sees `surface`, without tracing it: where both sides the edge
+// crosses were located by exact predictions (predicted(): face corner
+// `face[j]`'s plane meets corner `other[j]`'s leaf on the face's own
+// surface, confirmed by a sample) from one surface's face against one
+// other leaf. Along each face's plane, the ray through `at` meets the plane
+// on the face's own surface (its leaf's distance within 1/256 of the way
+// from the face's corner), and the other leaf's distance there, clear of
+// 0 by as much, has the sign it has at the face's corner (the face shows
+// there) or the other (the other surface does). The corner test's sample
+// past the line's middle (straight_edge) asks this: a corner of the solid
+// there, or an edge curving past it, puts the point on the other side, or
+// off the face; where a face is curved (its plane leaves its surface) or
+// the point lies on the edge, nothing is said and the sample is traced.
+// What it cannot see, as no model can: a third surface that reaches the
+// point but none of the pixel's corners, side samples and centre.
+bool Refinement::faces_show(int x, int y, glm::dvec2 at, const std::array<const CornerProbe*, 4>& k,
+                            const int (&face)[2], const int (&other)[2], std::uint32_t surface) const {
+    if (face[0] < 0 || face[1] < 0) return false;
+    const std::uint32_t a = k[face[0]]->surface, b = k[other[0]]->surface;
+    if (k[face[1]]->surface != a || k[other[1]]->surface != b || a == b || (surface != a && surface != b))
+        return false;
+    glm::dvec3 o, d;
+    if (!sampler_.ray(x + at.x, y + at.y, o, d)) return false;
+    for (int j = 0; j < 2 && (j == 0 || face[1] != face[0]); ++j) {
+        const CornerProbe &f = *k[face[j]], &g = *k[other[j]];
+        const glm::dvec2 c = glm::dvec2(x, y) + pixel_corner(face[j]);
+        glm::dvec3 fo, fd;
+        if (!sampler_.ray(c.x, c.y, fo, fd)) return false;
+        const glm::dvec3 at_f = fo + f.hit.t * fd, n = sampler_.normal(f.hit, at_f);
+        const double along = glm::dot(n, d);
+        if (!(std::abs(along) > 0)) return false;
+        const double t = glm::dot(n, at_f - o) / along;
+        if (!(t > 0)) return false;
+        const glm::dvec3 w = o + t * d;
+        const double tolerance = glm::distance(at_f, w) / 256;
+        const double own = leaf_distance(f.hit, w), across = leaf_distance(g.hit, w),
+                     at_face = leaf_distance(g.hit, at_f);
+        if (!(std::abs(own) <= tolerance) || !(std::abs(across) > tolerance) || at_face == 0) return false;
+        if (((across > 0) == (at_face > 0) ? a : b) != surface) return false;
+    }
+    return true;
+}
+
 // Pixel (x, y)'s colour if one straight edge crosses it (`k`: its corners
 // in order round it), else nothing.
 std::optional<glm::dvec3> Refinement::straight_edge(int x, int y, const std::array<const CornerProbe*, 4>& k,
@@ -388,6 +438,9 @@ std::optional<glm::dvec3> Refinement::straight_edge(int x, int y, const std::arr
     if (changes != 2) return std::nullopt;  // two edges, or a corner of the solid
     std::array<glm::dvec2, 4> cross{};
     int crossed[2], n = 0;
+    // Per crossed side, the corner whose face's exact prediction located
+    // it and the corner across (-1: not located so).
+    int face[2] = {-1, -1}, other[2] = {-1, -1};
     for (int i = 0; i < 4; ++i) {
         if (a[i] == a[(i + 1) % 4]) continue;
         // Side i of the pixel runs from corner i to i + 1; the probes run
@@ -401,13 +454,17 @@ std::optional<glm::dvec3> Refinement::straight_edge(int x, int y, const std::arr
         sum[!first_a] += s.sum[0], count[!first_a] += s.count[0];
         sum[first_a] += s.sum[1], count[first_a] += s.count[1];
         cross[i] = on_side(i, backwards ? 1 - s.at : s.at);
+        if (s.exact != 0) {
+            face[n] = (s.exact > 0) != backwards ? i : (i + 1) % 4;
+            other[n] = face[n] == i ? (i + 1) % 4 : i;
+        }
         crossed[n++] = i;
     }
     // The centre must lie on its own class's side of the line (or within
     // the crossings' precision of it): else the edge bends. (Corner 0 is of
     // class A.)
     const double d = side_distance(cross[crossed[0]], cross[crossed[1]], pixel_corner(0), {0.5, 0.5});
-    const double tolerance = std::ldexp(1.0, -steps_);
+    const double tolerance = precision_;
     if (centre_a ? d < -tolerance : d > tolerance) return std::nullopt;
     // Two adjacent sides cut off the corner between them. A corner of the
     // solid there (two edges meeting inside the pixel) keeps that corner's
@@ -418,9 +475,11 @@ std::optional<glm::dvec3> Refinement::straight_edge(int x, int y, const std::arr
         const int odd = crossed[1] - crossed[0] == 1 ? crossed[1] : 0, rest = (odd + 2) % 4;
         const glm::dvec2 m = (cross[crossed[0]] + cross[crossed[1]]) / 2.0;
         const glm::dvec2 at = m + 2 * tolerance * glm::normalize(m - pixel_corner(odd));
-        std::optional<glm::dvec3> color;
-        if (like(x + at.x, y + at.y, *k[rest], *k[odd], ts, traced, color) != 0) return std::nullopt;
-        if (color) sum[!a[rest]] += *color, ++count[!a[rest]];
+        if (!faces_show(x, y, at, k, face, other, k[rest]->surface)) {
+            std::optional<glm::dvec3> color;
+            if (like(x + at.x, y + at.y, *k[rest], *k[odd], ts, traced, color) != 0) return std::nullopt;
+            if (color) sum[!a[rest]] += *color, ++count[!a[rest]];
+        }
     }
     for (int i = 0; i < 4; ++i) sum[!a[i]] += k[i]->color, ++count[!a[i]];
     sum[!centre_a] += centre_color(x, y, ts, traced), ++count[!centre_a];
