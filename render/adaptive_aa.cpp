@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <optional>
-#include <tuple>
 
 #include "csg/membership.hpp"
 #include "render/adaptive.hpp"
@@ -104,6 +103,17 @@ private:
     };
     std::optional<Prediction> predicted(int cx, int cy, bool vertical, const CornerProbe& p,
                                         const CornerProbe& q) const;
+    // The tangent plane at corner (cx, cy)'s hit (`p`, which hit the solid).
+    const TangentPlane& plane(double cx, double cy, const CornerProbe& p) const {
+        if (!p.has_plane) {
+            glm::dvec3 o, d;
+            sampler_.ray(cx, cy, o, d);
+            const glm::dvec3 at = o + p.hit.t * d;
+            p.plane = TangentPlane{at, sampler_.normal(p.hit, at)};
+            p.has_plane = true;
+        }
+        return p.plane;
+    }
     // The signed distance from world point w to the leaf whose surface `hit` is on.
     double leaf_distance(const TraceHit& hit, const glm::dvec3& w) const {
         const csg::Leaf& leaf = sampler_.scene().leaves[hit.surface.leaf];
@@ -226,13 +236,11 @@ std::optional<Refinement::Prediction> Refinement::predicted(int cx, int cy, bool
     if (p.hit.t < 0 || q.hit.t < 0) return std::nullopt;
     glm::dvec3 o0, d0, o1, d1;
     if (!sampler_.ray(cx, cy, o0, d0) || !sampler_.ray(cx + !vertical, cy + vertical, o1, d1)) return std::nullopt;
-    const glm::dvec3 at_p = o0 + p.hit.t * d0, at_q = o1 + q.hit.t * d1;
-    const TangentPlane p_plane{at_p, sampler_.normal(p.hit, at_p)}, q_plane{at_q, sampler_.normal(q.hit, at_q)};
+    const TangentPlane &p_plane = plane(cx, cy, p), &q_plane = plane(cx + !vertical, cy + vertical, q);
     const auto distance = [&](const TraceHit& hit, const glm::dvec3& w) { return leaf_distance(hit, w); };
     // Where `face` (the plane of the corner whose ray is (fo, fd) and hit
     // `own`) meets the other corner's leaf (`other`, ray (go, gd)), and
     // whether that is exact.
-    std::optional<Prediction> first;
     const auto meets = [&](const TangentPlane& face, const TraceHit& own, const TraceHit& other, const glm::dvec3& go,
                            const glm::dvec3& gd, int towards) -> std::optional<Prediction> {
         const std::optional<double> e = crossing_on_plane(o0, d0, o1, d1, face, [&](const glm::dvec3& w) {
@@ -249,13 +257,14 @@ std::optional<Refinement::Prediction> Refinement::predicted(int cx, int cy, bool
         if (std::abs(distance(own, on_face(*e))) <= tolerance && behind > 0 && other.t > behind) r.confirm = towards;
         return r;
     };
-    for (const auto& [face, own, other, go, gd, towards] :
-         {std::tuple{p_plane, p.hit, q.hit, o1, d1, 1}, std::tuple{q_plane, q.hit, p.hit, o0, d0, -1}}) {
-        const std::optional<Prediction> e = meets(face, own, other, go, gd, towards);
-        if (e && e->confirm) return e;
-        if (e && !first) first = e;
-    }
-    if (first) return first;
+    // p's face first, then q's (not copied into a list of tuples: their
+    // copies showed in the profile).
+    const std::optional<Prediction> from_p = meets(p_plane, p.hit, q.hit, o1, d1, 1);
+    if (from_p && from_p->confirm) return from_p;
+    const std::optional<Prediction> from_q = meets(q_plane, q.hit, p.hit, o0, d0, -1);
+    if (from_q && from_q->confirm) return from_q;
+    if (from_p) return from_p;
+    if (from_q) return from_q;
     if (const std::optional<double> e = predicted_crossing(o0, d0, o1, d1, p_plane, q_plane)) return Prediction{*e, 0};
     return std::nullopt;
 }
@@ -389,9 +398,8 @@ bool Refinement::faces_show(int x, int y, glm::dvec2 at, const std::array<const 
     for (int j = 0; j < 2 && (j == 0 || face[1] != face[0]); ++j) {
         const CornerProbe &f = *k[face[j]], &g = *k[other[j]];
         const glm::dvec2 c = glm::dvec2(x, y) + pixel_corner(face[j]);
-        glm::dvec3 fo, fd;
-        if (!sampler_.ray(c.x, c.y, fo, fd)) return false;
-        const glm::dvec3 at_f = fo + f.hit.t * fd, n = sampler_.normal(f.hit, at_f);
+        const TangentPlane& face_plane = plane(c.x, c.y, f);  // its ray was traced: the camera has it
+        const glm::dvec3 &at_f = face_plane.point, &n = face_plane.normal;
         const double along = glm::dot(n, d);
         if (!(std::abs(along) > 0)) return false;
         const double t = glm::dot(n, at_f - o) / along;

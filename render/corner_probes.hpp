@@ -13,6 +13,7 @@
 
 #include <glm/glm.hpp>
 
+#include "render/edge_crossing.hpp"
 #include "render/tiles.hpp"
 #include "render/tracer/tracer.hpp"
 
@@ -26,6 +27,10 @@ struct CornerProbe {
     std::uint64_t look = 0;  // what it looks like to the first pass (CentreSamples::look; the ground as a miss)
     double cover = 0;        // what the sample added to the pixel's coverage (--alpha)
     TraceHit hit{-1, {}};    // the solid surface it hit (ThreadState::hit; t < 0: none)
+    // The surface's tangent plane at the hit, found once when first asked
+    // for (adaptive_aa.cpp): each corner's is asked for by up to 4 sides.
+    mutable bool has_plane = false;
+    mutable TangentPlane plane;
 };
 
 // Where the look changes along a side, from its first corner (left or
