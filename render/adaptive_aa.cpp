@@ -620,7 +620,11 @@ bool render_adaptive(const TilePasses& tiles, const PixelSampler& sampler, const
         complete &= tiles.run_rows({region[0], y0, region[2], y1}, progress_part(progress, from + (to - from) / 4, to),
                                    [&](int x0, int x1, int y, ThreadState& ts, bool traced) {
                                        refinement.row(x0, x1, y, ts, traced);
-                                   });
+                                   },
+                                   // Not culled again: the first pass asked already, and the
+                                   // candidates' rays in culled blocks are few and cheap (they
+                                   // miss the solid's box).
+                                   false);
     }
     return complete;
 }

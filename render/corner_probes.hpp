@@ -65,12 +65,27 @@ public:
     // tile asks for few of its slots, and not for long) waited for memory
     // (perf on holes_40 at 2048² put a quarter of candidate()'s own time
     // on that one load).
+    //
+    // The tile right of the current one (the next one this thread takes,
+    // most often) starts with the probes the two share: the corners on
+    // their common border and the sides along it, moved over (they have no
+    // jitter: the same values either tile would trace).
     void enter(int x0, int y0, std::uint64_t generation) {
         if (x0 == x0_ && y0 == y0_ && generation == generation_) return;
+        const bool right = generation == generation_ && y0 == y0_ && x0 == x0_ + kTile;
+        const std::uint32_t before = tile_;
         x0_ = x0, y0_ = y0, generation_ = generation;
         if (++tile_ == 0) {  // the numbers wrapped round: no slot may hold the new one
             corner_tiles_.fill(0), side_tiles_.fill(0);
             tile_ = 1;
+            return;
+        }
+        if (!right || before == 0) return;
+        for (std::size_t row = 0; row <= std::size_t(kTile); ++row) {
+            const std::size_t from = row * (kTile + 1) + kTile, to = row * (kTile + 1);
+            if (corner_tiles_[from] == before) probes_[to] = probes_[from], corner_tiles_[to] = tile_;
+            if (row < std::size_t(kTile) && side_tiles_[kCorners + from] == before)
+                sides_[kCorners + to] = sides_[kCorners + from], side_tiles_[kCorners + to] = tile_;
         }
     }
     // The corner (cx, cy) of the current tile: x0 <= cx <= x0 + kTile, the same for y.
