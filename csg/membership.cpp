@@ -87,9 +87,19 @@ double surface_distance(const Leaf& leaf, const glm::dvec3& x) {
             return glm::length(glm::max(q, glm::dvec3(0.0))) + inner;
         }
         case PrimKind::Cylinder: {
-            // Distance to the side line is (ρ - r(z)) · cos(atan(slope)).
-            const double slope = (c[3] - c[2]) / (c[1] - c[0]);
-            const double side = (radial(x) - cone_radius(c, x.z)) / std::sqrt(1 + slope * slope);
+            // Distance to the side line is (ρ - r(z)) · cos(atan(slope)); a
+            // straight cylinder's is ρ - r. ρ as sqrt, not hypot: this is
+            // adaptive AA's edge prediction's inner loop, where glibc's
+            // hypot (careful about overflow past 1e154) cost as much time
+            // as the rest of the distance (docs/quality.md).
+            const double rho = std::sqrt(x.x * x.x + x.y * x.y);
+            double side;
+            if (c[2] == c[3]) {
+                side = rho - c[2];
+            } else {
+                const double slope = (c[3] - c[2]) / (c[1] - c[0]);
+                side = (rho - cone_radius(c, x.z)) / std::sqrt(1 + slope * slope);
+            }
             const double caps = std::max(c[0] - x.z, x.z - c[1]);
             if (side > 0 && caps > 0) return std::hypot(side, caps);  // outside the rim
             return std::max(side, caps);

@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <optional>
-#include <tuple>
 
 #include "csg/membership.hpp"
 #include "render/adaptive.hpp"
@@ -25,7 +24,7 @@ public:
           // A straight edge located to 1/2^steps of a side: 1/16 for the
           // default 16 samples, as fine as their 4 × 4 strata.
           steps_(std::max(1, int(std::ceil(std::log2(double(options.aa_samples)))))),
-          generation_(CornerProbes::next_generation()) {}
+          precision_(std::ldexp(1.0, -steps_)), generation_(CornerProbes::next_generation()) {}
 
     // The pixels [x0, x1) of row y, one row of a block of a tile (tiles.hpp;
     // `traced` false: a culled block's). Most pixels keep their centre:
@@ -104,6 +103,24 @@ private:
     };
     std::optional<Prediction> predicted(int cx, int cy, bool vertical, const CornerProbe& p,
                                         const CornerProbe& q) const;
+    // The tangent plane at corner (cx, cy)'s hit (`p`, which hit the solid).
+    const TangentPlane& plane(double cx, double cy, const CornerProbe& p) const {
+        if (!p.has_plane) {
+            glm::dvec3 o, d;
+            sampler_.ray(cx, cy, o, d);
+            const glm::dvec3 at = o + p.hit.t * d;
+            p.plane = TangentPlane{at, sampler_.normal(p.hit, at)};
+            p.has_plane = true;
+        }
+        return p.plane;
+    }
+    // The signed distance from world point w to the leaf whose surface `hit` is on.
+    double leaf_distance(const TraceHit& hit, const glm::dvec3& w) const {
+        const csg::Leaf& leaf = sampler_.scene().leaves[hit.surface.leaf];
+        return csg::surface_distance(leaf, leaf.object_from_world.point(w));
+    }
+    bool faces_show(int x, int y, glm::dvec2 at, const std::array<const CornerProbe*, 4>& k, const int (&face)[2],
+                    const int (&other)[2], std::uint32_t surface) const;
     std::optional<glm::dvec3> straight_edge(int x, int y, const std::array<const CornerProbe*, 4>& k, ThreadState& ts,
                                             bool traced) const;
     bool by_surface(int x, int y, const std::array<const CornerProbe*, 4>& k, std::array<bool, 4>& a, int& b,
@@ -121,6 +138,7 @@ private:
     const SamplePattern refine_;
     const int threshold_;
     const int steps_;
+    const double precision_;  // 1/2^steps_ of a side
     const std::uint64_t generation_;
 };
 
@@ -218,17 +236,11 @@ std::optional<Refinement::Prediction> Refinement::predicted(int cx, int cy, bool
     if (p.hit.t < 0 || q.hit.t < 0) return std::nullopt;
     glm::dvec3 o0, d0, o1, d1;
     if (!sampler_.ray(cx, cy, o0, d0) || !sampler_.ray(cx + !vertical, cy + vertical, o1, d1)) return std::nullopt;
-    const glm::dvec3 at_p = o0 + p.hit.t * d0, at_q = o1 + q.hit.t * d1;
-    const TangentPlane p_plane{at_p, sampler_.normal(p.hit, at_p)}, q_plane{at_q, sampler_.normal(q.hit, at_q)};
-    const csg::Scene& scene = sampler_.scene();
-    const auto distance = [&](const TraceHit& hit, const glm::dvec3& w) {
-        const csg::Leaf& leaf = scene.leaves[hit.surface.leaf];
-        return csg::surface_distance(leaf, leaf.object_from_world.point(w));
-    };
+    const TangentPlane &p_plane = plane(cx, cy, p), &q_plane = plane(cx + !vertical, cy + vertical, q);
+    const auto distance = [&](const TraceHit& hit, const glm::dvec3& w) { return leaf_distance(hit, w); };
     // Where `face` (the plane of the corner whose ray is (fo, fd) and hit
     // `own`) meets the other corner's leaf (`other`, ray (go, gd)), and
     // whether that is exact.
-    std::optional<Prediction> first;
     const auto meets = [&](const TangentPlane& face, const TraceHit& own, const TraceHit& other, const glm::dvec3& go,
                            const glm::dvec3& gd, int towards) -> std::optional<Prediction> {
         const std::optional<double> e = crossing_on_plane(o0, d0, o1, d1, face, [&](const glm::dvec3& w) {
@@ -245,13 +257,14 @@ std::optional<Refinement::Prediction> Refinement::predicted(int cx, int cy, bool
         if (std::abs(distance(own, on_face(*e))) <= tolerance && behind > 0 && other.t > behind) r.confirm = towards;
         return r;
     };
-    for (const auto& [face, own, other, go, gd, towards] :
-         {std::tuple{p_plane, p.hit, q.hit, o1, d1, 1}, std::tuple{q_plane, q.hit, p.hit, o0, d0, -1}}) {
-        const std::optional<Prediction> e = meets(face, own, other, go, gd, towards);
-        if (e && e->confirm) return e;
-        if (e && !first) first = e;
-    }
-    if (first) return first;
+    // p's face first, then q's (not copied into a list of tuples: their
+    // copies showed in the profile).
+    const std::optional<Prediction> from_p = meets(p_plane, p.hit, q.hit, o1, d1, 1);
+    if (from_p && from_p->confirm) return from_p;
+    const std::optional<Prediction> from_q = meets(q_plane, q.hit, p.hit, o0, d0, -1);
+    if (from_q && from_q->confirm) return from_q;
+    if (from_p) return from_p;
+    if (from_q) return from_q;
     if (const std::optional<double> e = predicted_crossing(o0, d0, o1, d1, p_plane, q_plane)) return Prediction{*e, 0};
     return std::nullopt;
 }
@@ -287,7 +300,7 @@ const SideProbe& Refinement::side(int cx, int cy, bool vertical, ThreadState& ts
         if (color) s.sum[seen] += *color, ++s.count[seen];
         return true;
     };
-    const double precision = std::ldexp(1.0, -steps_);
+    const double precision = precision_;
     // Between two surfaces (only the surface decides, unshaded) the
     // prediction's two samples bracket the edge to the precision.
     // Where the prediction is exact (predicted()), one of them: the one
@@ -298,8 +311,10 @@ const SideProbe& Refinement::side(int cx, int cy, bool vertical, ThreadState& ts
             if (e->confirm != 0) {
                 const double m = e->confirm > 0 ? past : before;
                 const double l = lo, h = hi;
-                if (m > lo && m < hi && step(m) && (e->confirm > 0 ? hi == m : lo == m))
+                if (m > lo && m < hi && step(m) && (e->confirm > 0 ? hi == m : lo == m)) {
                     lo = std::max(l, before), hi = std::min(h, past);
+                    s.exact = std::int8_t(e->confirm);
+                }
             } else {
                 for (const double m : {before, past})
                     if (m > lo && m < hi && !step(m)) break;
@@ -356,6 +371,49 @@ bool Refinement::by_surface(int x, int y, const std::array<const CornerProbe*, 4
     return true;
 }
 
+// Whether the surfaces' local model says the ray through pixel (x, y)'s
+// point `at` sees `surface`, without tracing it: where both sides the edge
+// crosses were located by exact predictions (predicted(): face corner
+// `face[j]`'s plane meets corner `other[j]`'s leaf on the face's own
+// surface, confirmed by a sample) from one surface's face against one
+// other leaf. Along each face's plane, the ray through `at` meets the plane
+// on the face's own surface (its leaf's distance within 1/256 of the way
+// from the face's corner), and the other leaf's distance there, clear of
+// 0 by as much, has the sign it has at the face's corner (the face shows
+// there) or the other (the other surface does). The corner test's sample
+// past the line's middle (straight_edge) asks this: a corner of the solid
+// there, or an edge curving past it, puts the point on the other side, or
+// off the face; where a face is curved (its plane leaves its surface) or
+// the point lies on the edge, nothing is said and the sample is traced.
+// What it cannot see, as no model can: a third surface that reaches the
+// point but none of the pixel's corners, side samples and centre.
+bool Refinement::faces_show(int x, int y, glm::dvec2 at, const std::array<const CornerProbe*, 4>& k,
+                            const int (&face)[2], const int (&other)[2], std::uint32_t surface) const {
+    if (face[0] < 0 || face[1] < 0) return false;
+    const std::uint32_t a = k[face[0]]->surface, b = k[other[0]]->surface;
+    if (k[face[1]]->surface != a || k[other[1]]->surface != b || a == b || (surface != a && surface != b))
+        return false;
+    glm::dvec3 o, d;
+    if (!sampler_.ray(x + at.x, y + at.y, o, d)) return false;
+    for (int j = 0; j < 2 && (j == 0 || face[1] != face[0]); ++j) {
+        const CornerProbe &f = *k[face[j]], &g = *k[other[j]];
+        const glm::dvec2 c = glm::dvec2(x, y) + pixel_corner(face[j]);
+        const TangentPlane& face_plane = plane(c.x, c.y, f);  // its ray was traced: the camera has it
+        const glm::dvec3 &at_f = face_plane.point, &n = face_plane.normal;
+        const double along = glm::dot(n, d);
+        if (!(std::abs(along) > 0)) return false;
+        const double t = glm::dot(n, at_f - o) / along;
+        if (!(t > 0)) return false;
+        const glm::dvec3 w = o + t * d;
+        const double tolerance = glm::distance(at_f, w) / 256;
+        const double own = leaf_distance(f.hit, w), across = leaf_distance(g.hit, w),
+                     at_face = leaf_distance(g.hit, at_f);
+        if (!(std::abs(own) <= tolerance) || !(std::abs(across) > tolerance) || at_face == 0) return false;
+        if (((across > 0) == (at_face > 0) ? a : b) != surface) return false;
+    }
+    return true;
+}
+
 // Pixel (x, y)'s colour if one straight edge crosses it (`k`: its corners
 // in order round it), else nothing.
 std::optional<glm::dvec3> Refinement::straight_edge(int x, int y, const std::array<const CornerProbe*, 4>& k,
@@ -388,6 +446,9 @@ std::optional<glm::dvec3> Refinement::straight_edge(int x, int y, const std::arr
     if (changes != 2) return std::nullopt;  // two edges, or a corner of the solid
     std::array<glm::dvec2, 4> cross{};
     int crossed[2], n = 0;
+    // Per crossed side, the corner whose face's exact prediction located
+    // it and the corner across (-1: not located so).
+    int face[2] = {-1, -1}, other[2] = {-1, -1};
     for (int i = 0; i < 4; ++i) {
         if (a[i] == a[(i + 1) % 4]) continue;
         // Side i of the pixel runs from corner i to i + 1; the probes run
@@ -401,13 +462,17 @@ std::optional<glm::dvec3> Refinement::straight_edge(int x, int y, const std::arr
         sum[!first_a] += s.sum[0], count[!first_a] += s.count[0];
         sum[first_a] += s.sum[1], count[first_a] += s.count[1];
         cross[i] = on_side(i, backwards ? 1 - s.at : s.at);
+        if (s.exact != 0) {
+            face[n] = (s.exact > 0) != backwards ? i : (i + 1) % 4;
+            other[n] = face[n] == i ? (i + 1) % 4 : i;
+        }
         crossed[n++] = i;
     }
     // The centre must lie on its own class's side of the line (or within
     // the crossings' precision of it): else the edge bends. (Corner 0 is of
     // class A.)
     const double d = side_distance(cross[crossed[0]], cross[crossed[1]], pixel_corner(0), {0.5, 0.5});
-    const double tolerance = std::ldexp(1.0, -steps_);
+    const double tolerance = precision_;
     if (centre_a ? d < -tolerance : d > tolerance) return std::nullopt;
     // Two adjacent sides cut off the corner between them. A corner of the
     // solid there (two edges meeting inside the pixel) keeps that corner's
@@ -418,9 +483,11 @@ std::optional<glm::dvec3> Refinement::straight_edge(int x, int y, const std::arr
         const int odd = crossed[1] - crossed[0] == 1 ? crossed[1] : 0, rest = (odd + 2) % 4;
         const glm::dvec2 m = (cross[crossed[0]] + cross[crossed[1]]) / 2.0;
         const glm::dvec2 at = m + 2 * tolerance * glm::normalize(m - pixel_corner(odd));
-        std::optional<glm::dvec3> color;
-        if (like(x + at.x, y + at.y, *k[rest], *k[odd], ts, traced, color) != 0) return std::nullopt;
-        if (color) sum[!a[rest]] += *color, ++count[!a[rest]];
+        if (!faces_show(x, y, at, k, face, other, k[rest]->surface)) {
+            std::optional<glm::dvec3> color;
+            if (like(x + at.x, y + at.y, *k[rest], *k[odd], ts, traced, color) != 0) return std::nullopt;
+            if (color) sum[!a[rest]] += *color, ++count[!a[rest]];
+        }
     }
     for (int i = 0; i < 4; ++i) sum[!a[i]] += k[i]->color, ++count[!a[i]];
     sum[!centre_a] += centre_color(x, y, ts, traced), ++count[!centre_a];
@@ -553,7 +620,11 @@ bool render_adaptive(const TilePasses& tiles, const PixelSampler& sampler, const
         complete &= tiles.run_rows({region[0], y0, region[2], y1}, progress_part(progress, from + (to - from) / 4, to),
                                    [&](int x0, int x1, int y, ThreadState& ts, bool traced) {
                                        refinement.row(x0, x1, y, ts, traced);
-                                   });
+                                   },
+                                   // Not culled again: the first pass asked already, and the
+                                   // candidates' rays in culled blocks are few and cheap (they
+                                   // miss the solid's box).
+                                   false);
     }
     return complete;
 }

@@ -107,12 +107,13 @@ void traced_row(ByRows<Row>& rows, int x0, int x1, int y, ThreadState& ts) {
 // `stack_need` bytes of stack left traces nothing (stack_depth.hpp); then
 // the result is false and the image incomplete. A tile is traced unless
 // its rays miss both the solid and the box `also` (where the ground shows a
-// shadow, render/ground.hpp; empty: nothing).
+// shadow, render/ground.hpp; empty: nothing). Not `cull`: every block is
+// traced (a pass whose pixels trace next to nothing where all rays miss).
 template <class Pixel, class Untraced>
 bool for_each_tile(tbb::task_arena& arena, const std::array<int, 4>& region, const CameraModel& camera,
                    const CsgTracer& tracer, const csg::Aabb& also, tbb::enumerable_thread_specific<ThreadState>& states,
                    const std::function<void(double)>& progress, std::size_t stack_need,
-                   const std::atomic<bool>* cancel, Pixel&& pixel, Untraced&& untraced) {
+                   const std::atomic<bool>* cancel, Pixel&& pixel, Untraced&& untraced, bool cull = true) {
     const int width = region[2] - region[0], height = region[3] - region[1];
     const int tiles_x = (width + kTile - 1) / kTile, tiles_y = (height + kTile - 1) / kTile;
     const int tiles = tiles_x * tiles_y;
@@ -138,7 +139,8 @@ bool for_each_tile(tbb::task_arena& arena, const std::array<int, 4>& region, con
                 const int tx1 = std::min(tx0 + kTile, region[2]), ty1 = std::min(ty0 + kTile, region[3]);
                 // Whether the block's pixels are traced, block by block.
                 bool traced[kBlocks][kBlocks];
-                cull_blocks(camera, tracer, also, tx0, ty0, tx1, ty1, traced);
+                if (cull) cull_blocks(camera, tracer, also, tx0, ty0, tx1, ty1, traced);
+                else std::fill_n(&traced[0][0], kBlocks * kBlocks, true);
                 for (int y = ty0; y < ty1; ++y) {
                     const bool* row = traced[(y - ty0) / kBlock];
                     for (int x0 = tx0; x0 < tx1; x0 += kBlock) {
@@ -192,12 +194,16 @@ struct TilePasses {
                              untraced);
     }
     // The same with every block's rows handed over whole: row(x0, x1, y,
-    // thread_state, traced) for the pixels [x0, x1) of row y.
+    // thread_state, traced) for the pixels [x0, x1) of row y. Not `cull`:
+    // all of them traced, none culled (traced true), for a pass that
+    // traces few rays, so that asking which blocks to cull costs more than
+    // the rays it would save (a culled ray gets what tracing gives).
     template <class Row>
-    bool run_rows(const std::array<int, 4>& region, const std::function<void(double)>& progress, Row&& row) const {
+    bool run_rows(const std::array<int, 4>& region, const std::function<void(double)>& progress, Row&& row,
+                  bool cull = true) const {
         ByRows<Row> rows{row};
         return for_each_tile(arena, region, camera, tracer, also, states, progress, stack_need, cancel, rows,
-                             [&row](int x0, int x1, int y, ThreadState& ts) { row(x0, x1, y, ts, false); });
+                             [&row](int x0, int x1, int y, ThreadState& ts) { row(x0, x1, y, ts, false); }, cull);
     }
 };
 
