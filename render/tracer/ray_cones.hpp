@@ -8,11 +8,14 @@
 // would drop (its padded ball misses the whole cone), so the rays of any
 // cone, on any thread, do the same work.
 //
-// Two levels for big crowds (more than kMaxConeUnits units): a scan of
-// every unit per cone is then most of the cost, and a cone narrow enough
-// for a short list needs many. So a wide cone (level 0) is listed from all
-// units, and the narrow cones (level 1) the rays use are listed from a wide
-// one that holds them: a thousandth of the units per narrow cone.
+// Two levels for big crowds (257 to kMaxTwoLevelUnits units of about one
+// ball size): a scan of every unit per cone is then most of the cost, and a
+// cone narrow enough for a short list needs many. So wide cones (level 0)
+// are listed from all units, and the narrow cones (level 1) the rays use
+// from the wide one holding them (~80 scanned, ~20 listed at cells_1000),
+// each sorted by its own key (where its rays can first reach a unit), and
+// a ray's cone is its direction's cell in a grid: its work depends on the
+// ray alone, as with one level.
 #pragma once
 #include <cstdint>
 #include <vector>
