@@ -129,7 +129,10 @@ struct CsgTracer::Impl {
     // The camera's and the point lights' positions (ray_cones.hpp), when
     // every unit has a ball and they are few; else empty.
     std::vector<Apex> apexes;
-    static constexpr std::size_t kMaxConeUnits = 256;
+    // One level of cones up to kMaxConeUnits units, two up to
+    // kMaxTwoLevelUnits (ray_cones.hpp); beyond, the ball BVH alone (the
+    // apexes' per-unit arrays grow with the units, and no scene was measured).
+    static constexpr std::size_t kMaxConeUnits = 256, kMaxTwoLevelUnits = 4096;
     // Unique per tracer in the process: a thread's cones name their owner
     // by it, not by address (a tracer built where a freed one stood must
     // not take that one's cones, whose unit indices are another scene's).

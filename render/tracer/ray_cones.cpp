@@ -25,46 +25,149 @@ namespace {
 
 double l1(const glm::dvec3& v) { return std::abs(v.x) + std::abs(v.y) + std::abs(v.z); }
 
-// The cone of apex `a` around dir (away from the apex, |dir| = st.len),
-// listed into `cone`.
-void build_cone(const RayState& st, std::uint32_t a, const glm::dvec3& dir, RayCone& cone) {
+// A lower bound on the distance from the apex of the points of the unit's
+// grown ball that lie in the cone of half-angle alpha around `axis` (a ray
+// of the cone keeps no point of the unit nearer the apex: see Apex::key):
+// at least the ball's own key, and, when the ball's centre lies at an angle
+// theta > alpha off the axis, where a direction phi = theta - alpha off the
+// centre's enters it (the nearest of the cone's directions to the centre;
+// the entry D·cos(phi) - sqrt(R² - D²·sin²(phi)) grows with phi up to the
+// tangent angle beta, where it stops). In a narrow cone of a crowd of balls
+// large against it, this orders the units nearly as its rays enter them,
+// and the loop's stop comes before units that lie beside the cone.
+// Round-off: alpha is taken 1e-6 wider (Apex::cos_key; sin(theta) from the
+// cosine is good to 1e-13 where theta > alpha >= 1e-3), the square root's
+// argument grows by 1e-12·D² (its cancellation near the tangent), and the
+// whole is lowered by 1e-9·D.
+double cone_key(const Apex& ap, int level, const ConeUnit& u, const glm::dvec3& axis) {
+    const double c = std::clamp(glm::dot(ap.towards[u.j], axis), -1.0, 1.0);
+    const double ca = ap.cos_key[level], sa = ap.sin_key[level];
+    if (ap.cos_beta[u.j] < -1 || c >= ca) return u.key;  // the apex in the ball, or theta <= alpha
+    const double st = std::sqrt(1 - c * c), d = ap.dist[u.j], s = ap.sin_beta[u.j];
+    double cp = c * ca + st * sa, sp = st * ca - c * sa;  // phi = theta - alpha
+    if (!(sp < s && cp > 0)) {
+        cp = ap.cos_beta[u.j];  // past the tangent: phi = beta
+        sp = s;
+    }
+    const double r = s * d, q = d * sp;
+    const double entry = d * cp - std::sqrt(std::max(0.0, r * r - q * q) + 1e-12 * d * d) - 1e-9 * d;
+    return std::max(u.key, entry);
+}
+
+// The cone of apex `a` and `level` around `axis` (unit, away from the
+// apex), listed into `cone` from `from` (the units of a wider cone that
+// holds it) or, with none, from every unit.
+void build_cone(const RayState& st, std::uint32_t a, int level, const glm::dvec3& axis, const RayCone* from,
+                RayCone& cone) {
     const Apex& ap = st.impl->apexes[a];
     cone.owner = st.impl->id;
     cone.apex = a;
-    cone.axis = dir / glm::length(dir);
+    cone.level = level;
+    cone.axis = axis;
     cone.units.clear();
-    cone.units.reserve(ap.order.size());  // once per slot and scene: no growth while listing
+    cone.units.reserve(from ? from->units.size() : ap.order.size());  // no growth while listing
     // A ball meets the cone when the angle from the axis to its centre is
     // at most alpha plus its angular radius beta: cos(angle) >= cos(alpha +
     // beta) (alpha + beta < pi). The margin 1e-12 in the cosines is beyond
     // their round-off (~1e-16) and widens the angle by at least as much.
-    for (std::size_t j = 0; j < ap.order.size(); ++j)
-        if (glm::dot(ap.towards[j], cone.axis) >=
-            ap.cos_alpha * ap.cos_beta[j] - ap.sin_alpha * ap.sin_beta[j] - 1e-12)
-            cone.units.push_back({ap.order[j], ap.key[j]});
+    const double ca = ap.cos_alpha[level], sa = ap.sin_alpha[level];
+    const auto meets = [&](std::uint32_t j) {
+        return glm::dot(ap.towards[j], cone.axis) >= ca * ap.cos_beta[j] - sa * ap.sin_beta[j] - 1e-12;
+    };
+    if (from) {
+        // A ball the wider cone left out misses it, so this one too (it lies
+        // in the wider cone: find_cone). Keyed by the cone's own bound.
+        for (const ConeUnit& u : from->units)
+            if (meets(u.j)) cone.units.push_back({u.item, u.j, cone_key(ap, level, u, cone.axis)});
+        std::sort(cone.units.begin(), cone.units.end(), [](const ConeUnit& x, const ConeUnit& y) {
+            return x.key < y.key || (x.key == y.key && x.j < y.j);
+        });
+        return;
+    }
+    for (std::uint32_t j = 0; j < ap.order.size(); ++j)
+        if (meets(j)) cone.units.push_back({ap.order[j], j, ap.key[j]});
 }
 
-// The thread's cone of apex `a` holding dir, built (over the oldest) when
-// none does.
-const RayCone* find_cone(const RayState& st, std::uint32_t a, const glm::dvec3& dir) {
+// The thread's cone of apex `a` and `level` whose axis lies within the angle
+// of cosine `need` of dir (|dir| = len), built (over the oldest of that
+// level) when none does (one level).
+const RayCone* find_cone(const RayState& st, std::uint32_t a, const glm::dvec3& dir, double need) {
     RayCones& rc = st.scratch->cones;
-    const double need = st.impl->apexes[a].cos_in * st.len;
+    const double need_len = need * st.len;
     const auto holds = [&](const RayCone& c) {
-        return c.owner == st.impl->id && c.apex == a && glm::dot(dir, c.axis) >= need;
+        return c.owner == st.impl->id && c.apex == a && glm::dot(dir, c.axis) >= need_len;
     };
-    int& last = rc.last[a];
-    if (holds(rc.cones[last])) return &rc.cones[last];
+    RayCone* cones = rc.cones[0];
+    int& last = rc.last[0][a];
+    if (holds(cones[last])) return &cones[last];
     for (int i = 0; i < RayCones::kSlots; ++i)
-        if (holds(rc.cones[i])) {
+        if (holds(cones[i])) {
             last = i;
-            return &rc.cones[i];
+            return &cones[i];
         }
-    RayCone& c = rc.cones[rc.next];
-    last = rc.next;
-    rc.next = (rc.next + 1) % RayCones::kSlots;
-    build_cone(st, a, dir, c);
+    int& next = rc.next[0];
+    RayCone& c = cones[next];
+    last = next;
+    next = (next + 1) % RayCones::kSlots;
+    build_cone(st, a, 0, dir / glm::length(dir), nullptr, c);
     ++rc.built;
     return holds(c) ? &c : nullptr;  // (a zero direction: no cone)
+}
+
+// floor(x) for |x| < 1e9, without a library call.
+std::int64_t floor_int(double x) {
+    const std::int64_t i = std::int64_t(x);
+    return double(i) > x ? i - 1 : i;
+}
+
+// Two levels: the cone of `level` serving direction dir (|dir| = len) is
+// the one around the centre of dir's cell in a grid of the apex's gnomonic
+// plane, whose cells' corners lie within the level's reach of their centres
+// (a plane distance is at least the angle), checked with `need`: so
+// neighbouring rays share cones that tile the directions, and a ray's cone
+// (and with it the order its units are met in, and the work) depends on the
+// ray alone, never on which cones the thread built before. Null when dir
+// lies far off the plane's centre (or behind it): then the ray takes the
+// ball BVH. A narrow cone is listed from the wide cone of its axis' cell
+// (it lies in that one: find_cone's need for level 0 is cos_sub).
+const RayCone* find_cell_cone(const RayState& st, std::uint32_t a, int level, const glm::dvec3& dir, double len,
+                              double need) {
+    const Apex& ap = st.impl->apexes[a];
+    const double w = glm::dot(dir, ap.e0), g = ap.grid[level];
+    if (!(w > 0.5 * len)) return nullptr;
+    const double inv = 1 / (w * g), x = glm::dot(dir, ap.e1) * inv, y = glm::dot(dir, ap.e2) * inv;
+    if (!(std::abs(x) < 1e9 && std::abs(y) < 1e9)) return nullptr;
+    const std::int64_t u = floor_int(x), v = floor_int(y);
+    RayCones& rc = st.scratch->cones;
+    const auto is = [&](const RayCone& c) { return c.owner == st.impl->id && c.apex == a && c.u == u && c.v == v; };
+    RayCone* cones = rc.cones[level];
+    int& last = rc.last[level][a];
+    if (is(cones[last])) return &cones[last];
+    for (int i = 0; i < RayCones::kSlots; ++i)
+        if (is(cones[i])) {
+            last = i;
+            return &cones[i];
+        }
+    const glm::dvec3 axis = glm::normalize(ap.e0 + ((double(u) + 0.5) * g) * ap.e1 + ((double(v) + 0.5) * g) * ap.e2);
+    if (!(glm::dot(dir, axis) >= need * len)) return nullptr;
+    const RayCone* from = level > 0 ? find_cell_cone(st, a, level - 1, axis, 1, ap.cos_sub[level]) : nullptr;
+    if (level > 0 && !from) return nullptr;
+    int& next = rc.next[level];
+    RayCone& c = cones[next];
+    last = next;
+    next = (next + 1) % RayCones::kSlots;
+    build_cone(st, a, level, axis, from, c);
+    c.u = u;
+    c.v = v;
+    ++rc.built;
+    return &c;
+}
+
+// The cone of the apex's finest level holding a ray of direction dir.
+const RayCone* ray_cone_around(const RayState& st, std::uint32_t a, const glm::dvec3& dir) {
+    const Apex& ap = st.impl->apexes[a];
+    if (ap.levels == 1) return find_cone(st, a, dir, ap.cos_in[0]);
+    return find_cell_cone(st, a, ap.levels - 1, dir, st.len, ap.cos_in[ap.levels - 1]);
 }
 
 }  // namespace
@@ -76,7 +179,7 @@ const RayCone* ray_cone_of_apex(const RayState& st, const TraceRay& ray, bool fr
         if (ap.from != from) continue;
         if (from) {
             // o + t·d for t >= tnear >= 0 lies within |o - p| of p + t·d.
-            if (ray.tnear >= 0 && l1(ray.o - ap.p) <= ap.rho) return find_cone(st, a, ray.d);
+            if (ray.tnear >= 0 && l1(ray.o - ap.p) <= ap.rho) return ray_cone_around(st, a, ray.d);
             continue;
         }
         // The segment is end - s·d for s in [0, tfar - tnear]; its end is
@@ -84,21 +187,27 @@ const RayCone* ray_cone_of_apex(const RayState& st, const TraceRay& ray, bool fr
         if (!(ray.tfar < kInf) || !(ray.tnear <= ray.tfar)) continue;
         const glm::dvec3 end = ray.o + ray.tfar * ray.d;
         const double err = 1e-14 * (l1(ray.o) + ray.tfar * l1(ray.d));
-        if (l1(end - ap.p) + err <= ap.rho && l1(ray.o - ap.p) <= ap.reach) return find_cone(st, a, -ray.d);
+        if (l1(end - ap.p) + err <= ap.rho && l1(ray.o - ap.p) <= ap.reach) return ray_cone_around(st, a, -ray.d);
     }
     return nullptr;
 }
 
 void CsgTracer::Impl::build_apexes() {
     const std::size_t n = top.items.size();
-    if (!top.bvh || n > kMaxConeUnits || top.balls.size() != n || !top.always.empty()) return;
+    if (!top.bvh || n > kMaxTwoLevelUnits || top.balls.size() != n || !top.always.empty()) return;
     std::vector<double> radii;
     for (const Ball& b : top.balls) {
         if (!(b.r >= 0)) return;
         radii.push_back(b.r);
     }
-    std::nth_element(radii.begin(), radii.begin() + radii.size() / 2, radii.end());
+    std::sort(radii.begin(), radii.end());
     const double r_mid = radii[radii.size() / 2];
+    // Two levels only for balls of about one size: the cones' angle follows
+    // the middle ball, and a crowd whose balls span orders of magnitude
+    // (spiral_1000: 0.979^k, its middle ball 2e-5 of the largest) lists
+    // the large ones in a great many narrow cones (427 → 599 M instructions
+    // at 512²; cells_1000's radii span 6.7×).
+    if (n > kMaxConeUnits && radii[n - 1 - n / 10] > 10 * radii[n / 10]) return;
     const glm::dvec3 mid = 0.5 * (reach.lo + reach.hi);
     const auto add = [&](const glm::dvec3& p, bool from) {
         Apex ap;
@@ -111,17 +220,38 @@ void CsgTracer::Impl::build_apexes() {
         ap.reach = from ? 0 : pf + 4 * frame_radius;
         ap.rho = 1e-9 * (p1 + pf + frame_radius);
         // Half the middle ball's angular radius: a cone lists the units
-        // around a ray and few more.
-        ap.alpha = std::clamp(0.5 * r_mid / glm::length(mid - p), 1e-3, 0.25);
-        if (!std::isfinite(ap.alpha)) ap.alpha = 0.25;
-        ap.cos_in = std::cos(ap.alpha * (1 - 1e-6));
+        // around a ray and few more. Two levels: the rays' cones a quarter
+        // of it (their keys order the units as the rays enter them, so the
+        // loop stops sooner; narrower cones cost more listings than they
+        // save: cells_1000 at 512², 0.125 / 0.18 / 0.25 / 0.5 / 1 gave
+        // 787 / 653 / 629 / 687 / 854 M instructions, base 778 M), the wide
+        // ones 8 times that (4 / 8 / 12 / 16: 695 / 629 / 636 / 699 M at 0.25
+        // before the grid; shell_1000 and cells_2000 agree).
+        ap.levels = n > kMaxConeUnits ? 2 : 1;
+        double alpha = std::clamp((ap.levels > 1 ? 0.25 : 0.5) * r_mid / glm::length(mid - p), 1e-3, 0.25);
+        if (!std::isfinite(alpha)) alpha = 0.25;
+        for (int l = ap.levels - 1; l >= 0; --l, alpha = std::min(alpha * 8, 1.0)) {
+            ap.alpha[l] = alpha;
+            ap.cos_in[l] = std::cos(alpha * (1 - 1e-6));
+            ap.cos_alpha[l] = std::cos(alpha);
+            ap.sin_alpha[l] = std::sin(alpha);
+            ap.cos_key[l] = std::cos(alpha + 1e-6);
+            ap.sin_key[l] = std::sin(alpha + 1e-6);
+            // A cone of this level must hold a ray within alpha of its axis,
+            // or a narrower cone's axis within alpha less that one's alpha.
+            const double reach = l + 1 < ap.levels ? alpha - ap.alpha[l + 1] : alpha;
+            if (l + 1 < ap.levels) ap.cos_sub[l + 1] = std::cos(reach * (1 - 1e-6));
+            ap.grid[l] = ap.levels > 1 ? 0.999 * reach * std::sqrt(2.0) : 0;
+        }
+        ap.e0 = glm::normalize(mid - p);
+        if (!(glm::length(ap.e0) > 0.5)) ap.e0 = glm::dvec3(0, 0, 1);
+        ap.e1 = glm::normalize(glm::cross(ap.e0, std::abs(ap.e0.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0)));
+        ap.e2 = glm::cross(ap.e0, ap.e1);
         // The per-ray slacks: 4·eps_ray, eps_ray <= eps_per_distance·|o|;
         // the ball slack and the chord's sqrt(1e-13) (< 3.2e-7) times
         // |c - o|_1 (+ r), |c - o|_1 <= |c - p|_1 + reach + rho.
         const double slack_abs = 4 * eps_per_distance * (p1 + ap.reach + ap.rho);
         const double rel = 2 * ball_slack + 1e-6;
-        ap.cos_alpha = std::cos(ap.alpha);
-        ap.sin_alpha = std::sin(ap.alpha);
         std::vector<double> key(n), radius(n);
         for (std::size_t i = 0; i < n; ++i) {
             const Ball& b = top.balls[i];
@@ -143,6 +273,7 @@ void CsgTracer::Impl::build_apexes() {
             const double s = inside ? 0 : radius[i] / dw;
             ap.cos_beta.push_back(inside ? -2 : std::sqrt(1 - s * s));
             ap.sin_beta.push_back(s);
+            ap.dist.push_back(dw);
         }
         apexes.push_back(std::move(ap));
     };

@@ -7,6 +7,15 @@
 // or the work: a unit left out is one the ray's own ball or chord test
 // would drop (its padded ball misses the whole cone), so the rays of any
 // cone, on any thread, do the same work.
+//
+// Two levels for big crowds (257 to kMaxTwoLevelUnits units of about one
+// ball size): a scan of every unit per cone is then most of the cost, and a
+// cone narrow enough for a short list needs many. So wide cones (level 0)
+// are listed from all units, and the narrow cones (level 1) the rays use
+// from the wide one holding them (~80 scanned, ~20 listed at cells_1000),
+// each sorted by its own key (where its rays can first reach a unit), and
+// a ray's cone is its direction's cell in a grid: its work depends on the
+// ray alone, as with one level.
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -22,8 +31,20 @@ struct Apex {
     bool from = true;
     double rho = 0;    // a ray's start (from) or end within rho of p (L1) counts as at p
     double reach = 0;  // ... and a shadow ray's start within reach of p (L1): bounds its round-off
-    double alpha = 0;  // a cone's half-angle
-    double cos_in = 1; // a ray's direction within alpha (less a margin for round-off) of the axis
+    // Per level (0 wide, up to `levels` - 1 the rays' own): a cone's
+    // half-angle; cos_in: a ray's direction within alpha (less a margin for
+    // round-off) of the axis; cos_sub: a level's axis within alpha minus the
+    // next level's alpha (less the margin) of the axis, so that the narrower
+    // cone lies in it.
+    static constexpr int kLevels = 2;
+    int levels = 1;
+    double alpha[kLevels] = {}, cos_in[kLevels] = {}, cos_sub[kLevels] = {};
+    double cos_alpha[kLevels] = {}, sin_alpha[kLevels] = {};
+    double cos_key[kLevels] = {}, sin_key[kLevels] = {};  // of alpha + 1e-6 (cone_key)
+    // A frame around the crowd's direction and per level the spacing of a
+    // grid in its gnomonic plane that new cones' axes snap to (0: none).
+    glm::dvec3 e0{0, 0, 1}, e1{1, 0, 0}, e2{0, 1, 0};
+    double grid[kLevels] = {};
     // The units nearest p first (`key`: a bound on the distance from p of
     // any point of the unit a ray keeps), and their balls grown by every
     // per-ray slack the ball and chord tests add for a ray of this apex.
@@ -34,26 +55,30 @@ struct Apex {
     // (-2, 0 when p lies in the ball: every cone meets it).
     std::vector<glm::dvec3> towards;
     std::vector<double> cos_beta, sin_beta;
-    double cos_alpha = 1, sin_alpha = 0;
+    std::vector<double> dist;  // |centre - p|
 };
 
 struct ConeUnit {
     std::uint32_t item;  // index in the top BVH
-    double key;          // Apex::key
+    std::uint32_t j;     // index in the apex's order
+    double key;          // Apex::key, or a narrow cone's own (ray_cones.cpp, cone_key)
 };
 
 struct RayCone {
     std::uint64_t owner = 0;      // the tracer it belongs to (CsgTracer::Impl::id)
     std::uint32_t apex = 0;
+    int level = 0;
+    std::int64_t u = 0, v = 0;    // two levels: its cell (ray_cones.cpp, find_cell_cone)
     glm::dvec3 axis{0.0};         // unit, pointing away from the apex
     std::vector<ConeUnit> units;  // in the apex's order
 };
 
-// Per thread (in TraceScratch): the last few cones, reused round-robin.
+// Per thread (in TraceScratch): the last few cones of each level, reused
+// round-robin.
 struct RayCones {
     static constexpr int kSlots = 16, kApexes = 8;
-    RayCone cones[kSlots];
-    int last[kApexes] = {}, next = 0;  // per apex the cone its last ray used
+    RayCone cones[Apex::kLevels][kSlots];
+    int last[Apex::kLevels][kApexes] = {}, next[Apex::kLevels] = {};  // per apex the cone its last ray used
     std::uint64_t built = 0;  // cones built (tests, tuning)
 };
 

@@ -35,7 +35,8 @@ struct Ball {
     double r;
 };
 
-// 60 overlapping units of `size` around `at`, every one inside a sphere
+// `n` overlapping units of `size` around `at` (within spread·size of it),
+// every one inside a sphere
 // (its ball; the cones serve crowds whose every unit has one): cells (a
 // sphere minus 1-2 smaller spheres, sometimes a box too), sphere ∩ box,
 // lenses. Similarities only, so `balls` (the spheres to aim at) are exact.
@@ -44,11 +45,11 @@ struct Crowd {
     std::vector<Ball> units, balls;
 };
 
-Crowd crowd(RandomCsg& g, const glm::dvec3& at, double size) {
+Crowd crowd(RandomCsg& g, const glm::dvec3& at, double size, int n = 60, const glm::dvec3& spread = glm::dvec3(1)) {
     Crowd c;
-    for (int k = 0; k < 60; ++k) {
+    for (int k = 0; k < n; ++k) {
         const double r = size * g.uni(0.3, 0.6);
-        const glm::dvec3 p = at + size * glm::dvec3(g.uni(-1, 1), g.uni(-1, 1), g.uni(-1, 1));
+        const glm::dvec3 p = at + size * (spread * glm::dvec3(g.uni(-1, 1), g.uni(-1, 1), g.uni(-1, 1)));
         const glm::dvec3 axis = glm::normalize(glm::dvec3(g.uni(-1, 1), g.uni(-1, 1), g.uni(-1, 1)) + 1e-3);
         const glm::dmat4 m = translate(p.x, p.y, p.z) * rotate_deg(g.uni(0, 360), axis);
         c.units.push_back({p, r});
@@ -75,16 +76,26 @@ Crowd crowd(RandomCsg& g, const glm::dvec3& at, double size) {
     return c;
 }
 
+// The crowd seen from at + camera, lit from at + light.
+csg::Scene crowd_scene(const Crowd& c, const glm::dvec3& at, const glm::dvec3& camera, const glm::dvec3& light) {
+    csg::Scene s = make_scene(c.tree);
+    s.camera.position = at + camera;
+    s.camera.look_at = at;
+    s.lights[0].position = at + light;
+    return s;
+}
+
 // The cones' half-angle around apex p as the tracer chooses it
 // (ray_cones.cpp): half the middle unit ball's radius over the distance to
-// the middle of the units' boxes.
-double cone_alpha(const csg::Scene& s, const Crowd& c, const glm::dvec3& p) {
+// the middle of the units' boxes (`part`: a quarter for two levels' narrow
+// cones).
+double cone_alpha(const csg::Scene& s, const Crowd& c, const glm::dvec3& p, double part = 0.5) {
     std::vector<double> r;
     for (const Ball& b : c.units) r.push_back(b.r);
     std::nth_element(r.begin(), r.begin() + long(r.size() / 2), r.end());
     csg::Aabb box;
     for (std::uint32_t k = 0; k < s.nodes[s.root].count; ++k) box.extend(s.nodes[s.children[s.nodes[s.root].first + k]].bounds);
-    return std::clamp(0.5 * r[r.size() / 2] / glm::length(0.5 * (box.lo + box.hi) - p), 1e-3, 0.25);
+    return std::clamp(part * r[r.size() / 2] / glm::length(0.5 * (box.lo + box.hi) - p), 1e-3, 0.25);
 }
 
 // d turned by `angle` away from the point c seen from p (in their plane).
@@ -105,6 +116,46 @@ glm::dvec3 aim(RandomCsg& g, const glm::dvec3& p, const Ball& b, double band, bo
     return std::cos(beta) * (w / dw) + std::sin(beta) * e;
 }
 
+// A camera ray traced on a fresh thread and on `primed` (whose cones
+// earlier rays built): the same entry and the same work, the entry checked
+// by point membership (on (0, t_end), step h). True if it hits.
+bool camera_ray_agrees(const csg::Scene& s, const render::CsgTracer& tracer, const render::TraceRay& ray,
+                       render::TraceScratch& fresh, render::TraceScratch& primed, double t_end, double h) {
+    render::TraceHit hit, hit2;
+    const bool found = tracer.intersect(ray, hit, fresh);
+    const std::uint64_t tests = primed.counters.interval_tests;
+    const bool found2 = tracer.intersect(ray, hit2, primed);
+    CHECK(found == found2);
+    CHECK((found ? hit.t : kInf) == (found2 ? hit2.t : kInf));
+    CHECK(fresh.counters.interval_tests == primed.counters.interval_tests - tests);
+    const double t = found ? hit.t : kInf;
+    INFO("camera ray entry " << t);
+    CHECK(is_first_entry(s, ray.o, ray.d, t, t_end, h));
+    return found;
+}
+
+// A shadow ray as shading makes it (unit dir, tfar the distance) from a
+// point size·(lo..hi) from the light, outside the solid, aimed near ball b (see
+// aim), with the tracer's first entry along it (te) checked by point
+// membership (h: the oracle's step). False when the point is inside.
+struct ShadowRay {
+    glm::dvec3 o, dir;
+    double dist, te;
+};
+bool shadow_ray(RandomCsg& g, const csg::Scene& s, const render::CsgTracer& tracer, const glm::dvec3& light,
+                const Ball& b, double band, bool tangent, double size, double lo, double hi, double h,
+                render::TraceScratch& scratch, ShadowRay& r) {
+    const glm::dvec3 ds = -aim(g, light, b, band, tangent);
+    r.o = light - size * g.uni(lo, hi) * ds;
+    if (csg_contains(s, r.o)) return false;
+    r.dist = glm::length(light - r.o);
+    r.dir = (light - r.o) / r.dist;
+    render::TraceHit entry;
+    r.te = tracer.intersect(render::TraceRay{r.o, r.dir, 0, kInf}, entry, scratch) ? entry.t : kInf;
+    CHECK(is_first_entry(s, r.o, r.dir, r.te, r.dist, h));
+    return true;
+}
+
 struct Result {
     int hits = 0, shadows = 0, in_primed = 0;
 };
@@ -116,10 +167,7 @@ Result check(std::uint64_t seed, const glm::dvec3& at, double size, double h, bo
     const double band = use_float ? 1e-2 : 1e-4;
     RandomCsg g(seed);
     const Crowd c = crowd(g, at, size);
-    csg::Scene s = make_scene(c.tree);
-    s.camera.position = at + size * glm::dvec3(1.5, -6, 2.5);
-    s.camera.look_at = at;
-    s.lights[0].position = at + size * glm::dvec3(-5, -8, 10);
+    const csg::Scene s = crowd_scene(c, at, size * glm::dvec3(1.5, -6, 2.5), size * glm::dvec3(-5, -8, 10));
     const glm::dvec3 cam = s.camera.position, light = s.lights[0].position;
     const render::CsgTracer tracer(s, use_float);
     const double alpha_cam = cone_alpha(s, c, cam), alpha_light = cone_alpha(s, c, light);
@@ -132,32 +180,20 @@ Result check(std::uint64_t seed, const glm::dvec3& at, double size, double h, bo
         const glm::dvec3 d = size * aim(g, cam, b, band, i % 2 == 1 && !use_float);
         const render::TraceRay ray{cam, d, 0, kInf};
         render::TraceScratch fresh, primed;
-        render::TraceHit hit, hit2;
-        const bool found = tracer.intersect(ray, hit, fresh);
         render::TraceHit ignored;
         tracer.intersect(render::TraceRay{cam, turned_away(d, cam, b.c, edge * alpha_cam), 0, kInf}, ignored, primed);
-        const std::uint64_t built = primed.cones.built, tests = primed.counters.interval_tests;
-        const bool found2 = tracer.intersect(ray, hit2, primed);
+        const std::uint64_t built = primed.cones.built;
+        res.hits += camera_ray_agrees(s, tracer, ray, fresh, primed, 14, h);
         res.in_primed += primed.cones.built == built && built > 0;
-        CHECK(found == found2);
-        CHECK((found ? hit.t : kInf) == (found2 ? hit2.t : kInf));
-        CHECK(fresh.counters.interval_tests == primed.counters.interval_tests - tests);
-        const double t = found ? hit.t : kInf;
-        INFO("camera ray entry " << t);
-        CHECK(is_first_entry(s, cam, d, t, 14, h));
-        res.hits += found;
         // A shadow ray from a point near a ball (outside the solid) to the
         // light, as shading makes it (unit d, tfar the distance), after a
         // ray ending at the light from a cone's edge: blocked exactly when
         // its first entry comes before the light.
-        const glm::dvec3 ds = -aim(g, light, b, band, i % 2 == 0 && !use_float);
-        const glm::dvec3 o = light - size * g.uni(8, 16) * ds;
-        if (csg_contains(s, o)) continue;
-        const double dist = glm::length(light - o);
-        const glm::dvec3 dir = (light - o) / dist;
-        render::TraceHit entry;
-        const double te = tracer.intersect(render::TraceRay{o, dir, 0, kInf}, entry, fresh) ? entry.t : kInf;
-        CHECK(is_first_entry(s, o, dir, te, dist, h * size));
+        ShadowRay sr;
+        if (!shadow_ray(g, s, tracer, light, b, band, i % 2 == 0 && !use_float, size, 8, 16, h * size, fresh, sr))
+            continue;
+        const glm::dvec3 o = sr.o, dir = sr.dir;
+        const double dist = sr.dist, te = sr.te;
         render::TraceScratch shadow;
         const glm::dvec3 away = turned_away(-dir, light, b.c, edge * alpha_light);
         const glm::dvec3 o2 = light + dist * glm::normalize(away);
@@ -242,4 +278,109 @@ TEST_CASE("ray cones are not reused across tracers", "[render][oracle]") {
     }
     CHECK(differ == 0);
     CHECK(hits > 100);
+}
+
+// Two-level cones (ray_cones.hpp): a crowd of more than 256 units of one
+// size lists wide cones from every unit and the rays' narrow cones from a
+// wide one, each keyed by its own bound on where its rays can reach a unit
+// (ray_cones.cpp, cone_key); a ray's cone is its cell's in a grid of
+// directions. Camera rays and shadow rays ending at the light on a thread
+// whose cones earlier rays built, against point membership and against a
+// fresh thread (the same entry and work: the cone is the ray's own); and
+// the cones themselves against closed forms on each unit's sphere.
+namespace {
+
+// The bounds a narrow cone around `axis` from apex p (half-angle alpha)
+// keeps, by closed forms on each unit's sphere: along the cone's direction
+// nearest the sphere's centre (the cone's edge, 1e-4 of alpha inside, or
+// the centre's own), a listed unit's sphere is entered no nearer than its
+// key, and an unlisted unit's sphere is missed. Returns the failures.
+int cone_bound_failures(const Crowd& c, const render::RayCone& cone, const glm::dvec3& p, double alpha) {
+    std::vector<double> key(c.units.size(), -1);
+    for (const render::ConeUnit& u : cone.units) key.at(u.item) = u.key;
+    int bad = 0;
+    for (std::size_t k = 0; k < c.units.size(); ++k) {
+        const Ball& b = c.units[k];
+        const glm::dvec3 w = b.c - p;
+        const double theta = std::acos(std::clamp(glm::dot(glm::normalize(w), cone.axis), -1.0, 1.0));
+        glm::dvec3 v = glm::normalize(w);
+        if (theta > alpha * (1 - 1e-4)) {
+            const glm::dvec3 e = glm::normalize(w - glm::dot(w, cone.axis) * cone.axis);
+            const double a = alpha * (1 - 1e-4);
+            v = std::cos(a) * cone.axis + std::sin(a) * e;
+        }
+        const double tc = glm::dot(w, v), q2 = glm::dot(w, w) - tc * tc;
+        const bool hits = q2 < b.r * b.r && tc > 0;
+        const double entry = tc - std::sqrt(std::max(0.0, b.r * b.r - q2));
+        if (key[k] < -0.5 ? hits : hits && entry < key[k] - 1e-12 * glm::length(w)) {
+            UNSCOPED_INFO("unit " << k << " listed " << (key[k] >= -0.5) << " key " << key[k] << " entry " << entry);
+            ++bad;
+        }
+    }
+    return bad;
+}
+
+struct LevelResult {
+    int hits = 0, shadows = 0, narrow = 0, bound_failures = 0;
+};
+
+LevelResult check_levels(std::uint64_t seed, const glm::dvec3& at, double size, double h, bool use_float, int rays) {
+    const double band = use_float ? 1e-2 : 1e-4;
+    RandomCsg g(seed);
+    const Crowd c = crowd(g, at, size, 320, glm::dvec3(3, 3, 1.5));
+    const csg::Scene s = crowd_scene(c, at, size * glm::dvec3(3, -16, 7), size * glm::dvec3(-10, -14, 20));
+    const glm::dvec3 cam = s.camera.position, light = s.lights[0].position;
+    const render::CsgTracer tracer(s, use_float);
+    render::TraceScratch kept;  // primed by every earlier ray
+    LevelResult res;
+    for (int i = 0; i < rays; ++i) {
+        const Ball& b = c.balls[std::size_t(g.pick(int(c.balls.size())))];
+        INFO("seed " << seed << " ray " << i);
+        const glm::dvec3 d = size * aim(g, cam, b, band, i % 2 == 1 && !use_float);
+        const render::TraceRay ray{cam, d, 0, kInf};
+        render::TraceScratch fresh;
+        res.hits += camera_ray_agrees(s, tracer, ray, fresh, kept, 40, h);
+        // A shadow ray from a point off the crowd's surface to the light
+        // (unit d, tfar the distance): blocked exactly when the solid's
+        // first entry along it comes before the light.
+        ShadowRay sr;
+        if (!shadow_ray(g, s, tracer, light, b, band, i % 2 == 0 && !use_float, size, 20, 36, h * size, fresh, sr))
+            continue;
+        CHECK(tracer.occluded(render::TraceRay{sr.o, sr.dir, 0, sr.dist}, kept) == (sr.te < sr.dist));
+        res.shadows += sr.te < sr.dist;
+        if (i % 25 == 24) {
+            // The narrow cones the rays built so far (cone.apex 0: the camera).
+            for (const render::RayCone& cone : kept.cones.cones[1]) {
+                if (cone.owner == 0) continue;
+                const glm::dvec3 apex = cone.apex == 0 ? cam : light;
+                res.bound_failures += cone_bound_failures(c, cone, apex, cone_alpha(s, c, apex, 0.25));
+            }
+        }
+    }
+    for (const render::RayCone& cone : kept.cones.cones[1]) res.narrow += cone.owner != 0 && cone.level == 1;
+    return res;
+}
+
+}  // namespace
+
+TEST_CASE("two-level ray cones: camera and shadow rays grazing a crowd of 320 units keep every entry and shadow",
+          "[render][oracle]") {
+    const glm::dvec3 far = 1e6 * glm::normalize(glm::dvec3(0.4, -1, 0.3));
+    const struct {
+        std::uint64_t seed;
+        glm::dvec3 at;
+        double size, h;
+        bool use_float;
+        int rays;
+    } cases[] = {{1, glm::dvec3(0.0), 1, 1e-7, false, 400}, {2, glm::dvec3(0.0), 1, 1e-7, false, 400},
+                 {3, glm::dvec3(0.0), 1e-4, 1e-7, false, 150}, {4, glm::dvec3(0.0), 1e4, 1e-7, false, 150},
+                 {5, far, 1, 1e-6, false, 150},                {6, glm::dvec3(0.0), 1, 1e-4, true, 150}};
+    for (const auto& k : cases) {
+        INFO("case " << k.seed);
+        const LevelResult x = check_levels(k.seed, k.at, k.size, k.h, k.use_float, k.rays);
+        CHECK(x.hits > k.rays / 3);
+        CHECK(x.shadows > k.rays / 10);
+        CHECK(x.narrow > 4);  // the rays did go through narrow cones
+        CHECK(x.bound_failures == 0);
+    }
 }
