@@ -378,8 +378,9 @@ bool Refinement::by_surface(int x, int y, const std::array<const CornerProbe*, 4
 // surface, confirmed by a sample) from one surface's face against one
 // other leaf. Along each face's plane, the ray through `at` meets the plane
 // on the face's own surface (its leaf's distance within 1/256 of the way
-// from the face's corner), and the other leaf's distance there, clear of
-// 0 by as much, has the sign it has at the face's corner (the face shows
+// from the face's corner, times the ray's cosine to the plane's normal),
+// and the other leaf's distance there, clear of 0 by 1/256 of the way,
+// has the sign it has at the face's corner (the face shows
 // there) or the other (the other surface does). The corner test's sample
 // past the line's middle (straight_edge) asks this: a corner of the solid
 // there, or an edge curving past it, puts the point on the other side, or
@@ -406,9 +407,14 @@ bool Refinement::faces_show(int x, int y, glm::dvec2 at, const std::array<const 
         if (!(t > 0)) return false;
         const glm::dvec3 w = o + t * d;
         const double tolerance = glm::distance(at_f, w) / 256;
+        // The ray meets the face's own surface about |own| / cos from w
+        // (cos: between the ray and the plane's normal); held within the
+        // tolerance, the other leaf's distance, Lipschitz 1, keeps its sign
+        // there too — also on a curved face seen at a grazing angle.
+        const double cos = std::abs(along) / (glm::length(n) * glm::length(d));
         const double own = leaf_distance(f.hit, w), across = leaf_distance(g.hit, w),
                      at_face = leaf_distance(g.hit, at_f);
-        if (!(std::abs(own) <= tolerance) || !(std::abs(across) > tolerance) || at_face == 0) return false;
+        if (!(std::abs(own) <= tolerance * cos) || !(std::abs(across) > tolerance) || at_face == 0) return false;
         if (((across > 0) == (at_face > 0) ? a : b) != surface) return false;
     }
     return true;

@@ -70,6 +70,7 @@ void Accel::commit_now() const {
     if (committed.load(std::memory_order_relaxed)) return;  // another thread built it meanwhile
     rtcCommitScene(bvh);
     check_embree(device, "the scene");
+    std::vector<RTCBounds>().swap(boxes);  // Embree asks for bounds only while it builds
     committed.store(true, std::memory_order_release);
 }
 

@@ -27,7 +27,7 @@ namespace kerf::render {
 struct Accel {
     RTCScene bvh = nullptr;            // null: few items, tested one by one
     std::vector<std::uint32_t> items;  // node per Embree primID
-    std::vector<RTCBounds> boxes;
+    mutable std::vector<RTCBounds> boxes;  // for Embree's bounds callback; freed once built (commit_now: mutable)
     std::vector<std::uint32_t> always;  // unbounded nodes (half-spaces): tested for every ray
     std::vector<Ball> balls;            // top only: per item, or empty (unit_balls.hpp)
     std::vector<SphereMinus> sphere_minus;  // top only: per item, or empty (ball_chords.hpp)

@@ -140,13 +140,16 @@ const RayCone* find_cell_cone(const RayState& st, std::uint32_t a, int level, co
     const std::int64_t u = floor_int(x), v = floor_int(y);
     RayCones& rc = st.scratch->cones;
     const auto is = [&](const RayCone& c) { return c.owner == st.impl->id && c.apex == a && c.u == u && c.v == v; };
+    // A kept cone answers as a new one would (the same direction test), so
+    // whether a ray takes a cone never depends on the thread's history.
+    const auto fits = [&](const RayCone& c) { return glm::dot(dir, c.axis) >= need * len ? &c : nullptr; };
     RayCone* cones = rc.cones[level];
     int& last = rc.last[level][a];
-    if (is(cones[last])) return &cones[last];
+    if (is(cones[last])) return fits(cones[last]);
     for (int i = 0; i < RayCones::kSlots; ++i)
         if (is(cones[i])) {
             last = i;
-            return &cones[i];
+            return fits(cones[i]);
         }
     const glm::dvec3 axis = glm::normalize(ap.e0 + ((double(u) + 0.5) * g) * ap.e1 + ((double(v) + 0.5) * g) * ap.e2);
     if (!(glm::dot(dir, axis) >= need * len)) return nullptr;
