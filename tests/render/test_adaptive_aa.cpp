@@ -11,6 +11,7 @@
 #include "render/adaptive_aa.hpp"
 #include "render/pixel_sampler.hpp"
 #include "render/render.hpp"
+#include "tests/render/same_bytes.hpp"
 #include "tests/render/scene_builder.hpp"
 
 using namespace kerf;
@@ -109,13 +110,6 @@ render::RenderOptions options(int size, bool adaptive, int spp) {
     o.spp = spp;
     o.seed = 3;
     return o;
-}
-
-bool same_bytes(const render::Image& a, const render::Image& b) {
-    return a.width == b.width && a.height == b.height && a.pixels.size() == b.pixels.size() &&
-           a.srgb8.size() == b.srgb8.size() &&
-           std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(float)) == 0 &&
-           std::memcmp(a.srgb8.data(), b.srgb8.data(), a.srgb8.size()) == 0;
 }
 
 // Edge's half-plane (material 0) and the other half beside it (material
