@@ -325,15 +325,36 @@ Value Evaluator::call_builtin(const ast::Expr& e, Scope& s) {
     }
     std::vector<std::string> said;
     BuiltinContext ctx{e.loc, opt_.limits.list_elements, module_stack_, lenient_, &said};
-    if (!lenient_) return fn->fn(std::span<const Value>(argv, e.args.size()), ctx);
-    try {
+    if (!lenient_) {
         Value v = fn->fn(std::span<const Value>(argv, e.args.size()), ctx);
-        for (std::string& m : said) warn(e.loc, std::move(m));
+        count_made(v, e.loc);
         return v;
+    }
+    Value v;
+    try {
+        v = fn->fn(std::span<const Value>(argv, e.args.size()), ctx);
+        for (std::string& m : said) warn(e.loc, std::move(m));
     } catch (const SoftError& err) {
         warn(err.diagnostic().loc, err.diagnostic().message);
         return Value();
     }
+    count_made(v, e.loc);
+    return v;
+}
+
+// A built-in's list or string result is work no other count sees: concat()
+// or str() growing an accumulator through a tail-recursive function copies
+// it whole on every pass, quadratic in the passes, and the tail-call limit
+// (10^6 passes) alone would let that run for hours. So a result costs one
+// step per 16 elements or 256 bytes (copying them takes about as long as a
+// call): such a chain ends at the step limit within seconds, while building
+// a list of 50,000 elements one concat at a time still fits the default.
+void Evaluator::count_made(const Value& v, const SourceLoc& loc) {
+    const std::uint64_t n = v.is_list() ? v.as_list().size() / 16 : v.is_string() ? v.as_string().size() / 256 : 0;
+    if (n == 0) return;
+    steps_ += n;
+    if (steps_ > opt_.limits.steps)
+        throw RunLimitError(loc, "evaluation step limit " + std::to_string(opt_.limits.steps) + " exceeded");
 }
 
 // OpenSCAD takes a built-in's arguments in order, whatever their names, so

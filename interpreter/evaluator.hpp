@@ -213,6 +213,7 @@ private:
 
     // Limits.
     void count_step(const SourceLoc& loc);
+    void count_made(const Value& v, const SourceLoc& loc);  // a built-in's result (eval_expr.cpp)
     void count_iterations(std::uint64_t n, const SourceLoc& loc);
     struct DepthGuard;
 
