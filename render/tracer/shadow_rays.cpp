@@ -70,8 +70,9 @@ bool unit_blocks(TopContext& ctx, std::uint32_t item, std::uint32_t node) {
     // Departure into a subtrahend: the ray starts inside the leaf `into`
     // (its span begins at or before tnear), where this unit has nothing;
     // every piece the full evaluation finds lies outside that span (it
-    // subtracts the same numbers: a one-span leaf's span does not depend
-    // on the window), so the window may start where the ray leaves it.
+    // subtracts the same numbers: a one-span leaf's ends that lie inside
+    // the window are found the same whatever the window, and only its exit
+    // is used here), so the window may start where the ray leaves it.
     double a = ctx.tnear;
     if (node == ctx.hollow) {
         if (ctx.state->spans(ctx.into, a, ctx.best, Need::All) == 1 && s.stack.at(base)->t0 <= a)
