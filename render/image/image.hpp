@@ -46,7 +46,7 @@ void check_output_path(const std::string& path, int width = 0, int height = 0,
 // Format by extension (OpenImageIO). EXR/TIFF/HDR/PFM: linear float; others
 // (PNG, JPEG, ...): 8-bit, colour sRGB-encoded, AOVs normalised (docs/spec.md §7).
 // Encoded into memory, then written to a temporary file in the same folder
-// with every write and close checked, and renamed over `path`: a
+// with every write, fsync and close checked, and renamed over `path`: a
 // failed write ("no space left on device") throws and leaves an existing
 // file intact and no temporary behind (replace_file.hpp). `text`: PNG tEXt
 // chunks (keyword, value) for a PNG file; other formats do not store it.

@@ -130,14 +130,9 @@ struct Fd {
     }
 };
 
-// Every byte written (write(2) may take fewer than asked; EINTR is retried).
-// No fsync(2): the rename publishes a complete file to every reader and an
-// interrupted render leaves the old one, which is the promise; waiting for
-// the device only bought surviving a power cut right after the render, at
-// 0.5-25 ms per image on a shared disk (docs/performance.md, "Holes, the
-// process around the render"). An image can be rendered again, and
-// `--resume` reads a farm's files back whole before it trusts them.
-std::string write_all(int fd, const void* data, std::size_t size) {
+// Every byte written (write(2) may take fewer than asked; EINTR is retried),
+// then fsync(2): the data is on the device before the rename publishes it.
+std::string write_all_and_sync(int fd, const void* data, std::size_t size) {
     const char* p = static_cast<const char*>(data);
     for (std::size_t done = 0; done < size;) {
         const ssize_t n = ::write(fd, p + done, std::min<std::size_t>(size - done, std::size_t(1) << 30));
@@ -148,7 +143,7 @@ std::string write_all(int fd, const void* data, std::size_t size) {
         if (n == 0) return "the file system took no more bytes";
         done += static_cast<std::size_t>(n);
     }
-    return {};
+    return ::fsync(fd) == 0 ? std::string() : errno_text(errno);
 }
 
 // The folder a target lives in, opened for the *at() calls, and the
@@ -196,6 +191,9 @@ std::string rename_over(const Folder& f, const TempName& name) {
         ::unlinkat(f.dir.fd, name.c_str(), 0);
         return why;
     }
+    // Makes the rename itself durable. Best effort: some file systems
+    // refuse fsync on folders, and the new file is in place either way.
+    ::fsync(f.dir.fd);
     return {};
 }
 
@@ -215,7 +213,7 @@ std::string replace_file(const std::string& target, const void* data, std::size_
         Fd anon(open_anonymous(dirfd));
         if (anon.fd < 0 && !tmpfile_unsupported(errno)) return errno_text(errno);
         if (anon.fd >= 0) {
-            if (std::string why = write_all(anon.fd, data, size); !why.empty()) return why;
+            if (std::string why = write_all_and_sync(anon.fd, data, size); !why.empty()) return why;
             TempName name(dirfd);
             if (link_anonymous(anon.fd, dirfd, name)) {
                 if (std::string why = anon.close_checked(); !why.empty()) {
@@ -230,7 +228,7 @@ std::string replace_file(const std::string& target, const void* data, std::size_
     TempName name(dirfd);
     Fd named(create_named(dirfd, name));
     if (named.fd < 0) return errno_text(errno);
-    std::string why = write_all(named.fd, data, size);
+    std::string why = write_all_and_sync(named.fd, data, size);
     if (why.empty()) why = named.close_checked();
     if (why.empty()) return rename_over(folder, name);
     ::unlinkat(dirfd, name.c_str(), 0);

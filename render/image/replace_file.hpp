@@ -9,9 +9,7 @@
 namespace kerf::render {
 
 // Writes `size` bytes to a new file in `target`'s folder, checks every
-// write(2) and close(2), then renames it over `target` (no fsync(2):
-// atomic for readers and interruptions, not a promise across a power cut;
-// replace_file.cpp, write_all). Returns
+// write(2), fsync(2) and close(2), then renames it over `target`. Returns
 // an empty string on success, else the cause ("no space left on device");
 // then `target` is untouched and no temporary file remains. The bytes go to
 // an anonymous file (O_TMPFILE) that gets a name only for the rename, so a

@@ -21,12 +21,6 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-// Installs a seccomp filter on this process (and what it executes).
-inline bool install_seccomp_filter(struct sock_filter* filter, std::size_t n) {
-    struct sock_fprog prog = {static_cast<unsigned short>(n), filter};
-    return ::prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0) == 0 && ::prctl(PR_SET_SECCOMP, SECCOMP_MODE_FILTER, &prog) == 0;
-}
-
 // In the child, before exec: openat() with O_TMPFILE fails with EOPNOTSUPP,
 // as on a file system that lacks it, so kerf takes its named-temporary path.
 // (The kernel's __O_TMPFILE bit alone: glibc's macro includes O_DIRECTORY.)
@@ -44,28 +38,8 @@ inline bool refuse_tmpfile_in_child() {
         BPF_STMT(BPF_RET | BPF_K, SECCOMP_RET_ERRNO | (EOPNOTSUPP & SECCOMP_RET_DATA)),
         BPF_STMT(BPF_RET | BPF_K, SECCOMP_RET_ALLOW),
     };
-    return install_seccomp_filter(filter, sizeof filter / sizeof filter[0]);
-#else
-    return false;
-#endif
-}
-
-// In the child, before exec: fsync(2) and fdatasync(2) fail with EIO, so
-// a kerf that waited for the device would fail its write (it must not wait:
-// replace_file.cpp, write_all).
-inline bool refuse_sync_in_child() {
-#if defined(__x86_64__)
-    struct sock_filter filter[] = {
-        BPF_STMT(BPF_LD | BPF_W | BPF_ABS, offsetof(struct seccomp_data, arch)),
-        BPF_JUMP(BPF_JMP | BPF_JEQ | BPF_K, AUDIT_ARCH_X86_64, 1, 0),
-        BPF_STMT(BPF_RET | BPF_K, SECCOMP_RET_ALLOW),
-        BPF_STMT(BPF_LD | BPF_W | BPF_ABS, offsetof(struct seccomp_data, nr)),
-        BPF_JUMP(BPF_JMP | BPF_JEQ | BPF_K, __NR_fsync, 1, 0),
-        BPF_JUMP(BPF_JMP | BPF_JEQ | BPF_K, __NR_fdatasync, 0, 1),
-        BPF_STMT(BPF_RET | BPF_K, SECCOMP_RET_ERRNO | (EIO & SECCOMP_RET_DATA)),
-        BPF_STMT(BPF_RET | BPF_K, SECCOMP_RET_ALLOW),
-    };
-    return install_seccomp_filter(filter, sizeof filter / sizeof filter[0]);
+    struct sock_fprog prog = {static_cast<unsigned short>(sizeof filter / sizeof filter[0]), filter};
+    return ::prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0) == 0 && ::prctl(PR_SET_SECCOMP, SECCOMP_MODE_FILTER, &prog) == 0;
 #else
     return false;
 #endif
@@ -73,7 +47,6 @@ inline bool refuse_sync_in_child() {
 
 struct SpawnOptions {
     bool without_tmpfile = false;  // see refuse_tmpfile_in_child
-    bool without_sync = false;     // see refuse_sync_in_child
     std::string stderr_path = "/dev/null";
 };
 
@@ -100,7 +73,6 @@ inline pid_t spawn_kerf(const std::vector<std::string>& args, const SpawnOptions
     const int err = ::open(options.stderr_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     if (in < 0 || out < 0 || err < 0 || ::dup2(in, 0) < 0 || ::dup2(out, 1) < 0 || ::dup2(err, 2) < 0) ::_exit(126);
     if (options.without_tmpfile && !refuse_tmpfile_in_child()) ::_exit(125);
-    if (options.without_sync && !refuse_sync_in_child()) ::_exit(125);
     ::execv(exe.c_str(), argv.data());
     ::_exit(127);
 }

@@ -150,37 +150,6 @@ TEST_CASE("a signal while the image is being written leaves the old image and no
     }
 }
 
-TEST_CASE("the image is written without waiting for the device", "[output]") {
-    // No fsync (render/image/replace_file.cpp, write_all): with fsync and
-    // fdatasync failing (EIO), a render still replaces the image, through
-    // the anonymous and the named temporary alike, with the bytes an
-    // ordinary render writes, and leaves nothing else in the folder.
-    auto dir = test_dir("out_no_sync");
-    const auto scene = write_file(dir / "s.sdl", "sphere(1);\n");
-    const auto plain = dir / "plain.png";
-    REQUIRE(run_kerf("render '" + scene + "' -W 24 -H 16 -o '" + plain.string() + "'", dir).status == 0);
-    const auto out = dir / "out.png";
-    const auto names = [&] {
-        std::set<std::string> n;
-        for (const auto& e : fs::directory_iterator(dir)) n.insert(e.path().filename().string());
-        return n;
-    };
-    write_file(out, "old");
-    const std::set<std::string> expected = names();
-    for (const bool without_tmpfile : {false, true}) {
-        INFO((without_tmpfile ? "named temporary" : "O_TMPFILE"));
-        write_file(out, "old");
-        SpawnOptions options;
-        options.without_sync = true;
-        options.without_tmpfile = without_tmpfile;
-        const pid_t pid = spawn_kerf({"render", scene, "-W", "24", "-H", "16", "-o", out.string()}, options);
-        REQUIRE(pid > 0);
-        CHECK(wait_kerf(pid) == 0);
-        CHECK(slurp(out) == slurp(plain));
-        CHECK(names() == expected);
-    }
-}
-
 TEST_CASE("the output is never the scene: by name, ./, a symlink or a hard link", "[output]") {
     auto dir = test_dir("out_is_input");
     // `kerf render model.png` would write model.png, over its own scene.
