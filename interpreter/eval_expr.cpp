@@ -342,15 +342,21 @@ Value Evaluator::call_builtin(const ast::Expr& e, Scope& s) {
     return v;
 }
 
-// A built-in's list or string result is work no other count sees: concat()
-// or str() growing an accumulator through a tail-recursive function copies
-// it whole on every pass, quadratic in the passes, and the tail-call limit
-// (10^6 passes) alone would let that run for hours. So a result costs one
-// step per 16 elements or 256 bytes (copying them takes about as long as a
-// call): such a chain ends at the step limit within seconds, while building
-// a list of 50,000 elements one concat at a time still fits the default.
+// A built-in's list or string result, or an operator's lists, is work no
+// other count sees: concat() or str() growing an accumulator through a
+// tail-recursive function copies it whole on every pass (quadratic in the
+// passes), `v + v` on a long list costs its length each pass, and the
+// tail-call limit (10^6 passes) alone would let either run for hours. So
+// 16 elements (or 256 bytes) made or compared cost one step, about what
+// copying them takes against a call: such a chain ends at the step limit
+// within seconds, while building a list of 50,000 elements one concat at a
+// time still fits the default.
 void Evaluator::count_made(const Value& v, const SourceLoc& loc) {
-    const std::uint64_t n = v.is_list() ? v.as_list().size() / 16 : v.is_string() ? v.as_string().size() / 256 : 0;
+    count_work(v.is_list() ? v.as_list().size() : v.is_string() ? v.as_string().size() / 16 : 0, loc);
+}
+
+void Evaluator::count_work(std::uint64_t elements, const SourceLoc& loc) {
+    const std::uint64_t n = elements / 16;
     if (n == 0) return;
     steps_ += n;
     if (steps_ > opt_.limits.steps)
@@ -535,12 +541,15 @@ Value Evaluator::eval(const ast::Expr& e, Scope& s) {
             Value a = eval(*e.items[0], s);
             if (e.text == "!") return Value(!a.truthy());
             OpBudget budget{opt_.limits.list_elements};
-            if (!lenient_) return unary_op(e.text, a, e.loc, &budget);
+            Value v;
             try {
-                return unary_op(e.text, a, e.loc, &budget);
+                v = unary_op(e.text, a, e.loc, &budget);
             } catch (const SoftError&) {
+                if (!lenient_) throw;
                 return lenient_operator(e, a, nullptr);
             }
+            count_work(budget.used, e.loc);
+            return v;
         }
         case K::Binary: {
             if (e.text == "&&") return Value(eval(*e.items[0], s).truthy() && eval(*e.items[1], s).truthy());
@@ -548,12 +557,17 @@ Value Evaluator::eval(const ast::Expr& e, Scope& s) {
             Value a = eval(*e.items[0], s);
             Value b = eval(*e.items[1], s);
             OpBudget budget{opt_.limits.list_elements};
-            if (!lenient_) return binary_op(e.text, a, b, e.loc, &budget);
+            Value v;
             try {
-                return binary_op(e.text, a, b, e.loc, &budget);
+                v = binary_op(e.text, a, b, e.loc, &budget);
             } catch (const SoftError&) {
+                if (!lenient_) throw;
                 return lenient_operator(e, a, &b);
             }
+            // Lists made (budget.used), or compared element by element.
+            const bool compared = (e.text == "==" || e.text == "!=") && a.is_list() && b.is_list();
+            count_work(budget.used + (compared ? std::min(a.as_list().size(), b.as_list().size()) : 0), e.loc);
+            return v;
         }
         case K::Ternary: return eval(*e.items[eval(*e.items[0], s).truthy() ? 1 : 2], s);
         case K::Index: {

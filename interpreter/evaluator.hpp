@@ -214,6 +214,7 @@ private:
     // Limits.
     void count_step(const SourceLoc& loc);
     void count_made(const Value& v, const SourceLoc& loc);  // a built-in's result (eval_expr.cpp)
+    void count_work(std::uint64_t elements, const SourceLoc& loc);  // elements made or compared
     void count_iterations(std::uint64_t n, const SourceLoc& loc);
     struct DepthGuard;
 
