@@ -1,8 +1,11 @@
 // Expressions: names, operators, calls, list comprehensions, let/echo/assert.
+#include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <iterator>
 #include <memory>
 #include <optional>
+#include <string_view>
 #include <utility>
 
 #include "interpreter/builtins/builtins.hpp"
@@ -322,6 +325,18 @@ Value Evaluator::call_builtin(const ast::Expr& e, Scope& s) {
         const ast::Binding& a = e.args[i];
         if (!a.name.empty()) check_builtin_name(*fn, a, i, e.args.size());
         argv[i] = a.value ? eval(*a.value, s) : Value();
+    }
+    // A built-in that walks a list argument (max, min, norm, search,
+    // lookup, ...) costs its length, as count_made says; not those that
+    // only look at its type or size, nor concat and str (charged by what
+    // they make).
+    static constexpr std::string_view kConstantTime[] = {"len", "concat", "str", "is_list", "is_num", "is_bool",
+                                                          "is_string", "is_undef", "is_function"};
+    if (std::find(std::begin(kConstantTime), std::end(kConstantTime), e.text) == std::end(kConstantTime)) {
+        std::uint64_t walked = 0;
+        for (std::size_t i = 0; i < e.args.size(); ++i)
+            if (argv[i].is_list()) walked += argv[i].as_list().size();
+        count_work(walked, e.loc);
     }
     std::vector<std::string> said;
     BuiltinContext ctx{e.loc, opt_.limits.list_elements, module_stack_, lenient_, &said};
