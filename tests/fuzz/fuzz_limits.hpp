@@ -15,6 +15,7 @@ inline EvalLimits fuzz_limits() {
     l.list_elements = 100'000;
     l.primitives = 10'000;
     l.steps = 100'000;
+    l.echo_bytes = 100'000;  // echo is formatted even when discarded: 5*10^7 bytes took ~8 s under ASan
     return l;
 }
 
