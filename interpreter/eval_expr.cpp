@@ -327,9 +327,9 @@ Value Evaluator::call_builtin(const ast::Expr& e, Scope& s) {
         argv[i] = a.value ? eval(*a.value, s) : Value();
     }
     // A built-in that walks a list argument (max, min, norm, search,
-    // lookup, ...) costs its length, as count_made says; not those that
-    // only look at its type or size, nor concat and str (charged by what
-    // they make).
+    // lookup, ...) costs its top-level length, as count_made says; not
+    // those that only look at its type or length, nor concat and str
+    // (charged by what they make). Strings and nested lists go uncounted.
     static constexpr std::string_view kConstantTime[] = {"len", "concat", "str", "is_list", "is_num", "is_bool",
                                                           "is_string", "is_undef", "is_function"};
     if (std::find(std::begin(kConstantTime), std::end(kConstantTime), e.text) == std::end(kConstantTime)) {
@@ -580,7 +580,7 @@ Value Evaluator::eval(const ast::Expr& e, Scope& s) {
                 return lenient_operator(e, a, &b);
             }
             // Lists made (budget.used), or compared element by element.
-            const bool compared = (e.text == "==" || e.text == "!=") && a.is_list() && b.is_list();
+            const bool compared = a.is_list() && b.is_list() && (e.text == "==" || e.text == "!=");
             count_work(budget.used + (compared ? std::min(a.as_list().size(), b.as_list().size()) : 0), e.loc);
             return v;
         }
