@@ -34,33 +34,36 @@ void PhaseMemory::enter(const char* name) {
     current_ = name ? name : "";
 }
 
-std::string phase_memory_line(const PhaseMemory& m) {
+namespace {
+
+// "HEAD phase FIGURES, phase FIGURES, ...\n", each mark's figures printed
+// by `figures` into buf (nothing when no phase was measured).
+template <class Figures>
+std::string marks_line(const PhaseMemory& m, const char* head, Figures figures) {
     if (m.marks().empty()) return {};
-    std::string line = "stats: memory (peak so far / resident, MB) at the end of:";
+    std::string line = head;
     char buf[96];
     for (std::size_t i = 0; i < m.marks().size(); ++i) {
-        const PhaseMemory::Mark& k = m.marks()[i];
-        std::snprintf(buf, sizeof buf, "%s %s %.0f/%.0f", i ? "," : "", k.phase.c_str(), k.peak_kb / 1024.0,
-                      k.resident_kb / 1024.0);
+        line += i ? ", " : " ";
+        line += m.marks()[i].phase;
+        figures(buf, sizeof buf, m.marks()[i]);
         line += buf;
     }
     return line + "\n";
 }
 
-}  // namespace kerf::cli
+}  // namespace
 
-namespace kerf::cli {
+std::string phase_memory_line(const PhaseMemory& m) {
+    return marks_line(m, "stats: memory (peak so far / resident, MB) at the end of:",
+                      [](char* buf, std::size_t n, const PhaseMemory::Mark& k) {
+                          std::snprintf(buf, n, " %.0f/%.0f", k.peak_kb / 1024.0, k.resident_kb / 1024.0);
+                      });
+}
 
 std::string phase_time_line(const PhaseMemory& m) {
-    if (m.marks().empty()) return {};
-    std::string line = "stats: time (ms since start-up) at the end of:";
-    char buf[96];
-    for (std::size_t i = 0; i < m.marks().size(); ++i) {
-        const PhaseMemory::Mark& k = m.marks()[i];
-        std::snprintf(buf, sizeof buf, "%s %s %.1f", i ? "," : "", k.phase.c_str(), k.ms);
-        line += buf;
-    }
-    return line + "\n";
+    return marks_line(m, "stats: time (ms since start-up) at the end of:",
+                      [](char* buf, std::size_t n, const PhaseMemory::Mark& k) { std::snprintf(buf, n, " %.1f", k.ms); });
 }
 
 }  // namespace kerf::cli

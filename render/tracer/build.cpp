@@ -116,14 +116,9 @@ void CsgTracer::Impl::build_accel(Accel& accel, const std::vector<std::uint32_t>
     rtcCommitGeometry(geom);
     rtcAttachGeometry(accel.bvh, geom);
     rtcReleaseGeometry(geom);
-    if (lazy) {
-        accel.device = device;
-        accel.committed.store(false, std::memory_order_release);
-        return;
-    }
-    rtcCommitScene(accel.bvh);
-    check_embree(device, "the scene");
-    std::vector<RTCBounds>().swap(accel.boxes);
+    accel.device = device;
+    accel.committed.store(false, std::memory_order_release);
+    if (!lazy) accel.ready();  // now; else the first query's (Accel::ready)
 }
 
 // The units' balls as Embree's native spheres (render/README.md, "Ball
