@@ -26,6 +26,18 @@ std::string wide_differences(int calls) {
            "else sphere(0.5); }\nm(" + std::to_string(calls) + ");\n";
 }
 
+// Nested intersections of differences with forty thin slabs each: a ray's
+// window over a difference crosses more subtrahends than its box grid lists
+// (32), so the query goes through the difference's own BVH, which is
+// committed by that first query (Accel::ready) -- here at every level, the
+// last one at the bottom of the deepest recursion (1,995 commits at 3,991
+// levels, counted with a debugger on Accel::commit_now).
+std::string slabbed(int calls) {
+    return "module m(n) { if (n > 0) intersection() { sphere(2 + n * 1e-4); difference() { sphere(2 + n * 1e-4); "
+           "for (i = [0:39]) translate([0, 0, -1.95 + i * 0.1]) cube([10, 10, 0.001], center = true); "
+           "translate([1e-5, 0, 0]) m(n - 1); } } else sphere(0.5); }\nm(" + std::to_string(calls) + ");\n";
+}
+
 const std::string kLimits = " --max-call-depth 100000";
 
 }  // namespace
@@ -66,6 +78,13 @@ TEST_CASE("a CSG tree just below kMaxDepth renders") {
     // 3,991 levels, each through Embree (the largest stack per level).
     r = run_kerf_bounded("render '" + write_file(dir / "wide.sdl", wide_differences(3990)) + "' -W 16 -H 12 -o '" +
                              (dir / "wide.png").string() + "' --threads 2 --look plain" + kLimits,
+                         dir, 120);
+    INFO(r.err);
+    CHECK(r.status == 0);
+    // 3,991 levels, each difference's BVH built by its first query, deep in
+    // the recursion (the stack budget's base covers Embree's build there).
+    r = run_kerf_bounded("render '" + write_file(dir / "slabbed.sdl", slabbed(1995)) + "' -W 3 -H 3 --aa off -o '" +
+                             (dir / "slabbed.png").string() + "' --threads 2 --look plain" + kLimits,
                          dir, 120);
     INFO(r.err);
     CHECK(r.status == 0);
