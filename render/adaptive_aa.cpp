@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <optional>
-#include <vector>
 
 #include "csg/membership.hpp"
 #include "render/adaptive.hpp"
@@ -27,59 +26,42 @@ public:
           steps_(std::max(1, int(std::ceil(std::log2(double(options.aa_samples)))))),
           precision_(std::ldexp(1.0, -steps_)), generation_(CornerProbes::next_generation()) {}
 
-    // The tile [x0, x1) × [y0, y1) (tiles.hpp), in three steps: its
-    // candidates found, their corners traced, each candidate decided.
-    // Most pixels keep their centre: that test inline, the rest
-    // (candidate()) not; a run of pixels whose neighbourhoods all hold one
-    // look (CentreSamples::uniform_run) is found once, up to the end of the
-    // tile's row, and its pixels skip the test. The corners all together,
-    // before any candidate is decided (the same probes, each traced once,
-    // whichever step asks: corner_probes.hpp), so that tracing and shading
-    // run in one stretch rather than between the decisions' own code, which
-    // pushed them out of the instruction cache (docs/quality.md, "The
-    // corners first").
-    void tile(int x0, int y0, int x1, int y1, ThreadState& ts) const {
-        std::vector<Candidate>& found = candidates();
-        found.clear();
-        for (int y = y0; y < y1; ++y)
-            for (int x = x0; x < x1;) {
-                const int to = centres_.uniform_run(x, y, x1);
-                if (to > x) {
-                    x = to;
-                    continue;
-                }
-                if (const unsigned unlike = centres_.unlike_neighbours(x, y, threshold_))
-                    found.push_back(Candidate{x, y, unlike, false});
-                ++x;
+    // The pixels [x0, x1) of row y, one row of a block of a tile (tiles.hpp;
+    // `traced` false: a culled block's). Most pixels keep their centre:
+    // that test inline, the rest (candidate()) not. A run of pixels whose
+    // neighbourhoods all hold one look (CentreSamples::uniform_run) is
+    // found once, up to the end of the tile, and its pixels skip the
+    // test; the run outlives the call, so that the blocks to its right on
+    // the row skip it too (a background row's next blocks, whole). Taken a
+    // row at a time, not a pixel: the run's bounds are read once a row.
+    void row(int x0, int x1, int y, ThreadState& ts, bool traced) const {
+        Run& run = last_run();
+        int x = x0;
+        if (y == run.y && run.generation == generation_ && run.from <= x0) x = std::max(x0, std::min(run.to, x1));
+        const int limit = std::min(region_[0] + ((x0 - region_[0]) / kTile + 1) * kTile, region_[2]);
+        while (x < x1) {
+            const int to = centres_.uniform_run(x, y, limit);
+            if (to > x) {
+                run = Run{x, to, y, generation_};
+                x = to;
+                continue;
             }
-        if (found.empty()) return;
-        probes().enter(x0, y0, generation_);
-        for (Candidate& c : found) c.open = trace_corners(c.x, c.y, c.unlike, ts);
-        if (!sampler_.alpha())
-            for (const Candidate& c : found)
-                if (c.open) trace_sides(c.x, c.y, ts);
-        for (const Candidate& c : found) candidate(c.x, c.y, c.unlike, ts, true);
+            if (const unsigned unlike = centres_.unlike_neighbours(x, y, threshold_)) candidate(x, y, unlike, ts, traced);
+            ++x;
+        }
     }
 
 private:
-    struct Candidate {
-        int x, y;
-        unsigned unlike;  // CentreSamples::unlike_neighbours
-        bool open;        // not kept at its first corners
+    // Pixels [from, to) of row y of the render with `generation` need no test.
+    struct Run {
+        int from = 0, to = 0, y = 0;
+        std::uint64_t generation = 0;
     };
-    // The calling thread's candidates of its current tile (kept, not
-    // allocated per tile).
-    static std::vector<Candidate>& candidates() {
-        static thread_local std::vector<Candidate> found;
-        return found;
+    // The calling thread's last run.
+    static Run& last_run() {
+        static thread_local Run run;
+        return run;
     }
-    // Traces the corners candidate(x, y, unlike, ...) will ask for; false
-    // if it keeps its centre at its first corners.
-    bool trace_corners(int x, int y, unsigned unlike, ThreadState& ts) const;
-    // Locates the sides candidate(x, y, ...) will ask for where its
-    // corners hold two looks (straight_edge(); the pixels of three looks
-    // ask for their own).
-    void trace_sides(int x, int y, ThreadState& ts) const;
     // Pixel (x, y), whose neighbours in `unlike` (CentreSamples::unlike_neighbours) do not look like it.
     [[gnu::noinline]] void candidate(int x, int y, unsigned unlike, ThreadState& ts, bool traced) const;
     // What a probe looks like to the first pass: the ground as a miss.
@@ -139,11 +121,6 @@ private:
     }
     bool faces_show(int x, int y, glm::dvec2 at, const std::array<const CornerProbe*, 4>& k, const int (&face)[2],
                     const int (&other)[2], std::uint32_t surface) const;
-    bool classes(const std::array<const CornerProbe*, 4>& k, std::array<bool, 4>& a, int& b) const;
-    // Side i of a pixel runs from its corner i to i + 1 (in order round
-    // it); the side probes run left to right and top to bottom, from the
-    // corner at (x + kSideX[i], y + kSideY[i]): sides 2 and 3 backwards.
-    static constexpr int kSideX[4] = {0, 1, 0, 0}, kSideY[4] = {0, 0, 1, 0};
     std::optional<glm::dvec3> straight_edge(int x, int y, const std::array<const CornerProbe*, 4>& k, ThreadState& ts,
                                             bool traced) const;
     bool by_surface(int x, int y, const std::array<const CornerProbe*, 4>& k, std::array<bool, 4>& a, int& b,
@@ -443,10 +420,12 @@ bool Refinement::faces_show(int x, int y, glm::dvec2 at, const std::array<const 
     return true;
 }
 
-// Corners `k` (in order round a pixel) by look: `a[i]` whether corner i
-// looks like corner 0 (class A), `b` the first that does not (-1: none);
-// true if a third look is among them.
-bool Refinement::classes(const std::array<const CornerProbe*, 4>& k, std::array<bool, 4>& a, int& b) const {
+// Pixel (x, y)'s colour if one straight edge crosses it (`k`: its corners
+// in order round it), else nothing.
+std::optional<glm::dvec3> Refinement::straight_edge(int x, int y, const std::array<const CornerProbe*, 4>& k,
+                                                    ThreadState& ts, bool traced) const {
+    std::array<bool, 4> a{};  // like corner 0 (class A), else like corner b (class B)
+    int b = -1;
     bool third = false;
     for (int i = 0; i < 4; ++i) {
         a[i] = alike(*k[i], *k[0]);
@@ -454,16 +433,6 @@ bool Refinement::classes(const std::array<const CornerProbe*, 4>& k, std::array<
         if (b < 0) b = i;
         else if (!alike(*k[i], *k[b])) third = true;
     }
-    return third;
-}
-
-// Pixel (x, y)'s colour if one straight edge crosses it (`k`: its corners
-// in order round it), else nothing.
-std::optional<glm::dvec3> Refinement::straight_edge(int x, int y, const std::array<const CornerProbe*, 4>& k,
-                                                    ThreadState& ts, bool traced) const {
-    std::array<bool, 4> a{};  // like corner 0 (class A), else like corner b (class B)
-    int b = -1;
-    const bool third = classes(k, a, b);
     // Each class's colour: the mean of its samples (corners, centre, sides).
     glm::dvec3 sum[2] = {glm::dvec3(0.0), glm::dvec3(0.0)};  // class A, class B
     int count[2] = {0, 0};
@@ -488,7 +457,10 @@ std::optional<glm::dvec3> Refinement::straight_edge(int x, int y, const std::arr
     int face[2] = {-1, -1}, other[2] = {-1, -1};
     for (int i = 0; i < 4; ++i) {
         if (a[i] == a[(i + 1) % 4]) continue;
-        const SideProbe& s = side(x + kSideX[i], y + kSideY[i], i % 2 == 1, ts, traced);
+        // Side i of the pixel runs from corner i to i + 1; the probes run
+        // left to right and top to bottom: sides 2 and 3 backwards.
+        static constexpr int dx[4] = {0, 1, 0, 0}, dy[4] = {0, 0, 1, 0};
+        const SideProbe& s = side(x + dx[i], y + dy[i], i % 2 == 1, ts, traced);
         if (!s.clean) return std::nullopt;
         const bool backwards = i >= 2;
         // The probe's first corner is pixel corner i, or i + 1 when backwards.
@@ -527,43 +499,6 @@ std::optional<glm::dvec3> Refinement::straight_edge(int x, int y, const std::arr
     sum[!centre_a] += centre_color(x, y, ts, traced), ++count[!centre_a];
     const double area = covered_area(a, cross);
     return area * (sum[0] / double(count[0])) + (1 - area) * (sum[1] / double(count[1]));
-}
-
-bool Refinement::trace_corners(int x, int y, unsigned unlike, ThreadState& ts) const {
-    const unsigned near = corners_next_to(unlike);
-    bool same = true;
-    for (int i = 0; i < 4; ++i)
-        if (near >> i & 1) {
-            const CornerProbe& p = corner(x + (i & 1), y + (i >> 1), ts, true);
-            same = same && like_centre(x, y, p);
-        }
-    if (same) return near == 15;  // candidate() keeps the centre, or takes the mean of all five
-    for (int i = 0; i < 4; ++i)
-        if (!(near >> i & 1)) corner(x + (i & 1), y + (i >> 1), ts, true);
-    return true;
-}
-
-void Refinement::trace_sides(int x, int y, ThreadState& ts) const {
-    std::array<const CornerProbe*, 4> k{};
-    bool same = true;
-    for (int i = 0; i < 4; ++i) {
-        const glm::ivec2 c = glm::ivec2(x, y) + glm::ivec2(pixel_corner(i));
-        k[i] = &probes().at(c.x, c.y);
-        same = same && like_centre(x, y, *k[i]);
-    }
-    if (same) return;
-    std::array<bool, 4> a{};
-    int b = -1;
-    if (classes(k, a, b) || b < 0) return;
-    if (like_centre(x, y, *k[0]) == like_centre(x, y, *k[b])) return;
-    int changes = 0;
-    for (int i = 0; i < 4; ++i) changes += a[i] != a[(i + 1) % 4];
-    if (changes != 2) return;
-    // In straight_edge()'s order, and as it does, not past a side that is not clean.
-    ts.refining = true;
-    for (int i = 0; i < 4; ++i)
-        if (a[i] != a[(i + 1) % 4] && !side(x + kSideX[i], y + kSideY[i], i % 2 == 1, ts, true).clean) break;
-    ts.refining = false;
 }
 
 void Refinement::candidate(int x, int y, unsigned unlike, ThreadState& ts, bool traced) const {
@@ -688,13 +623,14 @@ bool render_adaptive(const TilePasses& tiles, const PixelSampler& sampler, const
                               });
         set_to = next;
         // Only candidates are written again; the rest keep their centre.
-        // Not culled again: the first pass asked already, and the
-        // candidates' rays in culled blocks are few and cheap (they miss
-        // the solid's box).
-        complete &= tiles.run_tiles({region[0], y0, region[2], y1}, progress_part(progress, from + (to - from) / 4, to),
-                                    [&](int x0, int ty0, int x1, int ty1, ThreadState& ts) {
-                                        refinement.tile(x0, ty0, x1, ty1, ts);
-                                    });
+        complete &= tiles.run_rows({region[0], y0, region[2], y1}, progress_part(progress, from + (to - from) / 4, to),
+                                   [&](int x0, int x1, int y, ThreadState& ts, bool traced) {
+                                       refinement.row(x0, x1, y, ts, traced);
+                                   },
+                                   // Not culled again: the first pass asked already, and the
+                                   // candidates' rays in culled blocks are few and cheap (they
+                                   // miss the solid's box).
+                                   false);
     }
     return complete;
 }

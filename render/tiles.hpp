@@ -13,7 +13,6 @@
 #include <atomic>
 #include <functional>
 #include <mutex>
-#include <type_traits>
 #include <utility>
 
 #include <tbb/blocked_range.h>
@@ -83,25 +82,25 @@ struct PixelByPixel {
     }
 };
 
-// A pass that takes each tile whole, untested by culling (for_each_tile).
-template <class Tile>
-struct ByTiles {
-    Tile& tile;
+// A pass that takes each row of a block whole, traced or not (for_each_tile).
+template <class Row>
+struct ByRows {
+    Row& row;
 };
-template <class Pixel>
-constexpr bool kByTiles = false;
-template <class Tile>
-constexpr bool kByTiles<ByTiles<Tile>> = true;
 
-// The pixels [x0, x1) of row y of a traced block, one by one.
+// The pixels [x0, x1) of row y of a traced block: one by one, or whole (ByRows).
 template <class Pixel>
 void traced_row(Pixel& pixel, int x0, int x1, int y, ThreadState& ts) {
     for (int x = x0; x < x1; ++x) pixel(x, y, ts, true);
 }
+template <class Row>
+void traced_row(ByRows<Row>& rows, int x0, int x1, int y, ThreadState& ts) {
+    rows.row(x0, x1, y, ts, true);
+}
 
 // Calls pixel(x, y, thread_state, traced) for every pixel of `region` (or,
-// for a ByTiles pass, its tile(x0, y0, x1, y1, thread_state) for each tile,
-// none culled; for the pixels of a row of a culled block, untraced(x0, x1, y,
+// for a ByRows pass, its row(x0, x1, y, thread_state, true) for a row of a
+// traced block; for the pixels of a row of a culled block, untraced(x0, x1, y,
 // thread_state), which must do what pixel(x, y, ts, false) does for each),
 // and progress(fraction) after each tile, serialised; once `*cancel` is set the
 // tiles not started are skipped (the caller throws RenderCancelled). A thread with less than
@@ -138,23 +137,19 @@ bool for_each_tile(tbb::task_arena& arena, const std::array<int, 4>& region, con
                 if (cancel && cancel->load(std::memory_order_relaxed)) break;
                 const int tx0 = region[0] + (tile % tiles_x) * kTile, ty0 = region[1] + (tile / tiles_x) * kTile;
                 const int tx1 = std::min(tx0 + kTile, region[2]), ty1 = std::min(ty0 + kTile, region[3]);
-                if constexpr (kByTiles<std::remove_cvref_t<Pixel>>) {
-                    pixel.tile(tx0, ty0, tx1, ty1, ts);
-                } else {
-                    // Whether the block's pixels are traced, block by block.
-                    bool traced[kBlocks][kBlocks];
-                    if (cull) cull_blocks(camera, tracer, also, tx0, ty0, tx1, ty1, traced);
-                    else std::fill_n(&traced[0][0], kBlocks * kBlocks, true);
-                    for (int y = ty0; y < ty1; ++y) {
-                        const bool* row = traced[(y - ty0) / kBlock];
-                        for (int x0 = tx0; x0 < tx1; x0 += kBlock) {
-                            const int x1 = std::min(x0 + kBlock, tx1);
-                            if (!row[(x0 - tx0) / kBlock]) {
-                                untraced(x0, x1, y, ts);
-                                continue;
-                            }
-                            traced_row(pixel, x0, x1, y, ts);
+                // Whether the block's pixels are traced, block by block.
+                bool traced[kBlocks][kBlocks];
+                if (cull) cull_blocks(camera, tracer, also, tx0, ty0, tx1, ty1, traced);
+                else std::fill_n(&traced[0][0], kBlocks * kBlocks, true);
+                for (int y = ty0; y < ty1; ++y) {
+                    const bool* row = traced[(y - ty0) / kBlock];
+                    for (int x0 = tx0; x0 < tx1; x0 += kBlock) {
+                        const int x1 = std::min(x0 + kBlock, tx1);
+                        if (!row[(x0 - tx0) / kBlock]) {
+                            untraced(x0, x1, y, ts);
+                            continue;
                         }
+                        traced_row(pixel, x0, x1, y, ts);
                     }
                 }
                 if (progress) {
@@ -198,16 +193,17 @@ struct TilePasses {
         return for_each_tile(arena, region, camera, tracer, also, states, progress, stack_need, cancel, pixel,
                              untraced);
     }
-    // The same a tile at a time: tile(x0, y0, x1, y1, thread_state) for
-    // each tile [x0, x1) × [y0, y1), none culled: for a pass that traces
-    // few rays, so that asking which blocks to cull costs more than the
-    // rays it would save (a culled ray gets what tracing gives), and that
-    // orders its own work within a tile.
-    template <class Tile>
-    bool run_tiles(const std::array<int, 4>& region, const std::function<void(double)>& progress, Tile&& tile) const {
-        ByTiles<std::remove_reference_t<Tile>> tiles{tile};
-        return for_each_tile(arena, region, camera, tracer, also, states, progress, stack_need, cancel, tiles,
-                             [](int, int, int, ThreadState&) {}, false);
+    // The same with every block's rows handed over whole: row(x0, x1, y,
+    // thread_state, traced) for the pixels [x0, x1) of row y. Not `cull`:
+    // all of them traced, none culled (traced true), for a pass that
+    // traces few rays, so that asking which blocks to cull costs more than
+    // the rays it would save (a culled ray gets what tracing gives).
+    template <class Row>
+    bool run_rows(const std::array<int, 4>& region, const std::function<void(double)>& progress, Row&& row,
+                  bool cull = true) const {
+        ByRows<Row> rows{row};
+        return for_each_tile(arena, region, camera, tracer, also, states, progress, stack_need, cancel, rows,
+                             [&row](int x0, int x1, int y, ThreadState& ts) { row(x0, x1, y, ts, false); }, cull);
     }
 };
 
