@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <optional>
+#include <vector>
 
 #include "csg/membership.hpp"
 #include "render/adaptive.hpp"
@@ -24,7 +25,12 @@ public:
           // A straight edge located to 1/2^steps of a side: 1/16 for the
           // default 16 samples, as fine as their 4 × 4 strata.
           steps_(std::max(1, int(std::ceil(std::log2(double(options.aa_samples)))))),
-          precision_(std::ldexp(1.0, -steps_)), generation_(CornerProbes::next_generation()) {}
+          precision_(std::ldexp(1.0, -steps_)), generation_(CornerProbes::next_generation()),
+          leaf_node_(sampler.scene().leaves.size(), csg::kNone) {
+        const csg::Scene& scene = sampler.scene();
+        for (std::uint32_t i = 0; i < scene.nodes.size(); ++i)
+            if (scene.nodes[i].op == csg::Op::Leaf) leaf_node_[scene.nodes[i].first] = i;
+    }
 
     // The pixels [x0, x1) of row y, one row of a block of a tile (tiles.hpp;
     // `traced` false: a culled block's). Most pixels keep their centre:
@@ -119,6 +125,9 @@ private:
         const csg::Leaf& leaf = sampler_.scene().leaves[hit.surface.leaf];
         return csg::surface_distance(leaf, leaf.object_from_world.point(w));
     }
+    bool cuts_away(std::uint32_t g, std::uint32_t f) const;
+    int face_model(const glm::dvec3& o, const glm::dvec3& d, glm::dvec2 c, const CornerProbe& f,
+                   const CornerProbe& g) const;
     bool faces_show(int x, int y, glm::dvec2 at, const std::array<const CornerProbe*, 4>& k, const int (&face)[2],
                     const int (&other)[2], std::uint32_t surface) const;
     std::optional<glm::dvec3> straight_edge(int x, int y, const std::array<const CornerProbe*, 4>& k, ThreadState& ts,
@@ -140,6 +149,7 @@ private:
     const int steps_;
     const double precision_;  // 1/2^steps_ of a side
     const std::uint64_t generation_;
+    std::vector<std::uint32_t> leaf_node_;  // per leaf, its node
 };
 
 // The corner (cx, cy) of the current tile, traced and shaded once (when a
@@ -272,8 +282,9 @@ std::optional<Refinement::Prediction> Refinement::predicted(int cx, int cy, bool
 // Where the look changes along the side from corner (cx, cy) to the next
 // one right (or down), to 1/2^steps of the side: between two surfaces
 // predicted and confirmed by a sample either side of the prediction (one,
-// where it is exact: predicted()), else (or where one disagrees)
-// bisection.
+// where it is exact: predicted(); answered by the faces' model where that
+// says the corner across shows there, docs/quality.md "The confirming
+// samples from the faces"), else (or where one disagrees) bisection.
 const SideProbe& Refinement::side(int cx, int cy, bool vertical, ThreadState& ts, bool traced) const {
     SideProbe& s = probes().side(cx, cy, vertical);
     if (s.traced) return s;
@@ -300,6 +311,21 @@ const SideProbe& Refinement::side(int cx, int cy, bool vertical, ThreadState& ts
         if (color) s.sum[seen] += *color, ++s.count[seen];
         return true;
     };
+    // The confirming sample at m of a prediction exact from p's face
+    // (`towards` 1) or q's (-1), answered by the faces' model where it says
+    // the corner across shows there (face_model(), as faces_show() answers
+    // the sample past a cut-off corner): the face is cut away at m by the
+    // leaf the corner across sees. Else (the face shows, or the model says
+    // nothing) the sample is traced.
+    const auto across = [&](double m, int towards) {
+        glm::dvec3 o, d;
+        if (!sampler_.ray(cx + (vertical ? 0 : m), cy + (vertical ? m : 0), o, d)) return false;
+        const bool from_p = towards > 0;
+        const glm::dvec2 c = from_p ? glm::dvec2(cx, cy) : glm::dvec2(cx + !vertical, cy + vertical);
+        if (face_model(o, d, c, from_p ? p : q, from_p ? q : p) >= 0) return false;
+        (from_p ? hi : lo) = m;
+        return true;
+    };
     const double precision = precision_;
     // Between two surfaces (only the surface decides, unshaded) the
     // prediction's two samples bracket the edge to the precision.
@@ -311,7 +337,7 @@ const SideProbe& Refinement::side(int cx, int cy, bool vertical, ThreadState& ts
             if (e->confirm != 0) {
                 const double m = e->confirm > 0 ? past : before;
                 const double l = lo, h = hi;
-                if (m > lo && m < hi && step(m) && (e->confirm > 0 ? hi == m : lo == m)) {
+                if (m > lo && m < hi && (across(m, e->confirm) || step(m)) && (e->confirm > 0 ? hi == m : lo == m)) {
                     lo = std::max(l, before), hi = std::min(h, past);
                     s.exact = std::int8_t(e->confirm);
                 }
@@ -397,27 +423,54 @@ bool Refinement::faces_show(int x, int y, glm::dvec2 at, const std::array<const 
     glm::dvec3 o, d;
     if (!sampler_.ray(x + at.x, y + at.y, o, d)) return false;
     for (int j = 0; j < 2 && (j == 0 || face[1] != face[0]); ++j) {
-        const CornerProbe &f = *k[face[j]], &g = *k[other[j]];
         const glm::dvec2 c = glm::dvec2(x, y) + pixel_corner(face[j]);
-        const TangentPlane& face_plane = plane(c.x, c.y, f);  // its ray was traced: the camera has it
-        const glm::dvec3 &at_f = face_plane.point, &n = face_plane.normal;
-        const double along = glm::dot(n, d);
-        if (!(std::abs(along) > 0)) return false;
-        const double t = glm::dot(n, at_f - o) / along;
-        if (!(t > 0)) return false;
-        const glm::dvec3 w = o + t * d;
-        const double tolerance = glm::distance(at_f, w) / 256;
-        // The ray meets the face's own surface about |own| / cos from w
-        // (cos: between the ray and the plane's normal); held within the
-        // tolerance, the other leaf's distance, Lipschitz 1, keeps its sign
-        // there too — also on a curved face seen at a grazing angle.
-        const double cos = std::abs(along) / (glm::length(n) * glm::length(d));
-        const double own = leaf_distance(f.hit, w), across = leaf_distance(g.hit, w),
-                     at_face = leaf_distance(g.hit, at_f);
-        if (!(std::abs(own) <= tolerance * cos) || !(std::abs(across) > tolerance) || at_face == 0) return false;
-        if (((across > 0) == (at_face > 0) ? a : b) != surface) return false;
+        const int shows = face_model(o, d, c, *k[face[j]], *k[other[j]]);
+        if (shows == 0 || (shows > 0 ? a : b) != surface) return false;
     }
     return true;
+}
+
+// Whether the inside of leaf g lies outside a difference whose minuend
+// holds leaf f: g one of its subtrahends, itself or through unions. Then
+// f's surface, inside g, is not the solid's (a hole's cylinder and the
+// plate's top). Not so where g is part of a subtrahend, intersected
+// with another leaf (a trench as the intersection of two boxes: inside
+// the one the top may go on, outside the other).
+bool Refinement::cuts_away(std::uint32_t g, std::uint32_t f) const {
+    const csg::Scene& scene = sampler_.scene();
+    std::uint32_t n = leaf_node_[g], up = scene.nodes[n].parent;
+    while (up != csg::kNone && scene.nodes[up].op == csg::Op::Union) n = up, up = scene.nodes[up].parent;
+    if (up == csg::kNone || scene.nodes[up].op != csg::Op::Difference) return false;
+    const std::uint32_t minuend = scene.children[scene.nodes[up].first];
+    if (n == minuend) return false;
+    for (std::uint32_t m = leaf_node_[f]; m != csg::kNone; m = scene.nodes[m].parent)
+        if (m == minuend) return true;
+    return false;
+}
+
+// What the faces' local model (faces_show()) says the ray (o, d) sees,
+// from the face of corner `c` (probe `f`, which hit the solid) against the
+// leaf that probe `g` hit: 1 f's surface, -1 g's (only where g's leaf
+// cuts f's away: cuts_away()), 0 nothing.
+int Refinement::face_model(const glm::dvec3& o, const glm::dvec3& d, glm::dvec2 c, const CornerProbe& f,
+                           const CornerProbe& g) const {
+    const TangentPlane& face_plane = plane(c.x, c.y, f);  // its ray was traced: the camera has it
+    const glm::dvec3 &at_f = face_plane.point, &n = face_plane.normal;
+    const double along = glm::dot(n, d);
+    if (!(std::abs(along) > 0)) return 0;
+    const double t = glm::dot(n, at_f - o) / along;
+    if (!(t > 0)) return 0;
+    const glm::dvec3 w = o + t * d;
+    const double tolerance = glm::distance(at_f, w) / 256;
+    // The ray meets the face's own surface about |own| / cos from w
+    // (cos: between the ray and the plane's normal); held within the
+    // tolerance, the other leaf's distance, Lipschitz 1, keeps its sign
+    // there too — also on a curved face seen at a grazing angle.
+    const double cos = std::abs(along) / (glm::length(n) * glm::length(d));
+    const double own = leaf_distance(f.hit, w), across = leaf_distance(g.hit, w), at_face = leaf_distance(g.hit, at_f);
+    if (!(std::abs(own) <= tolerance * cos) || !(std::abs(across) > tolerance) || at_face == 0) return 0;
+    if ((across > 0) == (at_face > 0)) return 1;
+    return cuts_away(g.hit.surface.leaf, f.hit.surface.leaf) ? -1 : 0;
 }
 
 // Pixel (x, y)'s colour if one straight edge crosses it (`k`: its corners
