@@ -167,21 +167,23 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
         // and `put` make without their per-pixel branches and counters.
         // A culled block's rows are filled whole.
         const glm::dvec3 miss = shader.miss();
-        complete &= tiles.run(
-            region, progress,
-            [&](int x, int y, ThreadState& ts, bool traced) {
-                ++ts.rays.primary;
-                glm::dvec3 o, d;
-                if (!traced || !camera.ray_unnormalised(x + 0.5, y + 0.5, o, d)) {
-                    store.color(x, y, miss);
-                    return;
-                }
-                store.color(x, y, shader.radiance(TraceRay{o, d, 0, std::numeric_limits<double>::infinity()}, 0, ts));
-            },
-            [&](int x0, int x1, int y, ThreadState& ts) {
-                ts.rays.primary += std::uint64_t(x1 - x0);
-                store.fill(x0, x1, y, miss);
-            });
+        complete &= tiles.run_rows(region, progress, [&](int x0, int x1, int y, ThreadState& ts, bool traced) {
+            ts.rays.primary += std::uint64_t(x1 - x0);
+            if (!traced) return store.fill(x0, x1, y, miss);
+            // A block's row traced first, then shaded (Shader::radiance).
+            TraceRay rays[kBlock];
+            TraceHit hits[kBlock];
+            bool ok[kBlock], solid[kBlock];
+            const int n = x1 - x0;
+            for (int i = 0; i < n; ++i) {
+                rays[i].tnear = 0;
+                rays[i].tfar = std::numeric_limits<double>::infinity();
+                ok[i] = camera.ray_unnormalised(x0 + i + 0.5, y + 0.5, rays[i].o, rays[i].d);
+                solid[i] = ok[i] && tracer.intersect(rays[i], hits[i], ts.scratch);
+            }
+            for (int i = 0; i < n; ++i)
+                store.color(x0 + i, y, ok[i] ? shader.radiance(rays[i], solid[i], hits[i], 0, ts) : miss);
+        });
     } else {
         complete &= tiles.run(region, progress, [&](int x, int y, ThreadState& ts, bool traced) {
             PixelSampler::set_covered(0);
