@@ -44,7 +44,11 @@ template <typename Put>
     // be reported inexactly: nothing reads them (see spans' contract).
     const double wa = a - 4 * es.eps, wb = b + 4 * es.eps;
     int count;
-    if (es.impl->use_float) {
+    if (const AheadSpans* ahead = es.scratch->ahead;
+        ahead && ahead->leaf == leaf_id && ahead->o == es.o && ahead->d == es.d) {
+        count = ahead->count;
+        for (int i = 0; i < count; ++i) spans[i] = ahead->spans[i];
+    } else if (es.impl->use_float) {
         csg::Span<float> fs[csg::kMaxSpans];
         count = csg::intersect_leaf<float>(leaf, glm::vec3(lo), glm::vec3(ld), fs, float(wa), float(wb));
         for (int i = 0; i < count; ++i) spans[i] = {double(fs[i].t0), double(fs[i].t1), fs[i].part0, fs[i].part1};
