@@ -113,6 +113,23 @@ Tree placed(Tree t, const Place& p) {
     return t;
 }
 
+// The operands of bench/scenes.py's grooved sphere (a ball minus six tori)
+// and fishbowl (a ball minus a smaller ball and a cone from its centre up
+// through the top), the minuend first.
+std::vector<Tree> grooved_ball() {
+    std::vector<Tree> kids = {leaf(sphere(1))};
+    const glm::dmat4 rots[3] = {glm::dmat4(1.0), rotate_deg(90, {0, 1, 0}), rotate_deg(90, {1, 0, 0})};
+    for (const glm::dmat4& r : rots)
+        for (const double flip : {0.0, 180.0})
+            kids.push_back(leaf(make_leaf(PrimKind::Torus, {1, 0.1},
+                                          r * rotate_deg(flip, {0, 1, 0}) * translate(0, 0, 0.374) * scale(0.9, 0.9, 0.9))));
+    return kids;
+}
+std::vector<Tree> fishbowl_kids() {
+    return {leaf(sphere(1)), leaf(sphere(0.9)),
+            leaf(make_leaf(PrimKind::Cylinder, {0, 1.2, 0.6, 0}, translate(0, 0, 1.2) * scale(1, 1, -1)))};
+}
+
 const Place kPlaces[] = {{1, {0, 0, 0}}, {1, {1e3, -2e3, 5e2}}, {1e-3, {3e-3, -2e-3, 5e-3}}, {1e4, {-4e5, 2e5, 1e5}}};
 
 }  // namespace
@@ -240,13 +257,7 @@ TEST_CASE("leaf minus leaves: shadow rays leaving grooves and pockets match poin
     // subtrahend (fails when that probe skips the near tori: 2,436 checks,
     // or lies past the exit: 264).
     for (const Place& p : kPlaces) {
-        std::vector<Tree> kids = {leaf(sphere(1))};
-        const glm::dmat4 rots[3] = {glm::dmat4(1.0), rotate_deg(90, {0, 1, 0}), rotate_deg(90, {1, 0, 0})};
-        for (const glm::dmat4& r : rots)
-            for (const double flip : {0.0, 180.0})
-                kids.push_back(leaf(make_leaf(PrimKind::Torus, {1, 0.1},
-                                              r * rotate_deg(flip, {0, 1, 0}) * translate(0, 0, 0.374) *
-                                                  scale(0.9, 0.9, 0.9))));
+        const std::vector<Tree> kids = grooved_ball();
         const Tree pocketed = op(Op::Difference, {leaf(box({-0.7, -0.7, -0.7}, {0.7, 0.7, 0.7})),
                                                   leaf(sphere(0.35, translate(0.3, 0.3, 0.75))),
                                                   leaf(box({-0.5, -0.5, 0.3}, {-0.1, 0.2, 1}, rotate_deg(10, {0, 0, 1}))),
@@ -282,9 +293,7 @@ TEST_CASE("leaf minus leaves: the fishbowl's opening, near spans reused, matches
     // Shadow rays leaving the inner wall likewise. Both at four scales.
     for (const Place& p : kPlaces) {
         for (const bool slot : {false, true}) {
-            std::vector<Tree> kids = {leaf(sphere(1)), leaf(sphere(0.9)),
-                                      leaf(make_leaf(PrimKind::Cylinder, {0, 1.2, 0.6, 0},
-                                                     translate(0, 0, 1.2) * scale(1, 1, -1)))};
+            std::vector<Tree> kids = fishbowl_kids();
             if (slot) kids.push_back(leaf(box({-0.15, -1.2, -0.5}, {0.15, 0, 0.2}, rotate_deg(20, {0, 0, 1}))));
             const csg::Scene s = make_scene(placed(op(Op::Difference, kids), p));
             Counts c;
@@ -312,16 +321,7 @@ TEST_CASE("solve_ahead: camera rays with their sphere solved ahead hit what they
     // its own with the entry moved, it must take them (the hand-over is
     // used at all). A box minuend and the float tracer solve nothing ahead.
     for (const Place& p : kPlaces) {
-        std::vector<Tree> grooved = {leaf(sphere(1))};
-        const glm::dmat4 rots[3] = {glm::dmat4(1.0), rotate_deg(90, {0, 1, 0}), rotate_deg(90, {1, 0, 0})};
-        for (const glm::dmat4& r : rots)
-            for (const double flip : {0.0, 180.0})
-                grooved.push_back(leaf(make_leaf(PrimKind::Torus, {1, 0.1},
-                                                 r * rotate_deg(flip, {0, 1, 0}) * translate(0, 0, 0.374) *
-                                                     scale(0.9, 0.9, 0.9))));
-        const std::vector<Tree> fishbowl = {leaf(sphere(1)), leaf(sphere(0.9)),
-                                            leaf(make_leaf(PrimKind::Cylinder, {0, 1.2, 0.6, 0},
-                                                           translate(0, 0, 1.2) * scale(1, 1, -1)))};
+        const std::vector<Tree> grooved = grooved_ball(), fishbowl = fishbowl_kids();
         for (const bool bowl : {false, true}) {
             const csg::Scene s = make_scene(placed(op(Op::Difference, bowl ? fishbowl : grooved), p));
             const render::CsgTracer tracer(s, false);
