@@ -206,7 +206,7 @@ std::uint32_t RayState::leaf_minus_spans(const csg::Node& n, double a, double b,
     const std::uint32_t nsub = n.count - 1;
     SpanBuffer<kMaxLeafSpans> minuend;
     Span* m = minuend.at;
-    const int nm = analytic_node_spans(*this, kids[0], a, b, m);
+    const int nm = analytic_node_spans(*this, kids[0], a, b, m, scratch->ahead);
     SpanBuffer<1> answer_buffer;
     Span& answer = answer_buffer.at[0];
     for (int i = 0; i < nm; ++i) {
