@@ -155,9 +155,8 @@ std::uint32_t Shader::surface(const TraceRay& ray, ThreadState& ts) const {
     return surface_id(hit);
 }
 
-glm::dvec3 Shader::radiance(const TraceRay& ray, int depth, ThreadState& ts, std::uint32_t* surface) const {
-    TraceHit hit;
-    const bool solid = tracer_.intersect(ray, hit, ts.scratch);
+glm::dvec3 Shader::radiance(const TraceRay& ray, bool solid, const TraceHit& hit, int depth, ThreadState& ts,
+                            std::uint32_t* surface) const {
     double t;
     if (ground_first(ray, solid, hit, t)) {
         if (surface) {

@@ -58,7 +58,19 @@ public:
     // `surface`, if given, gets 0 for a miss, else an id of the surface the
     // ray hit (leaf and cut face), for adaptive anti-aliasing.
     // Fog (csg::Fog) dims every ray's colour by the distance it travels.
-    glm::dvec3 radiance(const TraceRay& ray, int depth, ThreadState& ts, std::uint32_t* surface = nullptr) const;
+    glm::dvec3 radiance(const TraceRay& ray, int depth, ThreadState& ts, std::uint32_t* surface = nullptr) const {
+        TraceHit hit;
+        const bool solid = tracer_.intersect(ray, hit, ts.scratch);
+        return radiance(ray, solid, hit, depth, ts, surface);
+    }
+    // The same for a ray whose first hit is already known (`solid`: it has
+    // one, `hit`), as CsgTracer::intersect gives it: a run of camera rays
+    // is traced first and shaded after, so one ray's trace starts while the
+    // last one's chain of divisions and square roots still runs, instead
+    // of after that ray's shading.
+    glm::dvec3 radiance(const TraceRay& ray, bool solid, const TraceHit& hit, int depth, ThreadState& ts,
+                        std::uint32_t* surface = nullptr) const;
+    const CsgTracer& tracer() const { return tracer_; }
     // Only the `surface` radiance() would give, without shading.
     std::uint32_t surface(const TraceRay& ray, ThreadState& ts) const;
     // What a ray that hits nothing sees: the background, or the fog's colour.

@@ -33,6 +33,12 @@ template <typename T>
 int intersect_leaf(const Leaf& leaf, const glm::vec<3, T>& o, const glm::vec<3, T>& d, Span<T> out[kMaxSpans],
                    T wa = -std::numeric_limits<T>::infinity(), T wb = std::numeric_limits<T>::infinity());
 
+// intersect_leaf<double> of a sphere leaf along n rays (object space) in one
+// loop, so the rays' chains of divisions and square roots overlap: ray k's
+// spans at out[k·kMaxSpans], their count at count[k].
+void intersect_sphere_rays(const Leaf& leaf, int n, const glm::dvec3* o, const glm::dvec3* d, Span<double>* out,
+                           int* count);
+
 // Outward object-space normal (not necessarily unit) at p on surface `part`.
 glm::dvec3 object_normal(const Leaf& leaf, const glm::dvec3& p, std::uint8_t part);
 

@@ -26,6 +26,11 @@ int intersect_sphere(const double* p, const Vec3<T>& o, const Vec3<T>& d, Span<T
     return n;
 }
 
+void intersect_sphere_rays(const Leaf& leaf, int n, const glm::dvec3* o, const glm::dvec3* d, Span<double>* out,
+                           int* count) {
+    for (int k = 0; k < n; ++k) count[k] = intersect_sphere<double>(leaf.p, o[k], d[k], out + k * kMaxSpans);
+}
+
 glm::dvec3 normal_sphere(const double*, const glm::dvec3& x, std::uint8_t) { return x; }
 
 template int intersect_sphere<float>(const double*, const Vec3<float>&, const Vec3<float>&, Span<float>*);

@@ -30,9 +30,14 @@ inline bool box_hit(const RayState& es, const csg::Aabb& box, double a, double b
 }
 
 // The analytic leaf's spans that overlap [a, b], each handed to put;
-// returns their count. Its box test is the caller's.
+// returns their count. Its box test is the caller's. `ahead`: the leaf's
+// spans along the ray if solved already (CsgTracer::solve_ahead), taken
+// when they are this leaf's along this ray; only leaf_minus_spans' minuend
+// passes them (the one leaf solve_ahead solves), so no other call pays
+// for the check.
 template <typename Put>
-[[gnu::always_inline]] inline int analytic_spans(RayState& es, std::uint32_t leaf_id, double a, double b, Put put) {
+[[gnu::always_inline]] inline int analytic_spans(RayState& es, std::uint32_t leaf_id, double a, double b, Put put,
+                                                 const AheadSpans* ahead = nullptr) {
     const csg::Leaf& leaf = es.impl->scene.leaves[leaf_id];
     // A leaf only moved (most are: translate, or none) skips the matrix:
     // 1·x + 0·y + 0·z is x, so the numbers are the same.
@@ -44,7 +49,10 @@ template <typename Put>
     // be reported inexactly: nothing reads them (see spans' contract).
     const double wa = a - 4 * es.eps, wb = b + 4 * es.eps;
     int count;
-    if (es.impl->use_float) {
+    if (ahead && ahead->leaf == leaf_id && ahead->o == es.o && ahead->d == es.d) {
+        count = ahead->count;
+        for (int i = 0; i < count; ++i) spans[i] = ahead->spans[i];
+    } else if (es.impl->use_float) {
         csg::Span<float> fs[csg::kMaxSpans];
         count = csg::intersect_leaf<float>(leaf, glm::vec3(lo), glm::vec3(ld), fs, float(wa), float(wb));
         for (int i = 0; i < count; ++i) spans[i] = {double(fs[i].t0), double(fs[i].t1), fs[i].part0, fs[i].part1};
@@ -70,9 +78,10 @@ template <typename Put>
 
 // The spans of the analytic leaf node `node` on [a, b] written to out, its
 // box test first: what RayState::spans pushes for it.
-[[gnu::always_inline]] inline int analytic_node_spans(RayState& es, std::uint32_t node, double a, double b, Span* out) {
+[[gnu::always_inline]] inline int analytic_node_spans(RayState& es, std::uint32_t node, double a, double b, Span* out,
+                                                      const AheadSpans* ahead = nullptr) {
     if (!box_hit(es, es.impl->padded[node], a, b)) return 0;
-    return analytic_spans(es, es.impl->scene.nodes[node].first, a, b, [&out](const Span& s) { *out++ = s; });
+    return analytic_spans(es, es.impl->scene.nodes[node].first, a, b, [&out](const Span& s) { *out++ = s; }, ahead);
 }
 
 }  // namespace kerf::render

@@ -256,6 +256,17 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
     impl_->top.balls = unit_balls(scene, impl_->top.items, impl_->node_eps);
     if (!impl_->top.balls.empty())
         impl_->top.sphere_minus = sphere_minus_units(scene, impl_->top.items, impl_->node_eps, impl_->top.subs);
+    // solve_ahead's leaf: the sphere minuend of a one-unit scene's leaf
+    // minus leaves (a grooved sphere), whose every camera query that passes
+    // the unit's ball starts by solving it (leaf_minus_spans). Not where the
+    // ball chords decide most rays first (a sphere minus a few balls), nor
+    // for other kinds (a box minuend: the checkered cube's camera rays
+    // would solve it ahead for 8 % more instructions, 512²).
+    if (!use_float && impl_->top.items.size() == 1 && impl_->top.always.empty() && impl_->leaf_minus[units[0]]) {
+        const bool chords = !impl_->top.sphere_minus.empty() && impl_->top.sphere_minus[0].r_in >= 0;
+        const std::uint32_t leaf = scene.nodes[scene.children[scene.nodes[units[0]].first]].first;
+        if (!chords && scene.leaves[leaf].kind == csg::PrimKind::Sphere) impl_->ahead_leaf = leaf;
+    }
     if (impl_->top.always.empty()) {
         // Padded beyond every Embree box and the node box tests' slack, so
         // the early out never culls what they would keep, and a float ray

@@ -112,6 +112,8 @@ struct CsgTracer::Impl {
     // kDirectChildren analytic leaves, asked for its first entry or any span
     // in one step (leaf_minus.cpp).
     std::vector<std::uint8_t> leaf_minus;
+    // The leaf CsgTracer::solve_ahead solves (build.cpp says which); kNone: none.
+    std::uint32_t ahead_leaf = csg::kNone;
     // Per leaf: the unit (top item index; unbounded units after the items)
     // that lies wholly inside it when the leaf is convex, else kNone: a
     // shadow ray leaving its surface outwards skips that unit (Departure).

@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include "csg/scene.hpp"
+#include "render/primitives/primitives.hpp"
 #include "render/tracer/ray_cones.hpp"
 #include "render/tracer/span_list.hpp"
 
@@ -21,10 +22,22 @@ struct TraceCounters {
     std::uint64_t spans_found = 0;     // primitive intervals those calls returned
 };
 
+// A leaf's spans along one ray, solved ahead of the query that needs them
+// (CsgTracer::solve_ahead).
+struct AheadSpans {
+    std::uint32_t leaf;
+    int count;
+    glm::dvec3 o, d;
+    csg::Span<double> spans[csg::kMaxSpans];
+};
+
 struct TraceScratch {
     SpanStack stack;
     TraceCounters counters;
     RayCones cones;  // this thread's ray cones (ray_cones.hpp)
+    // Set by the caller round one query: that leaf's spans along the
+    // query's ray, which the query takes instead of solving it again.
+    const AheadSpans* ahead = nullptr;
 };
 
 // d need not be unit length; t is measured in units of d.
@@ -63,6 +76,15 @@ public:
 
     // First entry of the root solid with tnear < t < tfar.
     bool intersect(const TraceRay& ray, TraceHit& hit, TraceScratch& scratch) const;
+    // For the n camera rays of a run of pixels, before any is traced: the
+    // spans of the leaf each one's query starts with (the sphere minuend of
+    // a one-unit scene's leaf minus leaves: a grooved sphere), in out[0, n).
+    // Solved in one loop, the rays' chains of a division, a square root and
+    // two divisions overlap instead of each stalling its own query. False
+    // (nothing written) when the scene has no such leaf. Hand out[i] to ray
+    // i's query in TraceScratch::ahead: it takes the same bits it would
+    // have solved.
+    bool solve_ahead(const TraceRay* rays, int n, AheadSpans* out) const;
     // Whether the root solid has a span of positive length inside (tnear, tfar).
     // `from`: the ray leaves that surface (shadow_rays.cpp, "Departure").
     bool occluded(const TraceRay& ray, TraceScratch& scratch, const Departure* from = nullptr) const;

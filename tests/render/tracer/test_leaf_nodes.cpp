@@ -113,6 +113,23 @@ Tree placed(Tree t, const Place& p) {
     return t;
 }
 
+// The operands of bench/scenes.py's grooved sphere (a ball minus six tori)
+// and fishbowl (a ball minus a smaller ball and a cone from its centre up
+// through the top), the minuend first.
+std::vector<Tree> grooved_ball() {
+    std::vector<Tree> kids = {leaf(sphere(1))};
+    const glm::dmat4 rots[3] = {glm::dmat4(1.0), rotate_deg(90, {0, 1, 0}), rotate_deg(90, {1, 0, 0})};
+    for (const glm::dmat4& r : rots)
+        for (const double flip : {0.0, 180.0})
+            kids.push_back(leaf(make_leaf(PrimKind::Torus, {1, 0.1},
+                                          r * rotate_deg(flip, {0, 1, 0}) * translate(0, 0, 0.374) * scale(0.9, 0.9, 0.9))));
+    return kids;
+}
+std::vector<Tree> fishbowl_kids() {
+    return {leaf(sphere(1)), leaf(sphere(0.9)),
+            leaf(make_leaf(PrimKind::Cylinder, {0, 1.2, 0.6, 0}, translate(0, 0, 1.2) * scale(1, 1, -1)))};
+}
+
 const Place kPlaces[] = {{1, {0, 0, 0}}, {1, {1e3, -2e3, 5e2}}, {1e-3, {3e-3, -2e-3, 5e-3}}, {1e4, {-4e5, 2e5, 1e5}}};
 
 }  // namespace
@@ -240,13 +257,7 @@ TEST_CASE("leaf minus leaves: shadow rays leaving grooves and pockets match poin
     // subtrahend (fails when that probe skips the near tori: 2,436 checks,
     // or lies past the exit: 264).
     for (const Place& p : kPlaces) {
-        std::vector<Tree> kids = {leaf(sphere(1))};
-        const glm::dmat4 rots[3] = {glm::dmat4(1.0), rotate_deg(90, {0, 1, 0}), rotate_deg(90, {1, 0, 0})};
-        for (const glm::dmat4& r : rots)
-            for (const double flip : {0.0, 180.0})
-                kids.push_back(leaf(make_leaf(PrimKind::Torus, {1, 0.1},
-                                              r * rotate_deg(flip, {0, 1, 0}) * translate(0, 0, 0.374) *
-                                                  scale(0.9, 0.9, 0.9))));
+        const std::vector<Tree> kids = grooved_ball();
         const Tree pocketed = op(Op::Difference, {leaf(box({-0.7, -0.7, -0.7}, {0.7, 0.7, 0.7})),
                                                   leaf(sphere(0.35, translate(0.3, 0.3, 0.75))),
                                                   leaf(box({-0.5, -0.5, 0.3}, {-0.1, 0.2, 1}, rotate_deg(10, {0, 0, 1}))),
@@ -282,9 +293,7 @@ TEST_CASE("leaf minus leaves: the fishbowl's opening, near spans reused, matches
     // Shadow rays leaving the inner wall likewise. Both at four scales.
     for (const Place& p : kPlaces) {
         for (const bool slot : {false, true}) {
-            std::vector<Tree> kids = {leaf(sphere(1)), leaf(sphere(0.9)),
-                                      leaf(make_leaf(PrimKind::Cylinder, {0, 1.2, 0.6, 0},
-                                                     translate(0, 0, 1.2) * scale(1, 1, -1)))};
+            std::vector<Tree> kids = fishbowl_kids();
             if (slot) kids.push_back(leaf(box({-0.15, -1.2, -0.5}, {0.15, 0, 0.2}, rotate_deg(20, {0, 0, 1}))));
             const csg::Scene s = make_scene(placed(op(Op::Difference, kids), p));
             Counts c;
@@ -298,5 +307,84 @@ TEST_CASE("leaf minus leaves: the fishbowl's opening, near spans reused, matches
             CHECK(blocked > 500);
             CHECK(open > 300);
         }
+    }
+}
+
+TEST_CASE("solve_ahead: camera rays with their sphere solved ahead hit what they hit without, to the bit",
+          "[render][tracer][leaf]") {
+    // CsgTracer::solve_ahead (tracer.hpp): the grooved ball and the fishbowl
+    // at four scales and places, rows of 8 rays from outside (a quarter
+    // grazing the ball). Each ray's first entry with its row's spans handed
+    // over (TraceScratch::ahead) must be the one without, bit for bit, and
+    // the membership first entry; handed its neighbour's, the query must
+    // solve its own (fails without the ray check in analytic_spans); handed
+    // its own with the entry moved, it must take them (the hand-over is
+    // used at all). A box minuend and the float tracer solve nothing ahead.
+    for (const Place& p : kPlaces) {
+        const std::vector<Tree> grooved = grooved_ball(), fishbowl = fishbowl_kids();
+        for (const bool bowl : {false, true}) {
+            const csg::Scene s = make_scene(placed(op(Op::Difference, bowl ? fishbowl : grooved), p));
+            const render::CsgTracer tracer(s, false);
+            render::TraceScratch scratch;
+            std::mt19937_64 rng(bowl ? 12 : 11);
+            std::uniform_real_distribution<double> u(-1, 1);
+            const auto unit = [&] { return glm::normalize(glm::dvec3(u(rng), u(rng), u(rng)) + 1e-3); };
+            int hits = 0, moved = 0;
+            for (int row = 0; row < 60; ++row) {
+                render::TraceRay rays[8];
+                for (render::TraceRay& ray : rays) {
+                    glm::dvec3 from, to;
+                    if (rng() % 4 == 0) {
+                        const glm::dvec3 n = unit(), side = glm::normalize(glm::cross(n, unit()));
+                        to = (1 + 1e-9 * u(rng)) * n;
+                        from = to - 5.0 * side;
+                    } else {
+                        from = 5.0 * unit();
+                        to = 0.8 * glm::dvec3(u(rng), u(rng), u(rng));
+                    }
+                    ray = {p(from), glm::normalize(p(to) - p(from)), 0, kInf};
+                }
+                render::AheadSpans ahead[8];
+                REQUIRE(tracer.solve_ahead(rays, 8, ahead));
+                for (int i = 0; i < 8; ++i) {
+                    const render::TraceRay& ray = rays[i];
+                    if (csg_contains(s, ray.o)) continue;
+                    render::TraceHit h0, h1, h2, h3;
+                    const bool a0 = tracer.intersect(ray, h0, scratch);
+                    scratch.ahead = &ahead[i];
+                    const bool a1 = tracer.intersect(ray, h1, scratch);
+                    scratch.ahead = &ahead[(i + 1) % 8];
+                    const bool a2 = tracer.intersect(ray, h2, scratch);
+                    render::AheadSpans wrong = ahead[i];
+                    if (wrong.count > 0) wrong.spans[0].t0 += 0.05 * p.k;
+                    scratch.ahead = &wrong;
+                    const bool a3 = tracer.intersect(ray, h3, scratch);
+                    scratch.ahead = nullptr;
+                    INFO((bowl ? "fishbowl" : "grooved ball") << " at scale " << p.k << ", row " << row << " ray " << i);
+                    CHECK(a1 == a0);
+                    CHECK(a2 == a0);
+                    if (a0 && a1 && a2) {
+                        CHECK(h1.t == h0.t);
+                        CHECK(h2.t == h0.t);
+                        CHECK(h1.surface.leaf == h0.surface.leaf);
+                        CHECK(h1.surface.part == h0.surface.part);
+                        ++hits;
+                        moved += !a3 || h3.t != h0.t;
+                    }
+                    CHECK(membership_first_entry(s, ray.o, ray.d, a1 ? h1.t : kInf, 10 * p.k, 1e-7 * p.k));
+                }
+            }
+            INFO((bowl ? "fishbowl" : "grooved ball") << " at scale " << p.k << ": " << hits << " hits, " << moved
+                                                      << " moved by the wrong spans");
+            CHECK(hits > 150);
+            CHECK(moved > 50);
+            render::AheadSpans unused[1];
+            CHECK_FALSE(render::CsgTracer(s, true).solve_ahead(nullptr, 0, unused));
+        }
+        const csg::Scene boxed = make_scene(placed(
+            op(Op::Difference, {leaf(box({-0.7, -0.7, -0.7}, {0.7, 0.7, 0.7})), leaf(sphere(0.35, translate(0.3, 0.3, 0.75)))}),
+            p));
+        render::AheadSpans unused[1];
+        CHECK_FALSE(render::CsgTracer(boxed, false).solve_ahead(nullptr, 0, unused));
     }
 }
