@@ -14,6 +14,7 @@
 #include <functional>
 #include <mutex>
 #include <utility>
+#include <vector>
 
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
@@ -33,28 +34,31 @@ constexpr int kTile = 32;
 // with its neighbours) costs about as much as two background pixels.
 constexpr int kBlock = 8, kBlocks = kTile / kBlock;
 
-// Whether every ray through the rectangle whose corner rays are (o, d), in
-// order round it, misses both the solid and the box `also`.
-inline bool hull_misses(const CsgTracer& tracer, const csg::Aabb& also, const glm::dvec3 (&o)[4],
-                        const glm::dvec3 (&d)[4]) {
-    return tracer.misses_all(o, d) && tile_misses_box(also, o, d);
-}
-
 // traced[j][i]: whether block (i, j) of the tile [x0, x1) × [y0, y1) has a
 // ray that may meet the solid or `also` (else its pixels are background).
 // Only pinhole and orthographic cameras' corners bound the rays between
-// them; other cameras trace everything.
+// them; other cameras trace everything. When the tracer culls unit by unit,
+// a block asks only of the units its tile's rays may meet (its rays are
+// some of the tile's).
 inline void cull_blocks(const CameraModel& camera, const CsgTracer& tracer, const csg::Aabb& also, int x0, int y0,
                         int x1, int y1, bool (&traced)[kBlocks][kBlocks]) {
     const int nx = (x1 - x0 + kBlock - 1) / kBlock, ny = (y1 - y0 + kBlock - 1) / kBlock;
     bool all = true;
+    // The tile's units, and a block's (per thread: up to thousands).
+    static thread_local std::vector<std::uint32_t> tile_units, block_units;
+    int ntile = -1;
     if (camera.corners_bound_tiles()) {
         glm::dvec3 co[4], cd[4];  // the tile's corner rays, in order round it
         camera.ray(x0, y0, co[0], cd[0]);
         camera.ray(x1, y0, co[1], cd[1]);
         camera.ray(x1, y1, co[2], cd[2]);
         camera.ray(x0, y1, co[3], cd[3]);
-        all = !hull_misses(tracer, also, co, cd);
+        if (tile_units.size() < tracer.cull_unit_count()) {
+            tile_units.resize(tracer.cull_unit_count());
+            block_units.resize(tracer.cull_unit_count());
+        }
+        ntile = tracer.near_units(co, cd, nullptr, 0, tile_units.data());
+        all = !((ntile >= 0 ? ntile == 0 : tracer.misses_all(co, cd)) && tile_misses_box(also, co, cd));
     }
     for (int j = 0; j < kBlocks; ++j)
         for (int i = 0; i < kBlocks; ++i) traced[j][i] = all;
@@ -68,7 +72,9 @@ inline void cull_blocks(const CameraModel& camera, const CsgTracer& tracer, cons
         for (int i = 0; i < nx; ++i) {
             const glm::dvec3 o[4] = {go[j][i], go[j][i + 1], go[j + 1][i + 1], go[j + 1][i]};
             const glm::dvec3 d[4] = {gd[j][i], gd[j][i + 1], gd[j + 1][i + 1], gd[j + 1][i]};
-            traced[j][i] = !hull_misses(tracer, also, o, d);
+            const bool misses = ntile >= 0 ? tracer.near_units(o, d, tile_units.data(), ntile, block_units.data()) == 0
+                                           : tracer.misses_all(o, d);
+            traced[j][i] = !(misses && tile_misses_box(also, o, d));
         }
 }
 

@@ -40,14 +40,20 @@ struct Centre {
     double tc, q2, w1;
 };
 
-[[gnu::always_inline]] inline Centre centre(const RayState& st, const glm::dvec3& c, double inv_len2) {
+// (w = c - o, w1 = |w|₁.)
+[[gnu::always_inline]] inline Centre centre_of(const RayState& st, double wx, double wy, double wz, double w1,
+                                               double inv_len2) {
     Centre k;
-    const double wx = c.x - st.o.x, wy = c.y - st.o.y, wz = c.z - st.o.z;
     k.tc = (wx * st.d.x + wy * st.d.y + wz * st.d.z) * inv_len2;
     const double cx = wx - k.tc * st.d.x, cy = wy - k.tc * st.d.y, cz = wz - k.tc * st.d.z;
     k.q2 = cx * cx + cy * cy + cz * cz;
-    k.w1 = std::abs(wx) + std::abs(wy) + std::abs(wz);
+    k.w1 = w1;
     return k;
+}
+
+[[gnu::always_inline]] inline Centre centre(const RayState& st, const glm::dvec3& c, double inv_len2) {
+    const double wx = c.x - st.o.x, wy = c.y - st.o.y, wz = c.z - st.o.z;
+    return centre_of(st, wx, wy, wz, std::abs(wx) + std::abs(wy) + std::abs(wz), inv_len2);
 }
 
 // Outer (grow = +1) or inner (grow = -1) chord of the ball of radius r
@@ -104,6 +110,17 @@ struct UnitChords {
     m = ball_chords_detail::centre(st, ball.c, inv_len2);
     const double rr = grown_radius(ball.r, 4 * st.eps_ray, impl.ball_slack, m.w1);
     h2 = (rr * rr - m.q2 + 1e-13 * (m.w1 * m.w1 + rr * rr)) * inv_len2;
+    const double gap = std::max(a - m.tc, m.tc - b);
+    return std::min(h2, h2 - gap * std::abs(gap)) > 0;
+}
+
+// The same for a ray that starts exactly at a camera apex, with the terms
+// that depend on its origin alone found once (Apex::AtP): the same numbers.
+[[gnu::always_inline]] inline bool outer_chord_reaches(const RayState& st, const Apex::AtP& at, double a, double b,
+                                                       ball_chords_detail::Centre& m, double& h2) {
+    const double inv_len2 = st.inv_len * st.inv_len;
+    m = ball_chords_detail::centre_of(st, at.w.x, at.w.y, at.w.z, at.w1, inv_len2);
+    h2 = (at.rr2 - m.q2 + at.round) * inv_len2;
     const double gap = std::max(a - m.tc, m.tc - b);
     return std::min(h2, h2 - gap * std::abs(gap)) > 0;
 }

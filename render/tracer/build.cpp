@@ -281,13 +281,30 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
         if (!reach.empty()) reach = {reach.lo - glm::dvec3(pad), reach.hi + glm::dvec3(pad)};
         impl_->reach = reach;
         const std::vector<std::uint32_t>& items = impl_->top.items;
+        const csg::Camera& cam = scene.camera;
+        const bool pinhole = cam.projection == csg::Projection::Planar && !cam.orthographic && !(cam.aperture > 0);
+        const bool all_balls = impl_->top.balls.size() == items.size() &&
+                               std::all_of(impl_->top.balls.begin(), impl_->top.balls.end(),
+                                           [](const Ball& b) { return b.r >= 0; });
         if (items.size() > 1 || (items.size() == 1 && !impl_->top.balls.empty()))
-            if (items.size() <= Impl::kCullUnits)
+            if (items.size() <= Impl::kCullUnits || (pinhole && all_balls && items.size() <= Impl::kMaxTwoLevelUnits))
                 for (std::size_t i = 0; i < items.size(); ++i) {
                     const csg::Aabb& b = scene.nodes[items[i]].bounds;
                     impl_->cull_units.push_back({i < impl_->top.balls.size() ? impl_->top.balls[i] : Ball{},
                                                  b.empty() ? b : csg::Aabb{b.lo - glm::dvec3(pad), b.hi + glm::dvec3(pad)}});
                 }
+        if (pinhole && !impl_->cull_units.empty()) {
+            // tile_cull.cpp's ball_outside with every corner ray at o.
+            const glm::dvec3 o = cam.position;
+            impl_->cull_origin = o;
+            const double o_len = glm::length(o);
+            for (const Impl::CullBound& u : impl_->cull_units) {
+                const glm::dvec3 w = u.ball.c - o;
+                const double w1 = std::abs(w.x) + std::abs(w.y) + std::abs(w.z);
+                const double r = grown_radius(u.ball.r, 4 * impl_->eps_per_distance * o_len, impl_->ball_slack, w1);
+                impl_->cull_from.push_back({w, r + 1e-9 * (w1 + r + o_len + 1e-300)});
+            }
+        }
         impl_->build_ball_bvh();
         impl_->build_apexes();
     }

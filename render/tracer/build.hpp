@@ -78,6 +78,19 @@ struct CsgTracer::Impl {
     // pays, 8-9 % of a 512² render's instructions on shell_100.)
     static constexpr std::size_t kCullUnits = 128;
     std::vector<CullBound> cull_units;
+    // Crowds up to kMaxTwoLevelUnits units, all with balls, seen by a
+    // pinhole camera are culled unit by unit too: per unit, what the ball
+    // test over a quad finds when its corner rays all start at the camera's
+    // position (cull_origin) is found once, w = c - o and the ball's radius
+    // grown by every slack (tile_cull.cpp, ball_outside), so a unit costs a
+    // tile four dot products at most, and a block only its tile's units.
+    // (Also for the scenes of few units.) Empty otherwise.
+    struct CullFrom {
+        glm::dvec3 w;
+        double r;
+    };
+    glm::dvec3 cull_origin{0.0};
+    std::vector<CullFrom> cull_from;
     std::vector<csg::Aabb> padded;            // per node: bounds grown by node_eps (box tests)
     // Local tolerances (docs/accuracy.md "Far from the origin"): the
     // degenerate rule's world length per node, from the sizes and positions

@@ -73,13 +73,16 @@ bool try_unit_entry(TopContext& ctx, std::uint32_t unit_index, std::uint32_t nod
 // else queued with its lower bound; its upper bound shrinks the float ray.
 // False when the caller must evaluate it now (no upper bound, or the queue
 // is full).
+// at: the unit's terms from a camera apex the ray starts at, or null.
 [[gnu::always_inline]] inline bool queue_by_chords(TopContext& ctx, std::uint32_t item, std::uint32_t node,
-                                                   float& tfar) {
+                                                   float& tfar, const Apex::AtP* at) {
     if (ctx.ncandidates == TopContext::kMaxCandidates) return false;
     const double cut = std::min(ctx.best, ctx.ub);
     ball_chords_detail::Centre m;
     double h2;
-    if (!outer_chord_reaches(*ctx.state, item, ctx.tnear, cut, m, h2)) return true;
+    if (!(at ? outer_chord_reaches(*ctx.state, *at, ctx.tnear, cut, m, h2)
+             : outer_chord_reaches(*ctx.state, item, ctx.tnear, cut, m, h2)))
+        return true;
     return queue_reached(ctx, item, node, cut, m, h2, tfar);
 }
 
@@ -101,10 +104,11 @@ void evaluate_queued(TopContext& ctx) {
 // One unit the traversal reached: queued by its chords or evaluated now;
 // `tfar` (the float ray's) shrinks to what it proves. True if its entry is
 // the new best.
-[[gnu::always_inline]] inline bool visit_unit(TopContext& ctx, std::uint32_t item, float& tfar) {
+[[gnu::always_inline]] inline bool visit_unit(TopContext& ctx, std::uint32_t item, float& tfar,
+                                              const Apex::AtP* at = nullptr) {
     const std::vector<SphereMinus>& sm = ctx.accel->sphere_minus;
     const std::uint32_t node = ctx.accel->items[item];
-    if (item < sm.size() && sm[item].r_in >= 0 && queue_by_chords(ctx, item, node, tfar)) return false;
+    if (item < sm.size() && sm[item].r_in >= 0 && queue_by_chords(ctx, item, node, tfar, at)) return false;
     if (!try_unit_entry(ctx, item, node)) return false;
     tfar = std::min(tfar, embree_t(*ctx.state, ctx.best));
     return true;
@@ -113,12 +117,16 @@ void evaluate_queued(TopContext& ctx) {
 // A camera ray in a ray cone (ray_cones.hpp): its units, nearest the camera
 // first, until the next one lies wholly past the best entry or upper bound
 // (a point of the ray at t is within t·|d| + rho of the apex).
+// A ray that starts exactly at the camera takes each unit's terms of the
+// outer chord's test from the apex (Apex::at_p).
 void visit_cone(TopContext& ctx, const RayCone& cone) {
     const double len = ctx.state->len;
     float tfar = std::numeric_limits<float>::infinity();  // (no Embree ray to shrink)
+    const Apex& ap = ctx.state->impl->apexes[cone.apex];
+    const Apex::AtP* at = !ap.at_p.empty() && ctx.state->o == ap.p ? ap.at_p.data() : nullptr;
     for (const ConeUnit& u : cone.units) {
         if (u.key > std::min(ctx.best, ctx.ub) * len * (1 + 1e-9)) break;
-        visit_unit(ctx, u.item, tfar);
+        visit_unit(ctx, u.item, tfar, at ? at + u.j : nullptr);
     }
     if (ctx.ncandidates > 0) evaluate_queued(ctx);
 }

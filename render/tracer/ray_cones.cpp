@@ -277,6 +277,13 @@ void CsgTracer::Impl::build_apexes() {
             ap.cos_beta.push_back(inside ? -2 : std::sqrt(1 - s * s));
             ap.sin_beta.push_back(s);
             ap.dist.push_back(dw);
+            if (from) {
+                // outer_chord_reaches' terms for a ray whose origin is p
+                // (make_state's eps_ray for that origin).
+                const double w1 = std::abs(w.x) + std::abs(w.y) + std::abs(w.z);
+                const double rr = grown_radius(top.balls[i].r, 4 * (eps_per_distance * glm::length(p)), ball_slack, w1);
+                ap.at_p.push_back({w, w1, rr * rr, 1e-13 * (w1 * w1 + rr * rr)});
+            }
         }
         apexes.push_back(std::move(ap));
     };

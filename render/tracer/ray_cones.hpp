@@ -56,6 +56,16 @@ struct Apex {
     std::vector<glm::dvec3> towards;
     std::vector<double> cos_beta, sin_beta;
     std::vector<double> dist;  // |centre - p|
+    // A camera (from): per unit in that order, what the outer chord's test
+    // (ball_chords.hpp, outer_chord_reaches) finds from the ray's origin
+    // alone, for rays that start exactly at p: the same numbers, once.
+    struct AtP {
+        glm::dvec3 w;  // centre - p
+        double w1;     // |w|₁
+        double rr2;    // the grown radius, squared
+        double round;  // 1e-13·(w1² + rr²)
+    };
+    std::vector<AtP> at_p;
 };
 
 struct ConeUnit {

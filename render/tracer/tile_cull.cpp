@@ -7,7 +7,9 @@
 // miss gives, without tracing: most tiles of a simple scene are background.
 // A scene of few units is asked again unit by unit, each by its ball when it
 // has one (unit_balls.hpp): a sphere's box reaches far past its outline, and
-// the pixels between were traced only to be rejected by that ball.
+// the pixels between were traced only to be rejected by that ball. So is a
+// crowd of balls seen by a pinhole camera (Impl::cull_from): near_units
+// lists the units a tile's rays may meet, and its blocks ask only those.
 #include <cmath>
 
 #include "render/tracer/build.hpp"
@@ -81,18 +83,57 @@ bool ball_outside(const Ball& b, const HullPlanes& h, const glm::dvec3 (&o)[4], 
     return false;
 }
 
+// Whether cull unit k lies outside one of the hull's planes: its ball
+// (from the camera's position, found once, when all four corner rays start
+// there: the same numbers ball_outside finds), else its box.
+bool unit_outside(const CsgTracer::Impl& impl, std::size_t k, const HullPlanes& h, const glm::dvec3 (&o)[4],
+                  bool from_origin) {
+    const CsgTracer::Impl::CullBound& u = impl.cull_units[k];
+    if (u.ball.r < 0) return box_outside(u.box, h, h.count, o);
+    if (!from_origin) return ball_outside(u.ball, h, o, impl.eps_per_distance, impl.ball_slack);
+    const CsgTracer::Impl::CullFrom& f = impl.cull_from[k];
+    for (int i = 0; i < h.count; ++i)
+        if (glm::dot(h.n[i], f.w) < -f.r) return true;
+    return false;
+}
+
+bool from_origin(const CsgTracer::Impl& impl, const glm::dvec3 (&o)[4]) {
+    if (impl.cull_from.empty()) return false;
+    for (int i = 0; i < 4; ++i)
+        if (o[i] != impl.cull_origin) return false;
+    return true;
+}
+
 }  // namespace
 
 bool CsgTracer::misses_all(const glm::dvec3 (&o)[4], const glm::dvec3 (&d)[4]) const {
     const HullPlanes h = hull_planes(o, d);
     if (box_outside(impl_->reach, h, h.count, o)) return true;
     if (impl_->cull_units.empty()) return false;
-    for (const Impl::CullBound& u : impl_->cull_units)
-        if (u.ball.r >= 0 ? !ball_outside(u.ball, h, o, impl_->eps_per_distance, impl_->ball_slack)
-                          : !box_outside(u.box, h, h.count, o))
-            return false;
+    const bool origin = from_origin(*impl_, o);
+    for (std::size_t k = 0; k < impl_->cull_units.size(); ++k)
+        if (!unit_outside(*impl_, k, h, o, origin)) return false;
     return true;
 }
+
+int CsgTracer::near_units(const glm::dvec3 (&o)[4], const glm::dvec3 (&d)[4], const std::uint32_t* among, int n,
+                          std::uint32_t* near) const {
+    if (impl_->cull_units.empty()) return -1;
+    const HullPlanes h = hull_planes(o, d);
+    if (box_outside(impl_->reach, h, h.count, o)) return 0;
+    const bool origin = from_origin(*impl_, o);
+    int count = 0;
+    if (!among) {
+        for (std::uint32_t k = 0; k < impl_->cull_units.size(); ++k)
+            if (!unit_outside(*impl_, k, h, o, origin)) near[count++] = k;
+        return count;
+    }
+    for (int i = 0; i < n; ++i)
+        if (!unit_outside(*impl_, among[i], h, o, origin)) near[count++] = among[i];
+    return count;
+}
+
+std::size_t CsgTracer::cull_unit_count() const { return impl_->cull_units.size(); }
 
 bool tile_misses_box(const csg::Aabb& box, const glm::dvec3 (&o)[4], const glm::dvec3 (&d)[4]) {
     const HullPlanes h = hull_planes(o, d);

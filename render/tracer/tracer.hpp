@@ -96,6 +96,16 @@ public:
     // of these four corner rays (in order round a quad) misses the solid:
     // a whole image tile can then be filled without tracing (tile_cull.cpp).
     bool misses_all(const glm::dvec3 (&o)[4], const glm::dvec3 (&d)[4]) const;
+    // Unit by unit (tile_cull.cpp; the scene's units are culled so when
+    // cull_unit_count() > 0): the units some ray of the quad may meet, of
+    // among[0, n) (every one when among is null), written to `near` (room
+    // for cull_unit_count()), their count returned; 0: every ray misses the
+    // solid, as misses_all says. -1: units are not culled one by one. The
+    // units a quad's list leaves out are missed by the rays of any quad
+    // inside it, so an image block asks only its tile's list.
+    int near_units(const glm::dvec3 (&o)[4], const glm::dvec3 (&d)[4], const std::uint32_t* among, int n,
+                   std::uint32_t* near) const;
+    std::size_t cull_unit_count() const;
     // World unit normal of the final solid at a hit point.
     glm::dvec3 normal(const TraceHit& hit, const glm::dvec3& world_point) const;
 

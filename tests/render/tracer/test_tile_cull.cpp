@@ -5,8 +5,10 @@
 // by intersect(); and culling must happen often, or it saves nothing.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <limits>
 #include <random>
+#include <vector>
 
 #include "render/tracer/tracer.hpp"
 #include "tests/render/scene_builder.hpp"
@@ -197,5 +199,95 @@ TEST_CASE("tile culling by unit balls never drops a ray that hits", "[render][cu
         CHECK(culled > 300);
         CHECK(beyond_box > 100);
         CHECK(kept > 300);
+    }
+}
+
+// Crowds of more than 128 units seen by the scene's pinhole camera are
+// culled unit by unit from the camera's position (CsgTracer::near_units,
+// Impl::cull_from): a tile lists the units its rays may meet, and each of
+// its four sub-quads (an image block) asks only those. A quad whose list
+// is empty must have every sampled ray miss (intersect), also when it is
+// tiny and lies just inside or outside a cell's outline (1e-8 to 1e-1 of
+// its radius), at 1e-3, 1e4 and 1e6 moved off the origin; and quads must be
+// culled often, also where the crowd's box keeps them. (With the radii
+// found from the camera 1e-6 too small it fails 8 checks.)
+TEST_CASE("crowds are culled unit by unit from the camera", "[render][cull]") {
+    struct Case {
+        double s;
+        glm::dvec3 at;
+    };
+    const Case cases[] = {{1, {0, 0, 0}}, {1e-3, {5e-3, -3e-3, 2e-3}}, {1e4, {2e4, 0, -1e4}}, {1e6, {3e6, 1e6, 0}}};
+    for (const Case& c : cases) {
+        // 300 hollow cells (a sphere minus a smaller one raised through its
+        // top, as bench/scenes.py's cells) on a 15 × 20 grid, apart: so
+        // that quads round one cell's outline are culled.
+        std::vector<Tree> cells;
+        std::vector<glm::dvec3> centres;
+        for (int k = 0; k < 300; ++k) {
+            const glm::dvec3 p = c.at + c.s * glm::dvec3(0.6 * (k % 15 - 7), 0.6 * (k / 15 - 9.5), 0.1 * std::sin(k));
+            const glm::dmat4 m = translate(p.x, p.y, p.z) * scale(c.s, c.s, c.s);
+            centres.push_back(p);
+            cells.push_back(op(Op::Difference, {leaf(sphere(0.2, m)), leaf(sphere(0.17, m * translate(0, 0, 0.05)))}));
+        }
+        csg::Scene s = make_scene(op(Op::Union, cells));
+        s.camera.position = c.at + c.s * glm::dvec3(0.3, -1, 12);  // from above: the cells' outlines apart
+        const glm::dvec3 eye = s.camera.position;
+        const render::CsgTracer tracer(s, false);
+        REQUIRE(tracer.cull_unit_count() == 300);
+        render::TraceScratch scratch;
+        csg::Aabb all;
+        for (const csg::Node& n : s.nodes) all.extend(n.bounds);
+        std::mt19937_64 rng(13);
+        std::uniform_real_distribution<double> u(-1, 1), w(0, 1);
+        std::vector<std::uint32_t> tile(300), block(300);
+        int culled = 0, kept = 0, beyond_box = 0, listed = 0;
+        for (int q = 0; q < 1500; ++q) {
+            glm::dvec3 target = c.at + c.s * glm::dvec3(5 * u(rng), 6.5 * u(rng), 0.3 * u(rng));
+            double size = 0.01 + 0.1 * w(rng);
+            if (q % 4 >= 2) {
+                // Just outside (or inside) the outline of one cell's ball.
+                const glm::dvec3 centre = centres[std::size_t(300 * w(rng)) % 300];
+                const glm::dvec3 view = glm::normalize(centre - eye);
+                const glm::dvec3 side = glm::normalize(glm::cross(view, glm::dvec3(u(rng), u(rng), u(rng))));
+                const double gap = (q % 8 < 5 ? 1 : -1) * std::pow(10.0, -8 + 7 * w(rng));
+                const double dist = glm::length(centre - eye), r = 0.2 * c.s * (1 + gap);
+                target = eye + dist * (std::sqrt(std::max(0.0, 1 - r * r / (dist * dist))) * view + r / dist * side);
+                size = std::pow(10.0, -9 + 8 * w(rng));
+            }
+            const glm::dvec3 aim = glm::normalize(target - eye);
+            const glm::dvec3 right = glm::normalize(glm::cross(aim, {0, 0, 1})), up = glm::cross(right, aim);
+            // The tile's corner directions, then its four sub-quads'.
+            const auto dir = [&](double x, double y) {
+                return glm::normalize(aim + 0.4 * size * (x - 0.5) * right + 0.4 * size * (y - 0.5) * up);
+            };
+            glm::dvec3 o[4] = {eye, eye, eye, eye};
+            glm::dvec3 d[4] = {dir(0, 0), dir(1, 0), dir(1, 1), dir(0, 1)};
+            const int ntile = tracer.near_units(o, d, nullptr, 0, tile.data());
+            REQUIRE(ntile >= 0);
+            CHECK((ntile == 0) == tracer.misses_all(o, d));
+            listed += ntile > 0 && ntile < 300;
+            for (int b = 0; b < 5; ++b) {
+                int n = ntile;
+                if (b > 0) {
+                    const double x0 = 0.5 * ((b - 1) % 2), y0 = 0.5 * ((b - 1) / 2);
+                    d[0] = dir(x0, y0), d[1] = dir(x0 + 0.5, y0), d[2] = dir(x0 + 0.5, y0 + 0.5), d[3] = dir(x0, y0 + 0.5);
+                    n = ntile == 0 ? 0 : tracer.near_units(o, d, tile.data(), ntile, block.data());
+                }
+                if (n > 0) {
+                    ++kept;
+                    continue;
+                }
+                ++culled;
+                if (!render::tile_misses_box(all, o, d)) ++beyond_box;
+                INFO("scale " << c.s << " quad " << q << " part " << b);
+                CHECK(hits_in_quad(tracer, scratch, o, d, 24, rng) == 0);
+            }
+        }
+        INFO("scale " << c.s << ": " << culled << " culled (" << beyond_box << " beyond the box), " << kept
+                      << " kept, " << listed << " tiles listing some units");
+        CHECK(culled > 1000);
+        CHECK(beyond_box > 500);
+        CHECK(kept > 1000);
+        CHECK(listed > 500);
     }
 }
