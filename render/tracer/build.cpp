@@ -250,6 +250,14 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
         impl_->leaf_pair[id] = leaves && n.count == 2;
         impl_->leaf_minus[id] = leaves && n.op == Op::Difference && n.count - 1 <= kDirectChildren;
     }
+    impl_->grid_minus.assign(scene.nodes.size(), 0);
+    for (std::uint32_t id = 0; id < scene.nodes.size(); ++id) {
+        const std::int32_t ai = impl_->accel_of_node[id];
+        const Node& n = scene.nodes[id];
+        if (n.op != Op::Difference || ai < 0 || impl_->node_accels[std::size_t(ai)]->grid.empty()) continue;
+        const Node& m = scene.nodes[scene.children[n.first]];
+        impl_->grid_minus[id] = m.op == Op::Leaf && one_span_kind(scene.leaves[m.first].kind);
+    }
     impl_->build_accel(impl_->top, units, true);
     impl_->find_convex_units();
     impl_->ball_slack = use_float ? 1e-5 : 1e-12;  // float sphere tests round at ~1e-7 of |c - o|

@@ -112,6 +112,11 @@ struct CsgTracer::Impl {
     // kDirectChildren analytic leaves, asked for its first entry or any span
     // in one step (leaf_minus.cpp).
     std::vector<std::uint8_t> leaf_minus;
+    // Per node: 1 for a difference with a subtrahend grid (box_grid.hpp)
+    // whose minuend is a one-span leaf (sphere, box, cylinder): a unit's
+    // first entry is then found in locals (difference_first_entry.cpp,
+    // grid_first_entry), without the span stack.
+    std::vector<std::uint8_t> grid_minus;
     // Per leaf: the unit (top item index; unbounded units after the items)
     // that lies wholly inside it when the leaf is convex, else kNone: a
     // shadow ray leaving its surface outwards skips that unit (Departure).
@@ -160,6 +165,13 @@ void top_occluded_callback(const RTCOccludedFunctionNArguments* args);    // sha
 void collect_callback(const RTCIntersectFunctionNArguments* args);        // node_spans.cpp
 void top_ball_filter(const RTCFilterFunctionNArguments* args);            // first_hit.cpp
 void top_ball_occluded_filter(const RTCFilterFunctionNArguments* args);   // shadow_rays.cpp
+
+// Leaves with one span per line whatever the window (sphere, box,
+// cylinder): a subtrahend a ray leaves only once, whose span found on one
+// window is what any overlapping window gives.
+inline bool one_span_kind(csg::PrimKind kind) {
+    return kind == csg::PrimKind::Sphere || kind == csg::PrimKind::Box || kind == csg::PrimKind::Cylinder;
+}
 
 // Whether a box is bounded (half-spaces and what contains them are not):
 // solids lie within csg::kRenderableRange, so anything beyond is infinite.

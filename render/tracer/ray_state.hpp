@@ -188,6 +188,11 @@ struct RayState {
     std::uint32_t first_entry_by_points(const Accel& subtrahends, std::uint32_t base, std::uint32_t i, double b);
     FastPath any_by_points(const Accel& subtrahends, std::uint32_t base, std::uint32_t sbase, std::uint32_t i,
                            double a, double b);
+    // The same first entry of a grid_minus difference `node` on (a, b],
+    // for the rays it decides in locals: 1 with the piece in `out`, 0 no
+    // entry, -1 not decided (nothing pushed, the counters as they were: ask
+    // spans()).
+    int grid_first_entry(std::uint32_t node, double a, double b, Span& out);
     // The subtrahends of `accel` within `reach` of x (per axis, by the
     // grid) that are not clear of x by `margin` (at most kMaxNear, node
     // ids); -1: not known.

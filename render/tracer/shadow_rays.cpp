@@ -21,12 +21,6 @@ bool convex_leaf(csg::PrimKind kind) {
            kind == csg::PrimKind::Plane;
 }
 
-// Solids with one span per line whatever the window (a plane's is a
-// half-line): a subtrahend that a ray can leave only once.
-bool one_span_leaf(csg::PrimKind kind) {
-    return kind == csg::PrimKind::Sphere || kind == csg::PrimKind::Box || kind == csg::PrimKind::Cylinder;
-}
-
 // Marks the leaves under `node` that hold all of it: the node itself if a
 // leaf, a difference's minuend, every operand of an intersection (a union's
 // operands each hold only a part of it). The one-span leaves those
@@ -43,7 +37,7 @@ void mark_holders(const csg::Scene& scene, std::uint32_t node, std::uint32_t uni
             for (std::uint32_t k = 1; k < n.count; ++k) {
                 const std::uint32_t c = scene.children[n.first + k];
                 const csg::Node& sub = scene.nodes[c];
-                if (sub.op != csg::Op::Leaf || !one_span_leaf(scene.leaves[sub.first].kind)) continue;
+                if (sub.op != csg::Op::Leaf || !one_span_kind(scene.leaves[sub.first].kind)) continue;
                 impl.hollow_unit[sub.first] = root;
                 impl.hollow_node[sub.first] = c;
             }
