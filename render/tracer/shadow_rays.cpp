@@ -55,6 +55,21 @@ void mark_holders(const csg::Scene& scene, std::uint32_t node, std::uint32_t uni
 // it (CsgTracer::surface_offset), provably stays outside the convex leaf.
 constexpr double kDepartureCos = 1e-6;
 
+// Departure into a subtrahend, proven without its surface: the ray starts
+// inside the leaf `into` and is still inside it where it leaves the unit's
+// padded box (or at b), both by 16 degenerate rules, so (the leaf being
+// convex) it stays in the leaf, where the unit has nothing, until it has
+// left the box, which it never enters again. A hole's wall lit through the
+// hole's mouth: no cylinder solved. unit_blocks' own test gives the same
+// "no": the leaf's exit, where it starts, lies past the box's exit by the
+// margin, so its box test fails.
+bool stays_inside(const RayState& st, std::uint32_t into, std::uint32_t node, double a, double b) {
+    double t0 = -kInf, t1 = kInf;
+    if (!slab_clip(st.impl->padded[node], st.o, st.invd, t0, t1)) return false;
+    const double t = std::min(t1, b), margin = 16 * st.eps * st.len;
+    return t > a && st.inside_by(into, st.o + a * st.d, margin) && st.inside_by(into, st.o + t * st.d, margin);
+}
+
 // `item`: the unit's index in the top BVH (its ball), or kNone.
 bool unit_blocks(TopContext& ctx, std::uint32_t item, std::uint32_t node) {
     if (unit_ball_misses(*ctx.state, item, ctx.tnear, ctx.best)) return false;
@@ -69,6 +84,7 @@ bool unit_blocks(TopContext& ctx, std::uint32_t item, std::uint32_t node) {
     // is used here), so the window may start where the ray leaves it.
     double a = ctx.tnear;
     if (node == ctx.hollow) {
+        if (stays_inside(*ctx.state, ctx.into, node, a, ctx.best)) return false;
         if (ctx.state->spans(ctx.into, a, ctx.best, Need::All) == 1 && s.stack.at(base)->t0 <= a)
             a = std::max(a, s.stack.at(base)->t1);
         s.stack.resize(base);
