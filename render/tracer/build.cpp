@@ -288,8 +288,7 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
         impl_->build_ball_bvh();
         impl_->build_apexes();
     }
-    impl_->float_rays = impl_->top.bvh != nullptr;
-    for (const std::unique_ptr<Accel>& a : impl_->node_accels) impl_->float_rays = impl_->float_rays || a->bvh;
+    impl_->float_rays = impl_->top.bvh != nullptr || impl_->ball_bvh != nullptr;
 }
 
 CsgTracer::~CsgTracer() = default;

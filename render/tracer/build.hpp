@@ -125,8 +125,10 @@ struct CsgTracer::Impl {
     // difference that holds a unit, that unit's root node and the leaf's
     // node (Departure::hollow, into), else kNone.
     std::vector<std::uint32_t> hollow_unit, hollow_node;
-    // Whether any query goes through an Embree BVH of units or children
-    // (the top one, a node's): else no ray needs its float copy (make_state).
+    // Whether queries go through an Embree BVH of units (the top one, the
+    // balls'): then every ray needs its float copy at once (make_state);
+    // else a query through a node's own BVH makes it when it needs it
+    // (float_ray_now): a holed plate's grid answers nearly all of them.
     bool float_rays = true;
     std::vector<RTCScene> mesh_bvhs;        // per csg::Mesh used by a leaf (object space)
     std::vector<csg::Aabb> mesh_boxes;        // object-space bounds of each mesh
