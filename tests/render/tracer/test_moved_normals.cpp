@@ -19,12 +19,9 @@
 
 using namespace kerf;
 using namespace kerf::test;
-using csg::Op;
 using csg::PrimKind;
 
 namespace {
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // The general path (surface_normal.cpp without the short one) for a moved leaf.
 glm::dvec3 general_normal(const csg::Leaf& leaf, const render::TraceHit& hit, const glm::dvec3& p) {
@@ -53,7 +50,7 @@ TEST_CASE("normals of moved boxes and straight cylinders: closed forms and the g
                                               translate(c.x + (i + 0.5) * k, c.y + (j + 0.5) * k, c.z - k))));
         // A square notch in one edge: flipped box faces.
         kids.push_back(leaf(box({-0.5 * k, 1.7 * k, 0.4 * k}, {0.9 * k, 2.6 * k, 2 * k}, translate(c.x, c.y, c.z))));
-        const csg::Scene s = make_scene(op(Op::Difference, kids));
+        const csg::Scene s = make_scene(op(csg::Op::Difference, kids));
         const render::CsgTracer tracer(s, false);
         render::TraceScratch scratch;
         std::mt19937_64 rng(1805);
@@ -63,7 +60,7 @@ TEST_CASE("normals of moved boxes and straight cylinders: closed forms and the g
             const glm::dvec3 aim = c + k * glm::dvec3(2 + 2.2 * u(rng), 2 + 2.2 * u(rng), 0.5 + 0.6 * u(rng));
             const glm::dvec3 o = aim + 20 * k * glm::normalize(glm::dvec3(u(rng), u(rng), u(rng)) + 1e-3);
             render::TraceHit hit;
-            if (!tracer.intersect(render::TraceRay{o, aim - o, 0, kInf}, hit, scratch)) continue;
+            if (!tracer.intersect(render::TraceRay{o, aim - o, 0, std::numeric_limits<double>::infinity()}, hit, scratch)) continue;
             const glm::dvec3 p = o + hit.t * (aim - o);
             const glm::dvec3 n = tracer.normal(hit, p);
             const csg::Leaf& leaf = s.leaves[hit.surface.leaf];
