@@ -97,15 +97,15 @@ bool object_inside(const csg::Leaf& leaf, const glm::dvec3& q, double m) {
 
 }  // namespace
 
-bool RayState::inside_by(std::uint32_t node, const glm::dvec3& x, double margin) const {
-    const Node& n = impl->scene.nodes[node];
+bool inside_by(const CsgTracer::Impl& impl, std::uint32_t node, const glm::dvec3& x, double margin) {
+    const Node& n = impl.scene.nodes[node];
     if (n.op != Op::Leaf) return false;
     // The world ball of radius margin maps into the object ball of radius
     // margin·|object_from_world| (clear_of_within_box).
-    const csg::Leaf& leaf = impl->scene.leaves[n.first];
+    const csg::Leaf& leaf = impl.scene.leaves[n.first];
     const glm::dvec3 q =
-        impl->leaf_shift_only[n.first] ? x + leaf.object_from_world.offset : leaf.object_from_world.point(x);
-    return object_inside(leaf, q, margin * impl->leaf_stretch[n.first]);
+        impl.leaf_shift_only[n.first] ? x + leaf.object_from_world.offset : leaf.object_from_world.point(x);
+    return object_inside(leaf, q, margin * impl.leaf_stretch[n.first]);
 }
 
 bool RayState::clear_of_within_box(std::uint32_t node, const glm::dvec3& x, double margin) const {

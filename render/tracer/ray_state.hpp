@@ -106,6 +106,11 @@ inline double box_distance2(const csg::Aabb& box, const glm::dvec3& x) {
 #endif
 }
 
+// clearance.cpp: true if x lies inside the leaf `node` (a sphere, box,
+// cylinder or frustum) farther than `margin` (world) from its surface;
+// false if not, or not known.
+bool inside_by(const CsgTracer::Impl& impl, std::uint32_t node, const glm::dvec3& x, double margin);
+
 struct RayState {
     const CsgTracer::Impl* impl;
     glm::dvec3 o, d, invd;
@@ -174,10 +179,6 @@ struct RayState {
     }
     // clearance.cpp: clear_of for a point within `margin` of the node's box.
     bool clear_of_within_box(std::uint32_t node, const glm::dvec3& x, double margin) const;
-    // clearance.cpp: true if x lies inside the leaf `node` (a sphere, box,
-    // cylinder or frustum) farther than `margin` (world) from its surface;
-    // false if not, or not known.
-    bool inside_by(std::uint32_t node, const glm::dvec3& x, double margin) const;
     // difference_fast_path.cpp
     FastPath first_piece_if_clear(const csg::Node& n, std::uint32_t base, std::uint32_t sbase, std::uint32_t i,
                                   double a, double b, Need need);

@@ -6,6 +6,7 @@
 // (README.md, "Ball chords"). A ray that departs outwards from a convex
 // leaf holding its whole unit skips that unit (README.md, "Departure").
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "render/tracer/ball_chords.hpp"
@@ -55,19 +56,21 @@ void mark_holders(const csg::Scene& scene, std::uint32_t node, std::uint32_t uni
 // it (CsgTracer::surface_offset), provably stays outside the convex leaf.
 constexpr double kDepartureCos = 1e-6;
 
-// Departure into a subtrahend, proven without its surface: the ray starts
-// inside the leaf `into` and is still inside it where it leaves the unit's
-// padded box (or at b), both by 16 degenerate rules, so (the leaf being
+// Departure into a subtrahend, proven without its surface: the ray o + t·d
+// (invd = 1/d) starts inside the leaf `into` and is still inside it where
+// it leaves the padded box of the unit `node` (or at b), both by `margin`
+// (world; at least 16 of the unit's degenerate rules), so (the leaf being
 // convex) it stays in the leaf, where the unit has nothing, until it has
 // left the box, which it never enters again. A hole's wall lit through the
 // hole's mouth: no cylinder solved. unit_blocks' own test gives the same
 // "no": the leaf's exit, where it starts, lies past the box's exit by the
 // margin, so its box test fails.
-bool stays_inside(const RayState& st, std::uint32_t into, std::uint32_t node, double a, double b) {
+bool stays_inside(const CsgTracer::Impl& impl, const glm::dvec3& o, const glm::dvec3& d, const glm::dvec3& invd,
+                  double margin, std::uint32_t into, std::uint32_t node, double a, double b) {
     double t0 = -kInf, t1 = kInf;
-    if (!slab_clip(st.impl->padded[node], st.o, st.invd, t0, t1)) return false;
-    const double t = std::min(t1, b), margin = 16 * st.eps * st.len;
-    return t > a && st.inside_by(into, st.o + a * st.d, margin) && st.inside_by(into, st.o + t * st.d, margin);
+    if (!slab_clip(impl.padded[node], o, invd, t0, t1)) return false;
+    const double t = std::min(t1, b);
+    return t > a && inside_by(impl, into, o + a * d, margin) && inside_by(impl, into, o + t * d, margin);
 }
 
 // `item`: the unit's index in the top BVH (its ball), or kNone.
@@ -84,7 +87,8 @@ bool unit_blocks(TopContext& ctx, std::uint32_t item, std::uint32_t node) {
     // is used here), so the window may start where the ray leaves it.
     double a = ctx.tnear;
     if (node == ctx.hollow) {
-        if (stays_inside(*ctx.state, ctx.into, node, a, ctx.best)) return false;
+        const RayState& st = *ctx.state;
+        if (stays_inside(*st.impl, st.o, st.d, st.invd, 16 * st.eps * st.len, ctx.into, node, a, ctx.best)) return false;
         if (ctx.state->spans(ctx.into, a, ctx.best, Need::All) == 1 && s.stack.at(base)->t0 <= a)
             a = std::max(a, s.stack.at(base)->t1);
         s.stack.resize(base);
@@ -202,6 +206,16 @@ bool CsgTracer::occluded(const TraceRay& ray, TraceScratch& scratch, const Depar
     // A one-unit scene (a grooved sphere, a lens) whose unit the ray departs
     // from: nothing is left to block it, so no set-up at all.
     if (departs && nitems == 1 && from->unit == 0 && impl_->top.always.empty()) return false;
+    // A one-unit scene whose hole the ray departs into (a holed plate's
+    // wall): stays_inside before any set-up, with a margin from a bound on
+    // |o| (its 1-norm) instead of the unit's degenerate rule per unit of t.
+    if (from && nitems == 1 && !impl_->top.bvh && impl_->top.always.empty() && from->hollow == impl_->top.items[0] &&
+        ray.tnear >= 0) {
+        const std::uint32_t node = from->hollow;
+        const double margin =
+            16 * (impl_->node_eps[node] + impl_->eps_per_distance * (std::abs(ray.o.x) + std::abs(ray.o.y) + std::abs(ray.o.z)));
+        if (stays_inside(*impl_, ray.o, ray.d, 1.0 / ray.d, margin, from->into, node, ray.tnear, ray.tfar)) return false;
+    }
     RayState st;
     if (!make_state(st, impl_.get(), ray, scratch)) return false;
     TopContext ctx(st, ray);
