@@ -125,6 +125,10 @@ struct CsgTracer::Impl {
     // difference that holds a unit, that unit's root node and the leaf's
     // node (Departure::hollow, into), else kNone.
     std::vector<std::uint32_t> hollow_unit, hollow_node;
+    // Per leaf with a hollow_unit: 1 when the leaf reaches out of that
+    // unit's padded box (a drilled hole through a plate), so a ray may leave
+    // the box while still inside the leaf (shadow_rays.cpp, stays_inside).
+    std::vector<std::uint8_t> hollow_exits;
     // Whether queries go through an Embree BVH of units (the top one, the
     // balls'): then every ray needs its float copy at once (make_state);
     // else a query through a node's own BVH makes it when it needs it

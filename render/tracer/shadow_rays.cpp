@@ -67,10 +67,12 @@ constexpr double kDepartureCos = 1e-6;
 // margin, so its box test fails.
 bool stays_inside(const CsgTracer::Impl& impl, const glm::dvec3& o, const glm::dvec3& d, const glm::dvec3& invd,
                   double margin, std::uint32_t into, std::uint32_t node, double a, double b) {
+    // (A leaf inside the box, as a fishbowl's hollow: never.)
+    if (!impl.hollow_exits[impl.scene.nodes[into].first]) return false;
     double t0 = -kInf, t1 = kInf;
     if (!slab_clip(impl.padded[node], o, invd, t0, t1)) return false;
     const double t = std::min(t1, b);
-    return t > a && inside_by(impl, into, o + a * d, margin) && inside_by(impl, into, o + t * d, margin);
+    return t > a && inside_by(impl, into, o + t * d, margin) && inside_by(impl, into, o + a * d, margin);
 }
 
 // `item`: the unit's index in the top BVH (its ball), or kNone.
@@ -189,6 +191,13 @@ void CsgTracer::Impl::find_convex_units() {
     }
     for (std::size_t leaf = 0; leaf < refs.size(); ++leaf)
         if (refs[leaf] != 1) convex_unit[leaf] = hollow_unit[leaf] = hollow_node[leaf] = csg::kNone;
+    hollow_exits.assign(scene.leaves.size(), 0);
+    for (std::size_t leaf = 0; leaf < refs.size(); ++leaf) {
+        if (hollow_unit[leaf] == csg::kNone) continue;
+        const csg::Aabb &box = padded[hollow_unit[leaf]], &b = scene.leaves[leaf].bounds;
+        hollow_exits[leaf] = !(box.lo.x <= b.lo.x && box.lo.y <= b.lo.y && box.lo.z <= b.lo.z && b.hi.x <= box.hi.x &&
+                               b.hi.y <= box.hi.y && b.hi.z <= box.hi.z);
+    }
 }
 
 Departure CsgTracer::departure(const TraceHit& hit, const glm::dvec3& outward) const {
