@@ -163,6 +163,21 @@ void top_ball_filter(const RTCFilterFunctionNArguments* args) {
 bool CsgTracer::intersect(const TraceRay& ray, TraceHit& hit, TraceScratch& scratch) const {
     RayState st;
     if (!make_state(st, impl_.get(), ray, scratch)) return false;
+    // A holed plate alone (one unit, a grid_minus difference): its entry
+    // without the top-level context, as try_unit_entry would take it.
+    if (impl_->top.items.size() == 1 && impl_->top.always.empty() && impl_->grid_minus[impl_->top.items[0]] &&
+        !unit_ball_misses(st, 0, ray.tnear, ray.tfar)) {
+        st.enter_unit(impl_->top.items[0]);
+        Span entry;
+        const int decided = st.grid_first_entry(impl_->top.items[0], ray.tnear, ray.tfar, entry);
+        if (decided == 0) return false;
+        if (decided == 1) {
+            if (!(entry.t0 > ray.tnear && entry.t0 < ray.tfar)) return false;
+            hit.t = entry.t0;
+            hit.surface = entry.e0;
+            return true;
+        }
+    }
     TopContext ctx(st, ray);
     // Unbounded units (numbered after the BVH's for ties) go first: the
     // traversal then starts with their entry as tfar.
