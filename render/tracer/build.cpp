@@ -259,6 +259,9 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
         impl_->grid_minus[id] = m.op == Op::Leaf && one_span_kind(scene.leaves[m.first].kind);
     }
     impl_->build_accel(impl_->top, units, true);
+    if (impl_->top.items.size() == 1 && impl_->top.always.empty() && !impl_->top.bvh &&
+        impl_->grid_minus[impl_->top.items[0]])
+        impl_->plate_unit = impl_->top.items[0];
     impl_->find_convex_units();
     impl_->ball_slack = use_float ? 1e-5 : 1e-12;  // float sphere tests round at ~1e-7 of |c - o|
     impl_->top.balls = unit_balls(scene, impl_->top.items, impl_->node_eps);

@@ -165,11 +165,10 @@ bool CsgTracer::intersect(const TraceRay& ray, TraceHit& hit, TraceScratch& scra
     if (!make_state(st, impl_.get(), ray, scratch)) return false;
     // A holed plate alone (one unit, a grid_minus difference): its entry
     // without the top-level context, as try_unit_entry would take it.
-    if (impl_->top.items.size() == 1 && impl_->top.always.empty() && impl_->grid_minus[impl_->top.items[0]] &&
-        !unit_ball_misses(st, 0, ray.tnear, ray.tfar)) {
-        st.enter_unit(impl_->top.items[0]);
+    if (const std::uint32_t unit = impl_->plate_unit; unit != csg::kNone && !unit_ball_misses(st, 0, ray.tnear, ray.tfar)) {
+        st.enter_unit(unit);
         Span entry;
-        const int decided = st.grid_first_entry(impl_->top.items[0], ray.tnear, ray.tfar, entry);
+        const int decided = st.grid_first_entry(unit, ray.tnear, ray.tfar, entry);
         if (decided == 0) return false;
         if (decided == 1) {
             if (!(entry.t0 > ray.tnear && entry.t0 < ray.tfar)) return false;
