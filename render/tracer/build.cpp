@@ -250,7 +250,18 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
         impl_->leaf_pair[id] = leaves && n.count == 2;
         impl_->leaf_minus[id] = leaves && n.op == Op::Difference && n.count - 1 <= kDirectChildren;
     }
+    impl_->grid_minus.assign(scene.nodes.size(), 0);
+    for (std::uint32_t id = 0; id < scene.nodes.size(); ++id) {
+        const std::int32_t ai = impl_->accel_of_node[id];
+        const Node& n = scene.nodes[id];
+        if (n.op != Op::Difference || ai < 0 || impl_->node_accels[std::size_t(ai)]->grid.empty()) continue;
+        const Node& m = scene.nodes[scene.children[n.first]];
+        impl_->grid_minus[id] = m.op == Op::Leaf && one_span_kind(scene.leaves[m.first].kind);
+    }
     impl_->build_accel(impl_->top, units, true);
+    if (impl_->top.items.size() == 1 && impl_->top.always.empty() && !impl_->top.bvh &&
+        impl_->grid_minus[impl_->top.items[0]])
+        impl_->plate_unit = impl_->top.items[0];
     impl_->find_convex_units();
     impl_->ball_slack = use_float ? 1e-5 : 1e-12;  // float sphere tests round at ~1e-7 of |c - o|
     impl_->top.balls = unit_balls(scene, impl_->top.items, impl_->node_eps);
@@ -308,8 +319,7 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
         impl_->build_ball_bvh();
         impl_->build_apexes();
     }
-    impl_->float_rays = impl_->top.bvh != nullptr;
-    for (const std::unique_ptr<Accel>& a : impl_->node_accels) impl_->float_rays = impl_->float_rays || a->bvh;
+    impl_->float_rays = impl_->top.bvh != nullptr || impl_->ball_bvh != nullptr;
 }
 
 CsgTracer::~CsgTracer() = default;

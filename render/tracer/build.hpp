@@ -127,6 +127,14 @@ struct CsgTracer::Impl {
     std::vector<std::uint8_t> leaf_minus;
     // The leaf CsgTracer::solve_ahead solves (build.cpp says which); kNone: none.
     std::uint32_t ahead_leaf = csg::kNone;
+    // Per node: 1 for a difference with a subtrahend grid (box_grid.hpp)
+    // whose minuend is a one-span leaf (sphere, box, cylinder): a unit's
+    // first entry is then found in locals (difference_first_entry.cpp,
+    // grid_first_entry), without the span stack.
+    std::vector<std::uint8_t> grid_minus;
+    // The root's one unit when it is a grid_minus difference and there are
+    // no others (a holed plate alone: first_hit.cpp asks it directly), else kNone.
+    std::uint32_t plate_unit = csg::kNone;
     // Per leaf: the unit (top item index; unbounded units after the items)
     // that lies wholly inside it when the leaf is convex, else kNone: a
     // shadow ray leaving its surface outwards skips that unit (Departure).
@@ -135,8 +143,14 @@ struct CsgTracer::Impl {
     // difference that holds a unit, that unit's root node and the leaf's
     // node (Departure::hollow, into), else kNone.
     std::vector<std::uint32_t> hollow_unit, hollow_node;
-    // Whether any query goes through an Embree BVH of units or children
-    // (the top one, a node's): else no ray needs its float copy (make_state).
+    // Per leaf with a hollow_unit: 1 when the leaf reaches out of that
+    // unit's padded box (a drilled hole through a plate), so a ray may leave
+    // the box while still inside the leaf (shadow_rays.cpp, stays_inside).
+    std::vector<std::uint8_t> hollow_exits;
+    // Whether queries go through an Embree BVH of units (the top one, the
+    // balls'): then every ray needs its float copy at once (make_state);
+    // else a query through a node's own BVH makes it when it needs it
+    // (float_ray_now): a holed plate's grid answers nearly all of them.
     bool float_rays = true;
     std::vector<RTCScene> mesh_bvhs;        // per csg::Mesh used by a leaf (object space)
     std::vector<csg::Aabb> mesh_boxes;        // object-space bounds of each mesh
@@ -175,6 +189,13 @@ void top_occluded_callback(const RTCOccludedFunctionNArguments* args);    // sha
 void collect_callback(const RTCIntersectFunctionNArguments* args);        // node_spans.cpp
 void top_ball_filter(const RTCFilterFunctionNArguments* args);            // first_hit.cpp
 void top_ball_occluded_filter(const RTCFilterFunctionNArguments* args);   // shadow_rays.cpp
+
+// Leaves with one span per line whatever the window (sphere, box,
+// cylinder): a subtrahend a ray leaves only once, whose span found on one
+// window is what any overlapping window gives.
+inline bool one_span_kind(csg::PrimKind kind) {
+    return kind == csg::PrimKind::Sphere || kind == csg::PrimKind::Box || kind == csg::PrimKind::Cylinder;
+}
 
 // Whether a box is bounded (half-spaces and what contains them are not):
 // solids lie within csg::kRenderableRange, so anything beyond is infinite.

@@ -68,7 +68,45 @@ bool object_clear(const csg::Leaf& leaf, const glm::dvec3& q, double m) {
     return false;
 }
 
+// Whether the ball of radius m >= 0 round q lies inside the one-span
+// primitive (sphere, box, cylinder or frustum; false for others or when
+// not proven), the mirror of object_clear.
+bool object_inside(const csg::Leaf& leaf, const glm::dvec3& q, double m) {
+    const double* c = leaf.p;
+    switch (leaf.kind) {
+        case PrimKind::Sphere: {
+            const double r = c[0] - m;
+            return r > 0 && glm::dot(q, q) < r * r;
+        }
+        case PrimKind::Box:
+            return c[0] + m < q.x && q.x < c[3] - m && c[1] + m < q.y && q.y < c[4] - m && c[2] + m < q.z &&
+                   q.z < c[5] - m;
+        case PrimKind::Cylinder: {
+            const double h = c[1] - c[0], dr = c[3] - c[2];
+            if (!(h > 0) || !(c[0] + m < q.z && q.z < c[1] - m)) return false;
+            if (dr == 0) {
+                const double r = c[2] - m;
+                return r > 0 && q.x * q.x + q.y * q.y < r * r;
+            }
+            const double rho = std::sqrt(q.x * q.x + q.y * q.y);
+            return ((rho - c[2]) * h - (q.z - c[0]) * dr) / std::sqrt(h * h + dr * dr) < -m;
+        }
+        default: return false;
+    }
+}
+
 }  // namespace
+
+bool inside_by(const CsgTracer::Impl& impl, std::uint32_t node, const glm::dvec3& x, double margin) {
+    const Node& n = impl.scene.nodes[node];
+    if (n.op != Op::Leaf) return false;
+    // The world ball of radius margin maps into the object ball of radius
+    // margin·|object_from_world| (clear_of_within_box).
+    const csg::Leaf& leaf = impl.scene.leaves[n.first];
+    const glm::dvec3 q =
+        impl.leaf_shift_only[n.first] ? x + leaf.object_from_world.offset : leaf.object_from_world.point(x);
+    return object_inside(leaf, q, margin * impl.leaf_stretch[n.first]);
+}
 
 bool RayState::clear_of_within_box(std::uint32_t node, const glm::dvec3& x, double margin) const {
     const Node& n = impl->scene.nodes[node];

@@ -9,6 +9,7 @@
 // the one gathering them all gives.
 #include <algorithm>
 
+#include "render/tracer/analytic_spans.hpp"
 #include "render/tracer/ray_state.hpp"
 
 namespace kerf::render {
@@ -24,9 +25,7 @@ bool listed(const std::uint32_t* near, int nnear, std::uint32_t node) {
 // wider window that still overlaps it would give.
 bool one_span_leaf(const csg::Scene& scene, std::uint32_t node) {
     const csg::Node& n = scene.nodes[node];
-    if (n.op != csg::Op::Leaf) return false;
-    const csg::PrimKind kind = scene.leaves[n.first].kind;
-    return kind == csg::PrimKind::Sphere || kind == csg::PrimKind::Box || kind == csg::PrimKind::Cylinder;
+    return n.op == csg::Op::Leaf && one_span_kind(scene.leaves[n.first].kind);
 }
 
 // f(node) for every subtrahend the grid names within `reach` of x, those it
@@ -166,6 +165,70 @@ std::uint32_t RayState::first_entry_by_points(const Accel& subtrahends, std::uin
         first = false;
         end = std::min(stop, std::max(claimed + 2 * eps, c + 2 * (end - c)));
     }
+}
+
+// first_entry_by_points for a grid_minus difference (the minuend's one
+// span m) in locals: the same box tests, spans, unions and subtractions in
+// the same order, so the same numbers, for the rays that the first two
+// windows of the near subtrahends decide (the entry clear of every
+// subtrahend, or the exit of the hole the ray enters). The rest (a near one
+// that is not a one-span leaf or that the first window does not meet, a
+// piece not clear of the others, a third window) give -1 with the counters
+// restored, and spans() starts over.
+int RayState::grid_first_entry(std::uint32_t node, double a, double b, Span& out) {
+    const csg::Scene& scene = impl->scene;
+    const csg::Node& n = scene.nodes[node];
+    if (!box_hit(*this, impl->padded[node], a, b)) return 0;
+    const TraceCounters before = scratch->counters;
+    const auto undecided = [&] {
+        scratch->counters = before;
+        return -1;
+    };
+    scratch->counters.difference_ops++;
+    SpanBuffer<csg::kMaxSpans> minuend;
+    const int nm = analytic_node_spans(*this, scene.children[n.first], a, b, minuend.at);
+    if (nm == 0) return 0;
+    const Span& m = minuend.at[0];
+    const double c = m.t0;
+    if (nm > 1) return undecided();
+    if (!(c > a)) return undecided();  // starts inside the window: difference_spans gathers
+    const Accel& subtrahends = *impl->node_accels[std::size_t(impl->accel_of_node[node])];
+    const double stop = std::min(b, m.t1) + 2 * eps;
+    double end = c + 2 * eps;
+    std::uint32_t near[kMaxNear];
+    const int nnear = near_subtrahends(subtrahends, o + c * d, 4 * eps * len, 3 * eps * len, near);
+    if (nnear == 0 && m.t1 - m.t0 > eps) {
+        if (c > b) return 0;
+        out = m;
+        return 1;
+    }
+    if (nnear < 0) return undecided();
+    // Each near one's span on the first window, which the second reuses.
+    SpanBuffer<kMaxNear * csg::kMaxSpans> gathered;
+    Span* u = gathered.at;
+    int nu = 0;
+    for (int k = 0; k < nnear; ++k) {
+        if (!one_span_leaf(scene, near[k])) return undecided();
+        if (analytic_node_spans(*this, near[k], c - 2 * eps, end, u + nu) != 1) return undecided();
+        ++nu;
+    }
+    double claimed = end;
+    for (int k = 0; k < nu; ++k) claimed = std::max(claimed, u[k].t1);
+    nu = span_normalize_union(u, nu, eps);
+    SpanBuffer<kMaxNear + 1> left;
+    const int r = span_difference(&m, 1, u, nu, left.at, eps);
+    for (int window = 0; window < 2; ++window) {
+        const Span& piece = left.at[0];
+        if (r > 0 && (piece.t0 == c || piece.t0 < end - eps)) {
+            if (!clear_of_others(subtrahends, near, nnear, o + piece.t0 * d, 2 * eps * len)) return undecided();
+            if (piece.t0 > b) return 0;
+            out = piece;
+            return 1;
+        }
+        if (end >= stop) return 0;
+        end = std::min(stop, std::max(claimed + 2 * eps, c + 2 * (end - c)));
+    }
+    return undecided();
 }
 
 // Any (a shadow ray) for minuend span i on [a, b]: span i minus the

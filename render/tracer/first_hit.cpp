@@ -14,6 +14,17 @@ namespace kerf::render {
 
 namespace {
 
+// A unit's first entry past tnear: the new best if it is nearer, or as
+// near and the unit comes first (ties go by unit index).
+bool take_entry(TopContext& ctx, std::uint32_t unit_index, const Span& sp) {
+    if (!(sp.t0 < ctx.best || (sp.t0 == ctx.best && ctx.found && unit_index < ctx.best_unit))) return false;
+    ctx.best = sp.t0;
+    ctx.best_unit = unit_index;
+    ctx.best_end = sp.e0;
+    ctx.found = true;
+    return true;
+}
+
 // The unit's first entry in (tnear, best). True if it is the new best.
 // minuend_entry: the ball chords proved that entry to be the minuend's own
 // (entry_is_minuends): the difference's box test, then the minuend leaf
@@ -25,6 +36,13 @@ bool try_unit_entry(TopContext& ctx, std::uint32_t unit_index, std::uint32_t nod
     const std::uint32_t base = s.stack.size();
     st.enter_unit(node);
     std::uint32_t n = 0;
+    Span entry;
+    int decided;
+    if (!minuend_entry && st.impl->grid_minus[node] && (decided = st.grid_first_entry(node, ctx.tnear, ctx.best, entry)) >= 0) {
+        // A holed plate's unit, decided in locals (no span stack).
+        if (decided == 0 || !(entry.t0 > ctx.tnear)) return false;
+        return take_entry(ctx, unit_index, entry);
+    }
     if (!minuend_entry) {
         n = st.spans(node, ctx.tnear, ctx.best, Need::First);
     } else if (slab_hit(st.impl->padded[node], st.o, st.invd, ctx.tnear - st.eps, ctx.best + st.eps)) {
@@ -35,12 +53,7 @@ bool try_unit_entry(TopContext& ctx, std::uint32_t unit_index, std::uint32_t nod
     for (std::uint32_t i = 0; i < n; ++i) {
         const Span& sp = *s.stack.at(base + i);
         if (sp.t0 <= ctx.tnear) continue;
-        if (sp.t0 < ctx.best || (sp.t0 == ctx.best && ctx.found && unit_index < ctx.best_unit)) {
-            ctx.best = sp.t0;
-            ctx.best_unit = unit_index;
-            ctx.best_end = sp.e0;
-            ctx.found = better = true;
-        }
+        better = take_entry(ctx, unit_index, sp);
         break;
     }
     s.stack.resize(base);
@@ -158,6 +171,20 @@ void top_ball_filter(const RTCFilterFunctionNArguments* args) {
 bool CsgTracer::intersect(const TraceRay& ray, TraceHit& hit, TraceScratch& scratch) const {
     RayState st;
     if (!make_state(st, impl_.get(), ray, scratch)) return false;
+    // A holed plate alone (one unit, a grid_minus difference): its entry
+    // without the top-level context, as try_unit_entry would take it.
+    if (const std::uint32_t unit = impl_->plate_unit; unit != csg::kNone && !unit_ball_misses(st, 0, ray.tnear, ray.tfar)) {
+        st.enter_unit(unit);
+        Span entry;
+        const int decided = st.grid_first_entry(unit, ray.tnear, ray.tfar, entry);
+        if (decided == 0) return false;
+        if (decided == 1) {
+            if (!(entry.t0 > ray.tnear && entry.t0 < ray.tfar)) return false;
+            hit.t = entry.t0;
+            hit.surface = entry.e0;
+            return true;
+        }
+    }
     TopContext ctx(st, ray);
     // Unbounded units (numbered after the BVH's for ties) go first: the
     // traversal then starts with their entry as tfar.

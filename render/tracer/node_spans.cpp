@@ -248,6 +248,7 @@ void RayState::collect(const Accel& accel, double a, double b) {
     ctx.accel = &accel;
     ctx.a = a;
     ctx.b = b;
+    float_ray_now(*this);
     RTCRayHit rh = make_rayhit(*this, a, b);
     accel.ready();
     rtcIntersect1(accel.bvh, &ctx.rtc, &rh);

@@ -106,6 +106,11 @@ inline double box_distance2(const csg::Aabb& box, const glm::dvec3& x) {
 #endif
 }
 
+// clearance.cpp: true if x lies inside the leaf `node` (a sphere, box,
+// cylinder or frustum) farther than `margin` (world) from its surface;
+// false if not, or not known.
+bool inside_by(const CsgTracer::Impl& impl, std::uint32_t node, const glm::dvec3& x, double margin);
+
 struct RayState {
     const CsgTracer::Impl* impl;
     glm::dvec3 o, d, invd;
@@ -117,6 +122,7 @@ struct RayState {
     double t_pad;     // t slack of float Embree windows
     double t_shift;   // the float Embree ray starts at o + t_shift·d (its t is t - t_shift)
     double enter, leave;  // where the line enters and leaves `reach` (±inf: reach is everything)
+    bool float_ray;       // org, dir, t_pad and t_shift are set (float_ray_now)
     TraceScratch* scratch;
 
     // Sets the degenerate rule for a query of `unit` (tolerances.cpp).
@@ -188,6 +194,11 @@ struct RayState {
     std::uint32_t first_entry_by_points(const Accel& subtrahends, std::uint32_t base, std::uint32_t i, double b);
     FastPath any_by_points(const Accel& subtrahends, std::uint32_t base, std::uint32_t sbase, std::uint32_t i,
                            double a, double b);
+    // The same first entry of a grid_minus difference `node` on (a, b],
+    // for the rays it decides in locals: 1 with the piece in `out`, 0 no
+    // entry, -1 not decided (nothing pushed, the counters as they were: ask
+    // spans()).
+    int grid_first_entry(std::uint32_t node, double a, double b, Span& out);
     // The subtrahends of `accel` within `reach` of x (per axis, by the
     // grid) that are not clear of x by `margin` (at most kMaxNear, node
     // ids); -1: not known.
@@ -241,6 +252,15 @@ inline void start_float_ray(RayState& st, double t_shift) {
     st.t_pad = 1e-5 * (st.impl->frame_radius + std::abs(start.x) + std::abs(start.y) + std::abs(start.z)) * st.inv_len;
 }
 
+// The float Embree ray of the state's double ray, started where the line
+// enters `reach` (make_state), if not yet set.
+inline void float_ray_now(RayState& st) {
+    if (st.float_ray) return;
+    for (int i = 0; i < 3; ++i) st.dir[i] = float(st.d[i]);
+    start_float_ray(st, std::isfinite(st.enter) ? std::max(0.0, st.enter) : 0.0);
+    st.float_ray = true;
+}
+
 // Sets up `st` for a query along `ray`. Returns false, with the rest of the
 // set-up skipped, when the ray's line misses `reach` (the box around every
 // bounded unit): a slab test on the whole line (no t-window, so no tolerance
@@ -259,12 +279,10 @@ inline void start_float_ray(RayState& st, double t_shift) {
     st.leave = leave;
     st.len = glm::length(ray.d);
     st.inv_len = 1 / st.len;
-    // (A scene queried without any Embree BVH, of units or of a node's
-    // children (build.hpp, float_rays), never reads them.)
-    if (impl->float_rays) {
-        for (int i = 0; i < 3; ++i) st.dir[i] = float(ray.d[i]);
-        start_float_ray(st, std::isfinite(enter) ? std::max(0.0, enter) : 0.0);
-    }
+    // (A query through a node's own BVH sets them on first use
+    // (float_ray_now); a scene with a BVH of units needs them for every ray.)
+    st.float_ray = false;
+    if (impl->float_rays) float_ray_now(st);
     // Round-off of t also grows with the origin's own magnitude (far cameras).
     st.eps_ray = impl->eps_per_distance * glm::length(ray.o);
     st.eps = st.eps_ray * st.inv_len;  // until enter_unit

@@ -6,6 +6,7 @@
 // (README.md, "Ball chords"). A ray that departs outwards from a convex
 // leaf holding its whole unit skips that unit (README.md, "Departure").
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "render/tracer/ball_chords.hpp"
@@ -19,12 +20,6 @@ namespace {
 bool convex_leaf(csg::PrimKind kind) {
     return kind == csg::PrimKind::Sphere || kind == csg::PrimKind::Box || kind == csg::PrimKind::Cylinder ||
            kind == csg::PrimKind::Plane;
-}
-
-// Solids with one span per line whatever the window (a plane's is a
-// half-line): a subtrahend that a ray can leave only once.
-bool one_span_leaf(csg::PrimKind kind) {
-    return kind == csg::PrimKind::Sphere || kind == csg::PrimKind::Box || kind == csg::PrimKind::Cylinder;
 }
 
 // Marks the leaves under `node` that hold all of it: the node itself if a
@@ -43,7 +38,7 @@ void mark_holders(const csg::Scene& scene, std::uint32_t node, std::uint32_t uni
             for (std::uint32_t k = 1; k < n.count; ++k) {
                 const std::uint32_t c = scene.children[n.first + k];
                 const csg::Node& sub = scene.nodes[c];
-                if (sub.op != csg::Op::Leaf || !one_span_leaf(scene.leaves[sub.first].kind)) continue;
+                if (sub.op != csg::Op::Leaf || !one_span_kind(scene.leaves[sub.first].kind)) continue;
                 impl.hollow_unit[sub.first] = root;
                 impl.hollow_node[sub.first] = c;
             }
@@ -61,6 +56,25 @@ void mark_holders(const csg::Scene& scene, std::uint32_t node, std::uint32_t uni
 // it (CsgTracer::surface_offset), provably stays outside the convex leaf.
 constexpr double kDepartureCos = 1e-6;
 
+// Departure into a subtrahend, proven without its surface: the ray o + t·d
+// (invd = 1/d) starts inside the leaf `into` and is still inside it where
+// it leaves the padded box of the unit `node` (or at b), both by `margin`
+// (world; at least 16 of the unit's degenerate rules), so (the leaf being
+// convex) it stays in the leaf, where the unit has nothing, until it has
+// left the box, which it never enters again. A hole's wall lit through the
+// hole's mouth: no cylinder solved. unit_blocks' own test gives the same
+// "no": the leaf's exit, where it starts, lies past the box's exit by the
+// margin, so its box test fails.
+bool stays_inside(const CsgTracer::Impl& impl, const glm::dvec3& o, const glm::dvec3& d, const glm::dvec3& invd,
+                  double margin, std::uint32_t into, std::uint32_t node, double a, double b) {
+    // (A leaf inside the box, as a fishbowl's hollow: never.)
+    if (!impl.hollow_exits[impl.scene.nodes[into].first]) return false;
+    double t0 = -kInf, t1 = kInf;
+    if (!slab_clip(impl.padded[node], o, invd, t0, t1)) return false;
+    const double t = std::min(t1, b);
+    return t > a && inside_by(impl, into, o + t * d, margin) && inside_by(impl, into, o + a * d, margin);
+}
+
 // `item`: the unit's index in the top BVH (its ball), or kNone.
 bool unit_blocks(TopContext& ctx, std::uint32_t item, std::uint32_t node) {
     if (unit_ball_misses(*ctx.state, item, ctx.tnear, ctx.best)) return false;
@@ -75,6 +89,8 @@ bool unit_blocks(TopContext& ctx, std::uint32_t item, std::uint32_t node) {
     // is used here), so the window may start where the ray leaves it.
     double a = ctx.tnear;
     if (node == ctx.hollow) {
+        const RayState& st = *ctx.state;
+        if (stays_inside(*st.impl, st.o, st.d, st.invd, 16 * st.eps * st.len, ctx.into, node, a, ctx.best)) return false;
         if (ctx.state->spans(ctx.into, a, ctx.best, Need::All) == 1 && s.stack.at(base)->t0 <= a)
             a = std::max(a, s.stack.at(base)->t1);
         s.stack.resize(base);
@@ -175,6 +191,13 @@ void CsgTracer::Impl::find_convex_units() {
     }
     for (std::size_t leaf = 0; leaf < refs.size(); ++leaf)
         if (refs[leaf] != 1) convex_unit[leaf] = hollow_unit[leaf] = hollow_node[leaf] = csg::kNone;
+    hollow_exits.assign(scene.leaves.size(), 0);
+    for (std::size_t leaf = 0; leaf < refs.size(); ++leaf) {
+        if (hollow_unit[leaf] == csg::kNone) continue;
+        const csg::Aabb &box = padded[hollow_unit[leaf]], &b = scene.leaves[leaf].bounds;
+        hollow_exits[leaf] = !(box.lo.x <= b.lo.x && box.lo.y <= b.lo.y && box.lo.z <= b.lo.z && b.hi.x <= box.hi.x &&
+                               b.hi.y <= box.hi.y && b.hi.z <= box.hi.z);
+    }
 }
 
 Departure CsgTracer::departure(const TraceHit& hit, const glm::dvec3& outward) const {
@@ -192,6 +215,16 @@ bool CsgTracer::occluded(const TraceRay& ray, TraceScratch& scratch, const Depar
     // A one-unit scene (a grooved sphere, a lens) whose unit the ray departs
     // from: nothing is left to block it, so no set-up at all.
     if (departs && nitems == 1 && from->unit == 0 && impl_->top.always.empty()) return false;
+    // A one-unit scene whose hole the ray departs into (a holed plate's
+    // wall): stays_inside before any set-up, with a margin from a bound on
+    // |o| (its 1-norm) instead of the unit's degenerate rule per unit of t.
+    if (from && nitems == 1 && !impl_->top.bvh && impl_->top.always.empty() && from->hollow == impl_->top.items[0] &&
+        ray.tnear >= 0) {
+        const std::uint32_t node = from->hollow;
+        const double margin =
+            16 * (impl_->node_eps[node] + impl_->eps_per_distance * (std::abs(ray.o.x) + std::abs(ray.o.y) + std::abs(ray.o.z)));
+        if (stays_inside(*impl_, ray.o, ray.d, 1.0 / ray.d, margin, from->into, node, ray.tnear, ray.tfar)) return false;
+    }
     RayState st;
     if (!make_state(st, impl_.get(), ray, scratch)) return false;
     TopContext ctx(st, ray);
