@@ -36,6 +36,7 @@
 #include "interpreter/graph_builder.hpp"
 #include "interpreter/loader.hpp"
 #include "interpreter/modules/state.hpp"
+#include "interpreter/operators.hpp"
 #include "interpreter/scope.hpp"
 #include "interpreter/value.hpp"
 
@@ -149,7 +150,7 @@ private:
     std::string did_you_mean(std::string_view name, Scope& s, NameKind kind);
     void check_builtin_name(const Builtin& fn, const ast::Binding& a, std::size_t i, std::size_t count);
     // The OpenSCAD dialect's answer to an operator that threw a SoftError.
-    Value lenient_operator(const ast::Expr& e, const Value& a, const Value* b);
+    Value lenient_operator(const ast::Expr& e, const Value& a, const Value* b, OpBudget& budget);
     void do_assert(const std::vector<ast::Binding>& args, Scope& s, const SourceLoc& loc);
     // Counts (and charges) the iterations of a `for` over v; a string becomes
     // the list of its characters (as in OpenSCAD), so v may be replaced.
