@@ -576,6 +576,9 @@ Value Evaluator::eval(const ast::Expr& e, Scope& s) {
             Value a = eval(*e.items[0], s);
             if (e.text == "!") return Value(!a.truthy());
             OpBudget budget{opt_.limits.list_elements};
+            // OpenSCAD's undef operand (the usual warning in a loop) goes
+            // straight to its answer: the strict refusal costs a throw.
+            if (lenient_ && a.is_undef()) return lenient_operator(e, a, nullptr, budget);
             Value v;
             try {
                 v = unary_op(e.text, a, e.loc, &budget);
@@ -592,6 +595,9 @@ Value Evaluator::eval(const ast::Expr& e, Scope& s) {
             Value a = eval(*e.items[0], s);
             Value b = eval(*e.items[1], s);
             OpBudget budget{opt_.limits.list_elements};
+            if (lenient_ && (a.is_undef() || b.is_undef()) && !a.is_list() && !b.is_list() && e.text != "==" &&
+                e.text != "!=")
+                return lenient_operator(e, a, &b, budget);
             Value v;
             try {
                 v = binary_op(e.text, a, b, e.loc, &budget);

@@ -257,6 +257,17 @@ private:
 
     ModuleState modules_;              // what built-in modules remember
     std::vector<Diagnostic> warnings_;
+    // warn()'s fast way to a repeat: the warnings kept under a hash of their
+    // place and message, and the calls each was last reached through (a
+    // loop warns again through the same calls, so no notes are built).
+    std::unordered_map<std::size_t, std::vector<std::size_t>> warning_index_;
+    std::vector<std::vector<CallSite>> warning_calls_;
+    // Past kMaxWarnings different warnings, the others are counted into one
+    // last warning at the first of them (close_warnings writes its text).
+    static constexpr std::size_t kMaxWarnings = 1000;
+    std::uint64_t warnings_dropped_ = 0;
+    std::string first_dropped_;
+    void close_warnings();
     std::int64_t root_override_ = -1;  // the first `!` subtree
     std::size_t root_ghosts_[2] = {0, 0};  // the ghosts recorded inside it: [from, to)
     std::uint64_t exact_curves_ = 0;   // exact_curve(): how many, and the first
