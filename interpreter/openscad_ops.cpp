@@ -41,6 +41,12 @@ Value less(const Value& a, const Value& b, std::string& warning, OpBudget& budge
         std::size_t i = 0;
         for (; i < x.size() && i < y.size(); ++i) {
             budget.walk(1);
+            if (x[i].is_number() && y[i].is_number()) {  // the common case, without a Value made
+                const double p = x[i].as_number(), q = y[i].as_number();
+                if (p < q) return Value(true);
+                if (q < p) return Value(false);
+                continue;  // equal, or NaN: neither is less, as below
+            }
             Value t = less(x[i], y[i], warning, budget);
             if (t.is_undef()) return t;
             if (t.as_bool()) return Value(true);
@@ -96,11 +102,17 @@ Value add_lists(std::string_view op, const Value& a, const Value& b, const Sourc
     const ValueList& x = a.as_list();
     const ValueList& y = b.as_list();
     budget.make(std::min(x.size(), y.size()), loc);
+    const bool plus = op == "+";
     ValueList out;
     out.reserve(std::min(x.size(), y.size()));
     for (std::size_t i = 0; i < x.size() && i < y.size(); ++i) {
         if (x[i].is_list() && y[i].is_list()) {
             out.push_back(add_lists(op, x[i], y[i], loc, budget));
+            continue;
+        }
+        if (x[i].is_number() && y[i].is_number()) {  // the common case, without a call
+            const double p = x[i].as_number(), q = y[i].as_number();
+            out.push_back(Value(plus ? p + q : p - q));
             continue;
         }
         try {
