@@ -327,32 +327,50 @@ Value Evaluator::call_builtin(const ast::Expr& e, Scope& s) {
         argv[i] = a.value ? eval(*a.value, s) : Value();
     }
     // A built-in that walks a list argument (max, min, norm, search,
-    // lookup, ...) costs its top-level length, as count_made says; not
-    // those that only look at its type or length, nor concat and str
-    // (charged by what they make). Strings and nested lists go uncounted.
-    static constexpr std::string_view kConstantTime[] = {"len", "concat", "str", "is_list", "is_num", "is_bool",
-                                                          "is_string", "is_undef", "is_function"};
-    if (std::find(std::begin(kConstantTime), std::end(kConstantTime), e.text) == std::end(kConstantTime)) {
-        std::uint64_t walked = 0;
-        for (std::size_t i = 0; i < e.args.size(); ++i)
-            if (argv[i].is_list()) walked += argv[i].as_list().size();
-        count_work(walked, e.loc);
-    }
+    // lookup, ...) costs its top-level length, and one that walks a string
+    // (len, ord, search, ...) 1 per 16 bytes, as count_made says; not those
+    // that only look at a type or a list's length, nor concat and str
+    // (charged by what they make). What a built-in walks beyond that (the
+    // pairs search compares) it tallies in ctx.walked.
+    static constexpr std::string_view kMakers[] = {"concat", "str"};
+    static constexpr std::string_view kTypeTests[] = {"is_list", "is_num",    "is_bool",
+                                                      "is_string", "is_undef", "is_function"};
+    auto among = [&](const auto& names) { return std::find(std::begin(names), std::end(names), e.text) != std::end(names); };
+    std::uint64_t walked = 0;
+    if (!among(kMakers) && !among(kTypeTests))
+        for (std::size_t i = 0; i < e.args.size(); ++i) {
+            if (argv[i].is_list() && e.text != "len") walked += argv[i].as_list().size();
+            if (argv[i].is_string()) walked += argv[i].as_string().size() / 16;
+        }
+    count_work(walked, e.loc);
+    const std::uint64_t steps_left = opt_.limits.steps - std::min(steps_, opt_.limits.steps);
+    WorkTally work{0, steps_left < UINT64_MAX / 32 ? (steps_left + 1) * 16 : UINT64_MAX};
     std::vector<std::string> said;
-    BuiltinContext ctx{e.loc, opt_.limits.list_elements, module_stack_, lenient_, &said};
+    BuiltinContext ctx{e.loc, opt_.limits.list_elements, module_stack_, lenient_, &said, &work};
+    auto run = [&] {
+        try {
+            return fn->fn(std::span<const Value>(argv, e.args.size()), ctx);
+        } catch (const WorkCapReached&) {
+            count_work(work.walked, e.loc);  // past the limit: throws
+            throw;
+        }
+    };
     if (!lenient_) {
-        Value v = fn->fn(std::span<const Value>(argv, e.args.size()), ctx);
+        Value v = run();
+        count_work(work.walked, e.loc);
         count_made(v, e.loc);
         return v;
     }
     Value v;
     try {
-        v = fn->fn(std::span<const Value>(argv, e.args.size()), ctx);
+        v = run();
         for (std::string& m : said) warn(e.loc, std::move(m));
     } catch (const SoftError& err) {
+        count_work(work.walked, e.loc);
         warn(err.diagnostic().loc, err.diagnostic().message);
         return Value();
     }
+    count_work(work.walked, e.loc);
     count_made(v, e.loc);
     return v;
 }
@@ -393,9 +411,11 @@ void Evaluator::check_builtin_name(const Builtin& fn, const ast::Binding& a, std
     warn(a.loc, message + "; taken in order, as OpenSCAD does");
 }
 
-Value Evaluator::lenient_operator(const ast::Expr& e, const Value& a, const Value* b) {
+Value Evaluator::lenient_operator(const ast::Expr& e, const Value& a, const Value* b, OpBudget& budget) {
     std::string warning;
-    Value v = b ? openscad_binary(e.text, a, *b, warning) : openscad_unary(e.text, a, warning);
+    Value v = b ? openscad_binary(e.text, a, *b, e.loc, warning, budget)
+                : openscad_unary(e.text, a, e.loc, warning, budget);
+    count_work(budget.used + budget.walked, e.loc);
     if (!warning.empty()) warn(e.loc, std::move(warning));
     return v;
 }
@@ -556,14 +576,17 @@ Value Evaluator::eval(const ast::Expr& e, Scope& s) {
             Value a = eval(*e.items[0], s);
             if (e.text == "!") return Value(!a.truthy());
             OpBudget budget{opt_.limits.list_elements};
+            // OpenSCAD's undef operand (the usual warning in a loop) goes
+            // straight to its answer: the strict refusal costs a throw.
+            if (lenient_ && a.is_undef()) return lenient_operator(e, a, nullptr, budget);
             Value v;
             try {
                 v = unary_op(e.text, a, e.loc, &budget);
             } catch (const SoftError&) {
                 if (!lenient_) throw;
-                return lenient_operator(e, a, nullptr);
+                return lenient_operator(e, a, nullptr, budget);
             }
-            count_work(budget.used, e.loc);
+            count_work(budget.used + budget.walked, e.loc);
             return v;
         }
         case K::Binary: {
@@ -572,22 +595,26 @@ Value Evaluator::eval(const ast::Expr& e, Scope& s) {
             Value a = eval(*e.items[0], s);
             Value b = eval(*e.items[1], s);
             OpBudget budget{opt_.limits.list_elements};
+            if (lenient_ && (a.is_undef() || b.is_undef()) && !a.is_list() && !b.is_list() && e.text != "==" &&
+                e.text != "!=")
+                return lenient_operator(e, a, &b, budget);
             Value v;
             try {
                 v = binary_op(e.text, a, b, e.loc, &budget);
             } catch (const SoftError&) {
                 if (!lenient_) throw;
-                return lenient_operator(e, a, &b);
+                return lenient_operator(e, a, &b, budget);
             }
-            // Lists made (budget.used), or compared element by element.
-            const bool compared = a.is_list() && b.is_list() && (e.text == "==" || e.text == "!=");
-            count_work(budget.used + (compared ? std::min(a.as_list().size(), b.as_list().size()) : 0), e.loc);
+            // Lists made, or only read (compared, multiplied in a dot product).
+            count_work(budget.used + budget.walked, e.loc);
             return v;
         }
         case K::Ternary: return eval(*e.items[eval(*e.items[0], s).truthy() ? 1 : 2], s);
         case K::Index: {
             Value obj = eval(*e.items[0], s);
             Value idx = eval(*e.items[1], s);
+            // A string's i-th character is found walking it (UTF-8).
+            if (obj.is_string()) count_work(obj.as_string().size() / 16, e.loc);
             if (lenient_) return openscad_index(obj, idx);
             return index_value(obj, idx, e.loc);
         }

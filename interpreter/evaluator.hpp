@@ -36,6 +36,7 @@
 #include "interpreter/graph_builder.hpp"
 #include "interpreter/loader.hpp"
 #include "interpreter/modules/state.hpp"
+#include "interpreter/operators.hpp"
 #include "interpreter/scope.hpp"
 #include "interpreter/value.hpp"
 
@@ -149,7 +150,7 @@ private:
     std::string did_you_mean(std::string_view name, Scope& s, NameKind kind);
     void check_builtin_name(const Builtin& fn, const ast::Binding& a, std::size_t i, std::size_t count);
     // The OpenSCAD dialect's answer to an operator that threw a SoftError.
-    Value lenient_operator(const ast::Expr& e, const Value& a, const Value* b);
+    Value lenient_operator(const ast::Expr& e, const Value& a, const Value* b, OpBudget& budget);
     void do_assert(const std::vector<ast::Binding>& args, Scope& s, const SourceLoc& loc);
     // Counts (and charges) the iterations of a `for` over v; a string becomes
     // the list of its characters (as in OpenSCAD), so v may be replaced.
@@ -256,6 +257,17 @@ private:
 
     ModuleState modules_;              // what built-in modules remember
     std::vector<Diagnostic> warnings_;
+    // warn()'s fast way to a repeat: the warnings kept under a hash of their
+    // place and message, and the calls each was last reached through (a
+    // loop warns again through the same calls, so no notes are built).
+    std::unordered_map<std::size_t, std::vector<std::size_t>> warning_index_;
+    std::vector<std::vector<CallSite>> warning_calls_;
+    // Past kMaxWarnings different warnings, the others are counted into one
+    // last warning at the first of them (close_warnings writes its text).
+    static constexpr std::size_t kMaxWarnings = 1000;
+    std::uint64_t warnings_dropped_ = 0;
+    std::string first_dropped_;
+    void close_warnings();
     std::int64_t root_override_ = -1;  // the first `!` subtree
     std::size_t root_ghosts_[2] = {0, 0};  // the ghosts recorded inside it: [from, to)
     std::uint64_t exact_curves_ = 0;   // exact_curve(): how many, and the first

@@ -99,6 +99,7 @@ graph::SceneGraph Evaluator::run(ast::Program program) {
                                      (opt_.facets == FacetMode::Exact      ? " (--facets exact)"
                                       : opt_.facets == FacetMode::OpenScad ? " (--facets openscad does not cut these)"
                                                                            : ""));
+    close_warnings();
     if (!errors_.empty() || (opt_.werror && !warnings_.empty())) throw_errors();
     if (root_override_ >= 0) {
         out_.pending.assign(1, static_cast<std::uint32_t>(root_override_));
@@ -121,6 +122,7 @@ void Evaluator::record_error(const SourceError& e) {
 }
 
 void Evaluator::throw_errors() {
+    close_warnings();
     std::vector<Diagnostic> all = warnings_;
     if (opt_.werror)
         for (Diagnostic& w : all) {
@@ -196,21 +198,60 @@ FacetVars Evaluator::facet_vars() const {
     return f;
 }
 
+// A warning met again in a loop costs a hash and a comparison of the call
+// stack: 10^6 of them took ~15 s when each built its notes and compared
+// them with every warning kept (quadratic in different warnings).
 void Evaluator::warn(const SourceLoc& loc, std::string message) {
+    const std::size_t key = std::hash<const void*>{}(loc.file.get()) ^ (std::size_t(loc.line) << 20) ^
+                            std::size_t(loc.col) ^ (std::hash<std::string>{}(message) << 1);
+    std::vector<std::size_t>& same_key = warning_index_[key];
+    auto raw_calls_equal = [&](const std::vector<CallSite>& c) {
+        if (c.size() != calls_.size()) return false;
+        for (std::size_t i = 0; i < c.size(); ++i)
+            if (c[i].at != calls_[i].at || c[i].name != calls_[i].name) return false;
+        return true;
+    };
+    for (std::size_t i : same_key)
+        if (same_place(warnings_[i], loc, message) && raw_calls_equal(warning_calls_[i])) {
+            ++warnings_[i].repeats;
+            return;
+        }
+    // The same warning reached through other calls is another diagnostic,
+    // unless its notes are the same (a recursion one level deeper).
     std::vector<Diagnostic> notes = call_notes();
-    // The same warning reached through other calls is another diagnostic.
     auto same_calls = [&](const Diagnostic& w) {
         if (w.notes.size() != notes.size()) return false;
         for (std::size_t i = 0; i < notes.size(); ++i)
             if (!same_place(w.notes[i], notes[i].loc, notes[i].message)) return false;
         return true;
     };
-    for (Diagnostic& w : warnings_)
-        if (same_place(w, loc, message) && same_calls(w)) {
-            ++w.repeats;
+    for (std::size_t i : same_key)
+        if (same_place(warnings_[i], loc, message) && same_calls(warnings_[i])) {
+            ++warnings_[i].repeats;
+            warning_calls_[i] = calls_;
             return;
         }
+    if (warnings_.size() >= kMaxWarnings) {
+        if (warnings_dropped_++ == 0) {
+            first_dropped_ = message;
+            warnings_.push_back(Diagnostic{Severity::Warning, loc, {}, 1, std::move(notes)});
+            warning_calls_.push_back({});
+        }
+        return;
+    }
+    same_key.push_back(warnings_.size());
     warnings_.push_back(Diagnostic{Severity::Warning, loc, std::move(message), 1, std::move(notes)});
+    warning_calls_.push_back(calls_);
+}
+
+// The last warning, when some were not kept, says how many and which first.
+void Evaluator::close_warnings() {
+    if (warnings_dropped_ == 0) return;
+    warnings_[kMaxWarnings].message =
+        warnings_dropped_ == 1 ? first_dropped_
+                               : first_dropped_ + " (and " + std::to_string(warnings_dropped_ - 1) +
+                                     " more warnings not shown: kerf shows " + std::to_string(kMaxWarnings + 1) +
+                                     " different ones at most)";
 }
 
 }  // namespace eval

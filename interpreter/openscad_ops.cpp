@@ -1,5 +1,6 @@
 #include "interpreter/openscad_ops.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -31,23 +32,33 @@ std::string undefined_operation(std::string_view op, const Value& a, const Value
 
 // a < b as OpenSCAD's Value::operator<: same-type scalars compare, vectors
 // lexicographically (a shorter prefix is less); anything else is undef.
-Value less(const Value& a, const Value& b, std::string& warning) {
+// (The caller bounds the trees with checked_tree_size: each pair is
+// compared twice at most, so the walk is linear in the smaller one.)
+Value less(const Value& a, const Value& b, std::string& warning, OpBudget& budget) {
     if (a.is_list() && b.is_list()) {
         const ValueList& x = a.as_list();
         const ValueList& y = b.as_list();
         std::size_t i = 0;
         for (; i < x.size() && i < y.size(); ++i) {
-            Value t = less(x[i], y[i], warning);
+            budget.walk(1);
+            if (x[i].is_number() && y[i].is_number()) {  // the common case, without a Value made
+                const double p = x[i].as_number(), q = y[i].as_number();
+                if (p < q) return Value(true);
+                if (q < p) return Value(false);
+                continue;  // equal, or NaN: neither is less, as below
+            }
+            Value t = less(x[i], y[i], warning, budget);
             if (t.is_undef()) return t;
             if (t.as_bool()) return Value(true);
-            Value u = less(y[i], x[i], warning);
+            Value u = less(y[i], x[i], warning, budget);
             if (u.is_bool() && u.as_bool()) return Value(false);
         }
         return Value(i == x.size() && i < y.size());
     }
+    if (a.is_number() && b.is_number()) return Value(a.as_number() < b.as_number());  // NaN: false, as binary_op
     if (a.type() == b.type() && !a.is_undef() && !a.is_range()) {
         try {
-            return binary_op("<", a, b, kNowhere);
+            return binary_op("<", a, b, kNowhere, &budget);
         } catch (const SoftError&) {
         }
     }
@@ -67,16 +78,18 @@ Value compare_ranges(std::string_view op, const Range& a, const Range& b) {
     return Value(op == "<" ? c < 0 : op == ">" ? c > 0 : op == "<=" ? c <= 0 : c >= 0);
 }
 
-Value compare(std::string_view op, const Value& a, const Value& b, std::string& warning) {
+Value compare(std::string_view op, const Value& a, const Value& b, const SourceLoc& loc, std::string& warning,
+              OpBudget& budget) {
     if (a.is_range() && b.is_range()) return compare_ranges(op, a.as_range(), b.as_range());
+    budget.walk(std::min(checked_tree_size(budget, a, loc), checked_tree_size(budget, b, loc)));
     Value r;
-    if (op == "<") r = less(a, b, warning);
-    else if (op == ">") r = less(b, a, warning);
+    if (op == "<") r = less(a, b, warning, budget);
+    else if (op == ">") r = less(b, a, warning, budget);
     else if (op == "<=") {
-        r = less(b, a, warning);
+        r = less(b, a, warning, budget);
         if (!r.is_undef()) r = Value(!r.as_bool());
     } else {
-        r = less(a, b, warning);
+        r = less(a, b, warning, budget);
         if (!r.is_undef()) r = Value(!r.as_bool());
     }
     if (r.is_undef()) warning = undefined_operation(op, a, b);
@@ -85,14 +98,21 @@ Value compare(std::string_view op, const Value& a, const Value& b, std::string& 
 
 // + and - of two vectors: element-wise up to the shorter length; an element
 // pair that does not add is undef (OpenSCAD prints nothing for it).
-Value add_lists(std::string_view op, const Value& a, const Value& b) {
+Value add_lists(std::string_view op, const Value& a, const Value& b, const SourceLoc& loc, OpBudget& budget) {
     const ValueList& x = a.as_list();
     const ValueList& y = b.as_list();
+    budget.make(std::min(x.size(), y.size()), loc);
+    const bool plus = op == "+";
     ValueList out;
     out.reserve(std::min(x.size(), y.size()));
     for (std::size_t i = 0; i < x.size() && i < y.size(); ++i) {
         if (x[i].is_list() && y[i].is_list()) {
-            out.push_back(add_lists(op, x[i], y[i]));
+            out.push_back(add_lists(op, x[i], y[i], loc, budget));
+            continue;
+        }
+        if (x[i].is_number() && y[i].is_number()) {  // the common case, without a call
+            const double p = x[i].as_number(), q = y[i].as_number();
+            out.push_back(Value(plus ? p + q : p - q));
             continue;
         }
         try {
@@ -106,37 +126,42 @@ Value add_lists(std::string_view op, const Value& a, const Value& b) {
 
 }  // namespace
 
-Value openscad_binary(std::string_view op, const Value& a, const Value& b, std::string& warning) {
+Value openscad_binary(std::string_view op, const Value& a, const Value& b, const SourceLoc& loc, std::string& warning,
+                      OpBudget& budget) {
     warning.clear();
-    if (op == "<" || op == ">" || op == "<=" || op == ">=") return compare(op, a, b, warning);
-    if ((op == "+" || op == "-") && a.is_list() && b.is_list()) return add_lists(op, a, b);
+    if (op == "<" || op == ">" || op == "<=" || op == ">=") return compare(op, a, b, loc, warning, budget);
+    if ((op == "+" || op == "-") && a.is_list() && b.is_list()) return add_lists(op, a, b, loc, budget);
+    if (a.is_list()) budget.walk(a.as_list().size());  // is_vector below
+    if (b.is_list()) budget.walk(b.as_list().size());
     if (op == "*" && a.is_vector() && b.is_vector() && a.as_list().size() != b.as_list().size()) {
         warning = "vector*vector requires matching lengths (" + std::to_string(a.as_list().size()) +
                   " != " + std::to_string(b.as_list().size()) + ")";
         return Value();
     }
     if (op == "/" && a.is_number() && b.is_list()) {  // 2 / [1, 4] is [2, 0.5], nested lists alike
+        budget.make(b.as_list().size(), loc);
         ValueList out;
         out.reserve(b.as_list().size());
         std::string inner;
         for (const Value& e : b.as_list())
             out.push_back(e.is_number() ? Value(a.as_number() / e.as_number())
-                                        : e.is_list() ? openscad_binary(op, a, e, inner) : Value());
+                                        : e.is_list() ? openscad_binary(op, a, e, loc, inner, budget) : Value());
         return Value::list(std::move(out));
     }
     warning = undefined_operation(op, a, b);
     return Value();
 }
 
-Value openscad_unary(std::string_view op, const Value& a, std::string& warning) {
+Value openscad_unary(std::string_view op, const Value& a, const SourceLoc& loc, std::string& warning, OpBudget& budget) {
     warning.clear();
     if (op == "+") return a;
     if (a.is_number()) return Value(-a.as_number());
     if (a.is_list()) {
+        budget.make(a.as_list().size(), loc);
         ValueList out;
         out.reserve(a.as_list().size());
         std::string inner;
-        for (const Value& e : a.as_list()) out.push_back(e.is_number() || e.is_list() ? openscad_unary(op, e, inner) : Value());
+        for (const Value& e : a.as_list()) out.push_back(e.is_number() || e.is_list() ? openscad_unary(op, e, loc, inner, budget) : Value());
         return Value::list(std::move(out));
     }
     warning = std::string("undefined operation (-") + openscad_type_name(a) + ")";
@@ -166,10 +191,14 @@ Value openscad_index(const Value& object, const Value& index) {
         if (i == 2) return Value(r.end);
         return Value();
     }
-    if (!object.is_list() && !object.is_string()) return Value();
-    std::size_t length = object.is_list() ? object.as_list().size() : utf8_length(object.as_string());
-    if (i >= static_cast<double>(length)) return Value();
-    return index_value(object, Value(i), kNowhere);
+    if (object.is_string()) {
+        const std::string& s = object.as_string();
+        if (i >= static_cast<double>(s.size())) return Value();
+        const std::optional<std::string_view> piece = character_at(s, static_cast<std::size_t>(i));
+        return piece ? Value::string(std::string(*piece)) : Value();
+    }
+    if (!object.is_list() || i >= static_cast<double>(object.as_list().size())) return Value();
+    return object.as_list()[static_cast<std::size_t>(i)];
 }
 
 }  // namespace kerf

@@ -7,6 +7,7 @@
 #include <string>
 #include <string_view>
 
+#include "interpreter/operators.hpp"
 #include "interpreter/value.hpp"
 
 namespace kerf {
@@ -18,12 +19,15 @@ const char* openscad_type_name(const Value& v);
 // `a op b` as OpenSCAD computes it: lists compare lexicographically, + and -
 // of lists of unequal length stop at the shorter one, anything else that
 // does not apply is undef. `warning` receives what OpenSCAD prints (empty:
-// nothing), e.g. "undefined operation (number + string)".
-Value openscad_binary(std::string_view op, const Value& a, const Value& b, std::string& warning);
+// nothing), e.g. "undefined operation (number + string)". The values made
+// and walked go to budget (the step limit's charge, operators.hpp), which
+// also refuses exponentially large shared lists.
+Value openscad_binary(std::string_view op, const Value& a, const Value& b, const SourceLoc& loc, std::string& warning,
+                      OpBudget& budget);
 
 // Unary minus: a list negates element-wise (non-numbers become undef), any
 // other non-number is undef and "undefined operation (-string)".
-Value openscad_unary(std::string_view op, const Value& a, std::string& warning);
+Value openscad_unary(std::string_view op, const Value& a, const SourceLoc& loc, std::string& warning, OpBudget& budget);
 
 // object[index]: the element at the truncated index, a range's begin, step
 // or end for 0, 1, 2, and undef (silently, as OpenSCAD) for anything else.

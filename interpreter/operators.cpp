@@ -1,6 +1,8 @@
 #include "interpreter/operators.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <string>
 
 #include "grammar/text_check.hpp"
@@ -20,9 +22,11 @@ namespace {
 }
 
 void spend(OpBudget* b, std::size_t n, const SourceLoc& loc) {
-    if (!b) return;
-    b->used += n;
-    if (b->used > b->limit) throw SourceError(loc, "list size limit " + std::to_string(b->limit) + " exceeded");
+    if (b) b->make(n, loc);
+}
+
+void walk(OpBudget* b, std::uint64_t n) {
+    if (b) b->walk(n);
 }
 
 // Values in a (possibly shared) list tree, counting stops past cap: lets an
@@ -37,9 +41,8 @@ std::uint64_t tree_size(const Value& v, std::uint64_t cap, std::uint64_t n = 0) 
     return n;
 }
 
-void precheck(OpBudget* b, const Value& v, const SourceLoc& loc) {
-    if (b && v.is_list() && tree_size(v, b->limit) > b->limit)
-        throw SourceError(loc, "list size limit " + std::to_string(b->limit) + " exceeded");
+std::uint64_t precheck(OpBudget* b, const Value& v, const SourceLoc& loc) {
+    return b ? checked_tree_size(*b, v, loc) : 0;
 }
 
 double num_op(char op, double x, double y) {
@@ -86,8 +89,20 @@ bool all_lists(const ValueList& l) {
     return true;
 }
 
-double dot(const ValueList& x, const ValueList& y, const Value& a, const Value& b, const SourceLoc& loc) {
+// The products a multiplication of lists computes, charged on leaving it
+// as a quarter of an element each: a multiply-add costs about a quarter
+// of making an element (measured, docs/language.md §13), and a 4x4
+// matrix product costs 2 steps.
+struct Products {
+    OpBudget* budget;
+    std::uint64_t n = 0;
+    ~Products() { walk(budget, n / 4); }
+};
+
+double dot(const ValueList& x, const ValueList& y, const Value& a, const Value& b, const SourceLoc& loc,
+           Products& products) {
     if (x.size() != y.size()) length_error("*", x.size(), y.size(), loc);
+    products.n += x.size();
     double s = 0;
     for (std::size_t i = 0; i < x.size(); ++i) {
         if (!x[i].is_number() || !y[i].is_number()) type_error("*", a, b, loc);
@@ -100,14 +115,24 @@ double dot(const ValueList& x, const ValueList& y, const Value& a, const Value& 
 Value multiply_lists(const Value& a, const Value& b, const SourceLoc& loc, OpBudget* budget) {
     const ValueList& x = a.as_list();
     const ValueList& y = b.as_list();
+    Products products{budget};
+    // Two vectors of one length, the common case, in one walk that checks
+    // the types as it goes (three walks otherwise).
+    if (x.size() == y.size()) {
+        double s = 0;
+        std::size_t i = 0;
+        for (; i < x.size() && x[i].is_number() && y[i].is_number(); ++i) s += x[i].as_number() * y[i].as_number();
+        products.n += i;
+        if (i == x.size()) return Value(s);
+    }
     bool a_vec = a.is_vector(), b_vec = b.is_vector();
     bool a_mat = !x.empty() && all_lists(x), b_mat = !y.empty() && all_lists(y);
-    if (a_vec && b_vec) return Value(dot(x, y, a, b, loc));
+    if (a_vec && b_vec) return Value(dot(x, y, a, b, loc, products));
     if (a_mat && b_vec) {
         spend(budget, x.size(), loc);
         ValueList out;
         out.reserve(x.size());
-        for (const Value& row : x) out.push_back(Value(dot(row.as_list(), y, a, b, loc)));
+        for (const Value& row : x) out.push_back(Value(dot(row.as_list(), y, a, b, loc, products)));
         return Value::list(std::move(out));
     }
     if (b_mat) {
@@ -120,6 +145,7 @@ Value multiply_lists(const Value& a, const Value& b, const SourceLoc& loc, OpBud
         auto times_vector = [&](const ValueList& v) {
             if (v.size() != y.size()) length_error("*", v.size(), y.size(), loc);
             spend(budget, cols, loc);
+            products.n += static_cast<std::uint64_t>(cols) * v.size();
             ValueList out;
             out.reserve(cols);
             for (std::size_t j = 0; j < cols; ++j) {
@@ -143,13 +169,15 @@ Value multiply_lists(const Value& a, const Value& b, const SourceLoc& loc, OpBud
     type_error("*", a, b, loc);
 }
 
-int compare(std::string_view op, const Value& a, const Value& b, const SourceLoc& loc, bool& unordered) {
+int compare(std::string_view op, const Value& a, const Value& b, const SourceLoc& loc, bool& unordered,
+            OpBudget* budget) {
     unordered = false;
     if (a.is_number() && b.is_number()) {
         double x = a.as_number(), y = b.as_number();
         if (std::isnan(x) || std::isnan(y)) unordered = true;
         return x < y ? -1 : (x > y ? 1 : 0);
     }
+    if (a.is_string() && b.is_string()) walk(budget, std::min(a.as_string().size(), b.as_string().size()) / 16);
     if (a.is_string() && b.is_string()) return a.as_string().compare(b.as_string()) < 0 ? -1 : (a.as_string() == b.as_string() ? 0 : 1);
     if (a.is_bool() && b.is_bool()) return int(a.as_bool()) - int(b.as_bool());
     type_error(op, a, b, loc);
@@ -170,16 +198,30 @@ Value unary_op(std::string_view op, const Value& a, const SourceLoc& loc, OpBudg
     throw SoftError(loc, "cannot apply unary '" + std::string(op) + "' to " + a.type_name());
 }
 
+void OpBudget::make(std::uint64_t n, const SourceLoc& loc) {
+    used += n;
+    if (used > limit) throw SourceError(loc, "list size limit " + std::to_string(limit) + " exceeded");
+}
+
+std::uint64_t checked_tree_size(OpBudget& budget, const Value& v, const SourceLoc& loc) {
+    if (!v.is_list()) return 0;
+    const std::uint64_t n = tree_size(v, budget.limit);
+    if (n > budget.limit) throw SourceError(loc, "list size limit " + std::to_string(budget.limit) + " exceeded");
+    return n;
+}
+
 Value binary_op(std::string_view op, const Value& a, const Value& b, const SourceLoc& loc, OpBudget* budget) {
     if (op == "==" || op == "!=") {
         // Shared nested lists could make the comparison exponentially long.
-        precheck(budget, a, loc);
-        precheck(budget, b, loc);
+        // It walks the elements of the smaller tree at most, the bytes of
+        // two strings alike.
+        walk(budget, std::min(precheck(budget, a, loc), precheck(budget, b, loc)));
+        if (a.is_string() && b.is_string()) walk(budget, std::min(a.as_string().size(), b.as_string().size()) / 16);
         return Value((a == b) == (op == "=="));
     }
     if (op == "<" || op == "<=" || op == ">" || op == ">=") {
         bool unordered;
-        int c = compare(op, a, b, loc, unordered);
+        int c = compare(op, a, b, loc, unordered, budget);
         if (unordered) return Value(false);
         if (op == "<") return Value(c < 0);
         if (op == "<=") return Value(c <= 0);
@@ -212,10 +254,24 @@ std::size_t char_bytes(unsigned char lead) {
     return lead < 0xC0 ? 1 : lead < 0xE0 ? 2 : lead < 0xF0 ? 3 : lead < 0xF8 ? 4 : lead < 0xFC ? 5 : lead < 0xFE ? 6 : 1;
 }
 
+// Bytes below 0x80 from `from` on, 8 at a time, stopping before `limit`
+// bytes: a run of ASCII characters is that many characters, so len() and
+// s[i] skip it ~8 times faster than the walk below.
+std::size_t ascii_run(std::string_view s, std::size_t from, std::size_t limit) {
+    std::size_t i = from;
+    while (i + 8 <= s.size() && i + 8 - from <= limit) {
+        std::uint64_t w;
+        std::memcpy(&w, s.data() + i, 8);
+        if (w & 0x8080808080808080ull) break;
+        i += 8;
+    }
+    return i - from;
+}
+
 // Calls f(i, n) for each character at s[i, i + n); stops when f is false.
 template <class F>
-void walk_characters(std::string_view s, F f) {
-    for (std::size_t i = 0; i < s.size();) {
+void walk_characters(std::string_view s, F f, std::size_t start = 0) {
+    for (std::size_t i = start; i < s.size();) {
         const std::size_t n = char_bytes(static_cast<unsigned char>(s[i]));
         if (n > s.size() - i || !f(i, n)) return;
         i += n;
@@ -233,9 +289,23 @@ std::vector<std::string_view> characters(std::string_view s) {
 }
 
 std::size_t utf8_length(std::string_view s) {
-    std::size_t count = 0;
-    walk_characters(s, [&](std::size_t, std::size_t) { return ++count; });
+    std::size_t count = ascii_run(s, 0, s.size());
+    walk_characters(s, [&](std::size_t, std::size_t) { return ++count; }, count);
     return count;
+}
+
+std::optional<std::string_view> character_at(std::string_view s, std::size_t i) {
+    std::size_t count = ascii_run(s, 0, i);
+    std::optional<std::string_view> piece;
+    walk_characters(
+        s,
+        [&](std::size_t at, std::size_t n) {
+            if (count++ < i) return true;
+            piece = s.substr(at, n);
+            return false;
+        },
+        count);
+    return piece;
 }
 
 bool valid_utf8(std::string_view s) {
@@ -264,16 +334,12 @@ Value index_value(const Value& object, const Value& index, const SourceLoc& loc)
     }
     if (object.is_string()) {
         const std::string& s = object.as_string();
-        std::size_t n = utf8_length(s);
-        if (d < 0 || d >= static_cast<double>(n)) throw out_of_range(n);
-        std::size_t want = static_cast<std::size_t>(d), count = 0;
-        std::string_view piece;
-        walk_characters(s, [&](std::size_t i, std::size_t m) {
-            if (count++ < want) return true;
-            piece = std::string_view(s).substr(i, m);
-            return false;
-        });
-        return Value::string(std::string(piece));
+        // One walk (the length only for the error): s[i] in a loop over a
+        // long string walks it once per index.
+        const std::optional<std::string_view> piece =
+            d < 0 || d >= static_cast<double>(s.size()) ? std::nullopt : character_at(s, static_cast<std::size_t>(d));
+        if (!piece) throw out_of_range(utf8_length(s));
+        return Value::string(std::string(*piece));
     }
     throw SourceError(loc, std::string("cannot index a ") + object.type_name());
 }

@@ -5,6 +5,7 @@
 // OpenSCAD dialect answers them with openscad_ops.hpp instead.
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -16,10 +17,23 @@ namespace kerf {
 // Bounds the number of values one operation may create: nested lists share
 // structure, so `[l, l] + [l, l]` can stand for exponentially many numbers;
 // past `limit` the operation is the error "list size limit N exceeded".
+// It also tallies the work the evaluator charges to the step limit: the
+// values made (used) and those only read (walked: a dot product's terms, a
+// comparison's elements, 1 per 16 bytes of a string compared).
 struct OpBudget {
     std::uint64_t limit;
     std::uint64_t used = 0;
+    std::uint64_t walked = 0;
+
+    // n more values made: past limit, "list size limit N exceeded".
+    void make(std::uint64_t n, const SourceLoc& loc);
+    void walk(std::uint64_t n) { walked += n; }
 };
+
+// The values in v's list tree (0 for anything else), each shared sublist
+// counted where it occurs: past budget.limit, "list size limit N exceeded",
+// before anything walks an exponentially large operand.
+std::uint64_t checked_tree_size(OpBudget& budget, const Value& v, const SourceLoc& loc);
 
 // op is one of "-", "+" (unary).
 Value unary_op(std::string_view op, const Value& a, const SourceLoc& loc, OpBudget* budget = nullptr);
@@ -45,6 +59,9 @@ std::vector<std::string_view> characters(std::string_view s);
 
 // Their number, as OpenSCAD's len().
 std::size_t utf8_length(std::string_view s);
+
+// The i-th of them, or nullopt past the end.
+std::optional<std::string_view> character_at(std::string_view s, std::size_t i);
 
 // True when s is well-formed UTF-8 (what OpenSCAD's ord() asks).
 bool valid_utf8(std::string_view s);

@@ -18,6 +18,12 @@
 
 namespace kerf {
 
+struct WorkTally {
+    std::uint64_t walked = 0;
+    std::uint64_t cap = UINT64_MAX;
+};
+struct WorkCapReached {};  // the evaluator answers it with its step limit error
+
 struct BuiltinContext {
     const SourceLoc& loc;                 // the call expression
     std::uint64_t max_list_elements;      // EvalLimits::list_elements: a result
@@ -32,6 +38,14 @@ struct BuiltinContext {
     std::vector<std::string>* warnings = nullptr;
     void warn(std::string message) const {
         if (warnings) warnings->push_back(std::move(message));
+    }
+    // Values a call reads beyond its arguments' top level (search's pairs
+    // compared), charged to the step limit as the arguments are; past cap
+    // (what the steps left allow) walk throws WorkCapReached, so a call
+    // quadratic in itself stops at the limit too.
+    WorkTally* work = nullptr;
+    void walk(std::uint64_t n) const {
+        if (work && (work->walked += n) > work->cap) throw WorkCapReached{};
     }
 };
 

@@ -180,7 +180,10 @@ Value search_fn(std::span<const Value> args, const BuiltinContext& ctx) {
     const unsigned col = args.size() > 3 ? whole(args[3]) : 0u;
     static const ValueList no_entries;
     const ValueList& entries = table.is_list() ? table.as_list() : no_entries;
+    // Each pair compared is charged (ctx.walk): a list of terms against a
+    // long table is quadratic within one call.
     auto matches_value = [&](const Value& x, std::size_t j) {
+        ctx.walk(1);
         bool ok;
         const Value& c = column(entries[j], col, ok);
         return (col == 0 && x == entries[j]) || (ok && x == c);
@@ -204,7 +207,12 @@ Value search_fn(std::span<const Value> args, const BuiltinContext& ctx) {
     if (table.is_string()) {
         const std::vector<std::string_view> hay = characters(table.as_string());
         for (std::string_view c : characters(what.as_string()))
-            m.term([&](std::size_t j) { return hay[j] == c; }, hay.size(), false);
+            m.term(
+                [&](std::size_t j) {
+                    ctx.walk(1);
+                    return hay[j] == c;
+                },
+                hay.size(), false);
         return Value::list(std::move(m.flat));
     }
     for (std::size_t j = 0; j < entries.size(); ++j) {
@@ -215,6 +223,7 @@ Value search_fn(std::span<const Value> args, const BuiltinContext& ctx) {
     for (std::string_view c : characters(what.as_string()))
         m.term(
             [&](std::size_t j) {
+                ctx.walk(1);
                 bool ok;
                 const std::string entry = to_str(column(entries[j], col, ok));
                 const std::vector<std::string_view> first = characters(entry);

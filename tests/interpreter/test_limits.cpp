@@ -134,3 +134,27 @@ TEST_CASE("shared nested lists cannot blow up memory or output", "[limits]") {
     CHECK(kerf::test::value_of("f(2) + f(2)", f) == "[[2, 2], [2, 2]]");
     CHECK(seconds_since(t0) < 2);
 }
+
+TEST_CASE("past 1000 different warnings the others are counted into one", "[limits]") {
+    // Each pass warns with its own message (OpenSCAD prints every one):
+    // kept whole they cost memory and a scan per warning, quadratic in them.
+    kerf::EvalOptions opt;
+    opt.echo = [](const std::string&) {};
+    auto r = kerf::evaluate_source(kerf::test::source("x = [for (i = [0:1499]) lookup(str(i), [[0, 1]])];", "t.scad"), opt);
+    REQUIRE(r.warnings.size() == 1001);
+    CHECK(r.warnings[999].message == "lookup(\"999\", ...) first argument is not a number");
+    CHECK(format_diagnostic_head(r.warnings[1000]) ==
+          "t.scad:1:25: warning: lookup(\"1000\", ...) first argument is not a number (and 499 more warnings not "
+          "shown: kerf shows 1001 different ones at most)");
+    // The same warning in a loop stays one, counted, whatever the calls
+    // between (two call places alternating: two warnings).
+    auto same = kerf::evaluate_source(
+        kerf::test::source("function f(x) = x + 1;\nfunction g(x) = f(x);\n"
+                           "y = [for (i = [0:99999]) each [f(undef), g(undef)]];",
+                           "t.scad"),
+        opt);
+    REQUIRE(same.warnings.size() == 2);
+    CHECK(same.warnings[0].repeats == 100000);
+    CHECK(same.warnings[1].repeats == 100000);
+    CHECK(same.warnings[1].notes.size() == 2);
+}
