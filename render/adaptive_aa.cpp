@@ -27,9 +27,17 @@ public:
           steps_(std::max(1, int(std::ceil(std::log2(double(options.aa_samples)))))),
           precision_(std::ldexp(1.0, -steps_)), generation_(CornerProbes::next_generation()),
           leaf_node_(sampler.scene().leaves.size(), csg::kNone) {
+        // A leaf that several nodes share has no one place in the tree:
+        // kNone, and cuts_away() says nothing about it (as the tracer's
+        // structural rules refuse such leaves, shadow_rays.cpp).
         const csg::Scene& scene = sampler.scene();
+        std::vector<std::uint8_t> uses(scene.leaves.size(), 0);
         for (std::uint32_t i = 0; i < scene.nodes.size(); ++i)
-            if (scene.nodes[i].op == csg::Op::Leaf) leaf_node_[scene.nodes[i].first] = i;
+            if (scene.nodes[i].op == csg::Op::Leaf) {
+                const std::uint32_t leaf = scene.nodes[i].first;
+                if (uses[leaf] < 2) ++uses[leaf];
+                leaf_node_[leaf] = uses[leaf] == 1 ? i : csg::kNone;
+            }
     }
 
     // The pixels [x0, x1) of row y, one row of a block of a tile (tiles.hpp;
@@ -149,7 +157,7 @@ private:
     const int steps_;
     const double precision_;  // 1/2^steps_ of a side
     const std::uint64_t generation_;
-    std::vector<std::uint32_t> leaf_node_;  // per leaf, its node
+    std::vector<std::uint32_t> leaf_node_;  // per leaf, its node (kNone: shared by several)
 };
 
 // The corner (cx, cy) of the current tile, traced and shaded once (when a
@@ -438,6 +446,7 @@ bool Refinement::faces_show(int x, int y, glm::dvec2 at, const std::array<const 
 // the one the top may go on, outside the other).
 bool Refinement::cuts_away(std::uint32_t g, std::uint32_t f) const {
     const csg::Scene& scene = sampler_.scene();
+    if (leaf_node_[g] == csg::kNone || leaf_node_[f] == csg::kNone) return false;  // shared: no one place
     std::uint32_t n = leaf_node_[g], up = scene.nodes[n].parent;
     while (up != csg::kNone && scene.nodes[up].op == csg::Op::Union) n = up, up = scene.nodes[up].parent;
     if (up == csg::kNone || scene.nodes[up].op != csg::Op::Difference) return false;

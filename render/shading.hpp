@@ -70,7 +70,6 @@ public:
     // of after that ray's shading.
     glm::dvec3 radiance(const TraceRay& ray, bool solid, const TraceHit& hit, int depth, ThreadState& ts,
                         std::uint32_t* surface = nullptr) const;
-    const CsgTracer& tracer() const { return tracer_; }
     // Only the `surface` radiance() would give, without shading.
     std::uint32_t surface(const TraceRay& ray, ThreadState& ts) const;
     // What a ray that hits nothing sees: the background, or the fog's colour.

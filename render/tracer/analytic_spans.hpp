@@ -39,11 +39,7 @@ template <typename Put>
 [[gnu::always_inline]] inline int analytic_spans(RayState& es, std::uint32_t leaf_id, double a, double b, Put put,
                                                  const AheadSpans* ahead = nullptr) {
     const csg::Leaf& leaf = es.impl->scene.leaves[leaf_id];
-    // A leaf only moved (most are: translate, or none) skips the matrix:
-    // 1·x + 0·y + 0·z is x, so the numbers are the same.
-    const bool shift = es.impl->leaf_shift_only[leaf_id];
-    const glm::dvec3 lo = shift ? es.o + leaf.object_from_world.offset : leaf.object_from_world.point(es.o);
-    const glm::dvec3 ld = shift ? es.d : leaf.object_from_world.vector(es.d);
+    const glm::dvec3 lo = es.impl->leaf_point(leaf_id, es.o), ld = es.impl->leaf_vector(leaf_id, es.d);
     csg::Span<double> spans[csg::kMaxSpans];
     // Span ends outside the window (with room for the degenerate rule) may
     // be reported inexactly: nothing reads them (see spans' contract).

@@ -273,9 +273,10 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
     // ball chords decide most rays first (a sphere minus a few balls), nor
     // for other kinds (a box minuend: the checkered cube's camera rays
     // would solve it ahead for 8 % more instructions, 512²).
-    if (!use_float && impl_->top.items.size() == 1 && impl_->top.always.empty() && impl_->leaf_minus[units[0]]) {
+    if (!use_float && impl_->top.items.size() == 1 && impl_->top.always.empty() &&
+        impl_->leaf_minus[impl_->top.items[0]]) {
         const bool chords = !impl_->top.sphere_minus.empty() && impl_->top.sphere_minus[0].r_in >= 0;
-        const std::uint32_t leaf = scene.nodes[scene.children[scene.nodes[units[0]].first]].first;
+        const std::uint32_t leaf = scene.nodes[scene.children[scene.nodes[impl_->top.items[0]].first]].first;
         if (!chords && scene.leaves[leaf].kind == csg::PrimKind::Sphere) impl_->ahead_leaf = leaf;
     }
     if (impl_->top.always.empty()) {

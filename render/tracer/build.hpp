@@ -117,6 +117,19 @@ struct CsgTracer::Impl {
     std::vector<std::unique_ptr<Accel>> node_accels;
     std::vector<double> leaf_stretch;         // per leaf: Frobenius norm of object_from_world.linear
     std::vector<std::uint8_t> leaf_shift_only;  // per leaf: 1 if object_from_world.linear is the identity
+    // A world point or direction in leaf `id`'s object space. A leaf only
+    // moved (most are: translate, or none) skips the matrix: 1·x + 0·y +
+    // 0·z is x, so the numbers are the same. One place for every path
+    // whose numbers must agree bit for bit (a leaf's spans and
+    // solve_ahead's, which the query takes for its own; the clearance
+    // tests; the normals).
+    glm::dvec3 leaf_point(std::uint32_t id, const glm::dvec3& x) const {
+        const csg::Affine& m = scene.leaves[id].object_from_world;
+        return leaf_shift_only[id] ? x + m.offset : m.point(x);
+    }
+    glm::dvec3 leaf_vector(std::uint32_t id, const glm::dvec3& v) const {
+        return leaf_shift_only[id] ? v : scene.leaves[id].object_from_world.vector(v);
+    }
     // Per node: 1 for a union, intersection or difference of exactly two
     // analytic leaves (no mesh, prism or lathe), evaluated in one step
     // (node_spans.cpp, leaf_pair_spans).

@@ -103,9 +103,7 @@ bool inside_by(const CsgTracer::Impl& impl, std::uint32_t node, const glm::dvec3
     // The world ball of radius margin maps into the object ball of radius
     // margin·|object_from_world| (clear_of_within_box).
     const csg::Leaf& leaf = impl.scene.leaves[n.first];
-    const glm::dvec3 q =
-        impl.leaf_shift_only[n.first] ? x + leaf.object_from_world.offset : leaf.object_from_world.point(x);
-    return object_inside(leaf, q, margin * impl.leaf_stretch[n.first]);
+    return object_inside(leaf, impl.leaf_point(n.first, x), margin * impl.leaf_stretch[n.first]);
 }
 
 bool RayState::clear_of_within_box(std::uint32_t node, const glm::dvec3& x, double margin) const {
@@ -115,11 +113,8 @@ bool RayState::clear_of_within_box(std::uint32_t node, const glm::dvec3& x, doub
         case Op::Leaf: {
             // World distance >= object distance / |object_from_world| (the
             // Frobenius norm bounds the spectral one), precomputed per leaf.
-            // A leaf only moved skips the matrix (the same numbers).
             const csg::Leaf& leaf = impl->scene.leaves[n.first];
-            const glm::dvec3 q = impl->leaf_shift_only[n.first] ? x + leaf.object_from_world.offset
-                                                                : leaf.object_from_world.point(x);
-            return object_clear(leaf, q, margin * impl->leaf_stretch[n.first]);
+            return object_clear(leaf, impl->leaf_point(n.first, x), margin * impl->leaf_stretch[n.first]);
         }
         case Op::Union:
             // A big union is left to its BVH: checking every child would cost

@@ -6,6 +6,7 @@
 // what they share on the hot path is here, inline: no virtual calls, no heap
 // allocation, no locks per ray.
 #pragma once
+#include <cassert>
 #include <algorithm>
 #include <cstdint>
 #include <limits>
@@ -348,10 +349,14 @@ inline RTCRayHit embree_ray(float ox, float oy, float oz, float dx, float dy, fl
 }
 
 // A t of the double ray as the float Embree ray's t, rounded up, with slack.
-inline float embree_t(const RayState& st, double t) { return round_up(t - st.t_shift) + float(st.t_pad); }
+inline float embree_t(const RayState& st, double t) {
+    assert(st.float_ray);  // made with the ray, or by float_ray_now before the first Embree query
+    return round_up(t - st.t_shift) + float(st.t_pad);
+}
 
 // The state's ray on the t-window [a, b], widened by t_pad for float round-off.
 inline RTCRayHit make_rayhit(const RayState& st, double a, double b) {
+    assert(st.float_ray);
     return embree_ray(st.org[0], st.org[1], st.org[2], st.dir[0], st.dir[1], st.dir[2],
                       std::max(0.0f, round_down(a - st.t_shift) - float(st.t_pad)),
                       b == kInf ? std::numeric_limits<float>::infinity() : embree_t(st, b));

@@ -13,15 +13,14 @@ bool CsgTracer::solve_ahead(const TraceRay* rays, int n, AheadSpans* out) const 
     const std::uint32_t leaf_id = impl_->ahead_leaf;
     if (leaf_id == csg::kNone) return false;
     const csg::Leaf& leaf = impl_->scene.leaves[leaf_id];
-    const bool shift = impl_->leaf_shift_only[leaf_id];
     constexpr int kChunk = 8;
     for (int k0 = 0; k0 < n; k0 += kChunk) {
         const int m = std::min(kChunk, n - k0);
         glm::dvec3 lo[kChunk], ld[kChunk];
         for (int k = 0; k < m; ++k) {
             const TraceRay& ray = rays[k0 + k];
-            lo[k] = shift ? ray.o + leaf.object_from_world.offset : leaf.object_from_world.point(ray.o);
-            ld[k] = shift ? ray.d : leaf.object_from_world.vector(ray.d);
+            lo[k] = impl_->leaf_point(leaf_id, ray.o);
+            ld[k] = impl_->leaf_vector(leaf_id, ray.d);
         }
         csg::Span<double> spans[kChunk * csg::kMaxSpans];
         int count[kChunk];
@@ -32,8 +31,7 @@ bool CsgTracer::solve_ahead(const TraceRay* rays, int n, AheadSpans* out) const 
             a.count = count[k];
             a.o = rays[k0 + k].o;
             a.d = rays[k0 + k].d;
-            a.spans[0] = spans[k * csg::kMaxSpans];
-            a.spans[1] = spans[k * csg::kMaxSpans + 1];
+            for (int i = 0; i < count[k]; ++i) a.spans[i] = spans[k * csg::kMaxSpans + i];  // no more are read
         }
     }
     return true;

@@ -24,7 +24,7 @@ glm::dvec3 CsgTracer::normal(const TraceHit& hit, const glm::dvec3& world_point)
         const glm::dvec3 n = csg::normal_box(leaf.p, world_point, part);
         return hit.surface.flip ? -n : n;
     }
-    const glm::dvec3 q = shift ? world_point + leaf.object_from_world.offset : leaf.object_from_world.point(world_point);
+    const glm::dvec3 q = impl_->leaf_point(hit.surface.leaf, world_point);
     // A moved straight cylinder's side (a drilled hole's wall): the
     // general path's (x, y, -0·ρ) / sqrt(x² + y² + 0) with one square root
     // instead of two (ρ and the length are the same number).

@@ -359,13 +359,21 @@ TEST_CASE("solve_ahead: camera rays with their sphere solved ahead hit what they
                     if (wrong.count > 0) wrong.spans[0].t0 += 0.05 * p.k;
                     scratch.ahead = &wrong;
                     const bool a3 = tracer.intersect(ray, h3, scratch);
+                    // The same moved spans named as another leaf's: refused too.
+                    render::AheadSpans other = wrong;
+                    other.leaf += 1;
+                    scratch.ahead = &other;
+                    render::TraceHit h4;
+                    const bool a4 = tracer.intersect(ray, h4, scratch);
                     scratch.ahead = nullptr;
                     INFO((bowl ? "fishbowl" : "grooved ball") << " at scale " << p.k << ", row " << row << " ray " << i);
                     CHECK(a1 == a0);
                     CHECK(a2 == a0);
-                    if (a0 && a1 && a2) {
+                    CHECK(a4 == a0);
+                    if (a0 && a1 && a2 && a4) {
                         CHECK(h1.t == h0.t);
                         CHECK(h2.t == h0.t);
+                        CHECK(h4.t == h0.t);
                         CHECK(h1.surface.leaf == h0.surface.leaf);
                         CHECK(h1.surface.part == h0.surface.part);
                         ++hits;
