@@ -642,47 +642,69 @@ bool render_adaptive(const TilePasses& tiles, const PixelSampler& sampler, const
     // pixel of the first pass needs the test for it.
     const bool ring = area != region;
     const double rows = region[3] - region[1];
+    // A centre's colour c (seeing `surface`, `ground`: ThreadState::on_ground)
+    // kept: its look set, the pixel stored when it lies in the region.
+    const auto keep = [&](int x, int y, const glm::dvec3& c, std::uint32_t surface, bool ground) {
+        const glm::dvec3& seen = ground ? sampler.miss() : c;
+        const std::uint64_t look = centres.set_look(
+            x, y, seen == sampler.miss() ? miss_look | std::uint64_t(surface) << 32 : centres.look(seen, surface),
+            ground);
+        if (ring && (x < region[0] || x >= region[2] || y < region[1] || y >= region[3])) {
+            PixelSampler::set_covered(0);
+        } else if (ground) {
+            sampler.put(x, y, c, 1);
+        } else {
+            sampler.put_codes(x, y, c, std::uint32_t(look & 0xFFFFFF));  // the codes the look found for c: not found again
+        }
+    };
+    // A culled block's row: what keep() does for misses, as a run (no looks
+    // found, no comparisons: the bytes of store.fill are the miss look's
+    // codes, and --alpha's pixels still go one by one).
+    const auto culled = [&](int x0, int x1, int y, ThreadState& ts) {
+        ts.rays.primary += std::uint64_t(x1 - x0);
+        ts.on_ground = false;
+        centres.set_looks(x0, x1, y, miss_look);
+        PixelSampler::set_covered(0);
+        if (ring && (y < region[1] || y >= region[3])) return;
+        sampler.put_misses(std::max(x0, region[0]), std::min(x1, region[2]), y);
+    };
+    static_assert(kBlock <= PixelSampler::kMaxRow);
     bool complete = true;
     int set_to = area[1];  // the centres are set on the rows above this
     for (int y0 = region[1]; y0 < region[3]; y0 += kAaBand) {
         const int y1 = std::min(y0 + kAaBand, region[3]), next = std::min(y1 + 1, area[3]);
         const double from = (y0 - region[1]) / rows, to = (y1 - region[1]) / rows;
         centres.hold_from(std::max(area[1], y0 - 1), set_to);
-        complete &= tiles.run({area[0], set_to, area[2], next}, progress_part(progress, from, from + (to - from) / 4),
-                              [&](int x, int y, ThreadState& ts, bool traced) {
-                                  std::uint32_t surface;
-                                  ts.on_ground = false;
-                                  // --alpha's count starts at 0 here, not at what the thread's last
-                                  // candidate left (one that keeps its centre stores nothing, and
-                                  // which thread ran it varies: the coverage did, run to run).
-                                  PixelSampler::set_covered(0);
-                                  const glm::dvec3 c = sampler.sample(x + 0.5, y + 0.5, ts, traced, &surface);
-                                  const glm::dvec3& seen = ts.on_ground ? sampler.miss() : c;
-                                  const std::uint64_t look = centres.set_look(
-                                      x, y,
-                                      seen == sampler.miss() ? miss_look | std::uint64_t(surface) << 32
-                                                             : centres.look(seen, surface),
-                                      ts.on_ground);
-                                  if (ring && (x < region[0] || x >= region[2] || y < region[1] || y >= region[3])) {
+        const std::array<int, 4> band{area[0], set_to, area[2], next};
+        const auto band_progress = progress_part(progress, from, from + (to - from) / 4);
+        if (sampler.plain()) {
+            // A block's row of centres traced, then shaded (PixelSampler::centre_row).
+            complete &= tiles.run_rows(band, band_progress, [&](int x0, int x1, int y, ThreadState& ts, bool traced) {
+                if (!traced) return culled(x0, x1, y, ts);
+                glm::dvec3 colour[kBlock];
+                std::uint32_t surface[kBlock];
+                bool ground[kBlock];
+                sampler.centre_row(x0, x1, y, ts, colour, surface, ground);
+                for (int i = 0; i < x1 - x0; ++i) {
+                    PixelSampler::set_covered(0);
+                    keep(x0 + i, y, colour[i], surface[i], ground[i]);
+                }
+            });
+        } else {
+            complete &= tiles.run(band, band_progress,
+                                  [&](int x, int y, ThreadState& ts, bool traced) {
+                                      std::uint32_t surface;
+                                      ts.on_ground = false;
+                                      // --alpha's count starts at 0 here, not at what the thread's
+                                      // last candidate left (one that keeps its centre stores
+                                      // nothing, and which thread ran it varies: the coverage did,
+                                      // run to run).
                                       PixelSampler::set_covered(0);
-                                  } else if (ts.on_ground) {
-                                      sampler.put(x, y, c, 1);
-                                  } else {
-                                      // The codes the look found for c: not found again.
-                                      sampler.put_codes(x, y, c, std::uint32_t(look & 0xFFFFFF));
-                                  }
-                              },
-                              // A culled block's row: what the pixel above does for misses, as a run
-                              // (no looks found, no comparisons: the bytes of store.fill are the
-                              // miss look's codes, and --alpha's pixels still go one by one).
-                              [&](int x0, int x1, int y, ThreadState& ts) {
-                                  ts.rays.primary += std::uint64_t(x1 - x0);
-                                  ts.on_ground = false;
-                                  centres.set_looks(x0, x1, y, miss_look);
-                                  PixelSampler::set_covered(0);
-                                  if (ring && (y < region[1] || y >= region[3])) return;
-                                  sampler.put_misses(std::max(x0, region[0]), std::min(x1, region[2]), y);
-                              });
+                                      const glm::dvec3 c = sampler.sample(x + 0.5, y + 0.5, ts, traced, &surface);
+                                      keep(x, y, c, surface, ts.on_ground);
+                                  },
+                                  culled);
+        }
         set_to = next;
         // Only candidates are written again; the rest keep their centre.
         complete &= tiles.run_rows({region[0], y0, region[2], y1}, progress_part(progress, from + (to - from) / 4, to),

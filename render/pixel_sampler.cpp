@@ -49,4 +49,43 @@ glm::dvec3 PixelSampler::lens_sample(double px, double py, glm::dvec2 lens, Thre
     return trace(o, d, ts, nullptr);
 }
 
+void PixelSampler::centre_row(int x0, int x1, int y, ThreadState& ts, glm::dvec3* colour, std::uint32_t* surface,
+                              bool* ground) const {
+    const CsgTracer& tracer = shader_.tracer();
+    const int n = x1 - x0;
+    ts.rays.primary += std::uint64_t(n);
+    TraceRay rays[kMaxRow];
+    bool ok[kMaxRow], solid[kMaxRow];
+    // (Written by the trace where it hits, by the shading loop where not:
+    // left uninitialised, not zeroed for every row.)
+    union Hits {
+        TraceHit at[kMaxRow];
+        Hits() {}
+    } hits;
+    for (int i = 0; i < n; ++i) {
+        rays[i].tnear = 0;
+        rays[i].tfar = std::numeric_limits<double>::infinity();
+        ok[i] = camera_.ray_unnormalised(x0 + i + 0.5, y + 0.5, rays[i].o, rays[i].d);
+        if (!ok[i]) rays[i].o = rays[i].d = glm::dvec3(0.0);
+    }
+    AheadSpans ahead[kMaxRow];
+    const bool solved = tracer.solve_ahead(rays, n, ahead);
+    for (int i = 0; i < n; ++i) {
+        ts.scratch.ahead = solved ? &ahead[i] : nullptr;
+        solid[i] = ok[i] && tracer.intersect(rays[i], hits.at[i], ts.scratch);
+    }
+    ts.scratch.ahead = nullptr;
+    for (int i = 0; i < n; ++i) {
+        if (!solid[i]) hits.at[i] = TraceHit{};
+        ts.on_ground = false;
+        if (!ok[i]) {  // outside a fisheye's circle
+            colour[i] = shader_.miss();
+            if (surface) surface[i] = 0;
+        } else {
+            colour[i] = shader_.radiance(rays[i], solid[i], hits.at[i], 0, ts, surface ? &surface[i] : nullptr);
+        }
+        if (ground) ground[i] = ts.on_ground;
+    }
+}
+
 }  // namespace kerf::render

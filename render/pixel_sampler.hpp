@@ -48,6 +48,20 @@ public:
         if (plain_) return shader_.radiance(TraceRay{o, d, 0, std::numeric_limits<double>::infinity()}, 0, ts, surface);
         return trace(o, d, ts, surface);
     }
+    // Whether a sample is the shader's radiance alone (no ghosts, no path
+    // tracer, no coverage): centre_row() then applies.
+    bool plain() const { return plain_; }
+    static constexpr int kMaxRow = 8;  // centre_row's pixels at most (a block's row)
+    // The centres of pixels [x0, x1) of row y, traced, of a plain sampler:
+    // colour[i] (and surface[i] and ground[i], ThreadState::on_ground, when
+    // `surface` is given) as sample(x + 0.5, y + 0.5, ts, true, surface)
+    // gives them one by one, but the row's rays traced first (their first
+    // leaf solved ahead, CsgTracer::solve_ahead), then shaded, so each
+    // ray's chains of divisions and square roots overlap its neighbours'
+    // instead of stalling it (docs/performance.md, "Grooves, fourth
+    // pass"). The same calls on the same numbers: the same bits.
+    void centre_row(int x0, int x1, int y, ThreadState& ts, glm::dvec3* colour, std::uint32_t* surface = nullptr,
+                    bool* ground = nullptr) const;
     // The camera ray through (px, py), as sample() traces it; false
     // outside a fisheye's circle.
     bool ray(double px, double py, glm::dvec3& o, glm::dvec3& d) const { return camera_.ray_unnormalised(px, py, o, d); }

@@ -162,44 +162,21 @@ Image render_tiles(const csg::Scene& scene, const RenderOptions& options, Render
         }
         paths_done = done;
     } else if (samples.count() == 1 && !alpha && !ghosts) {
-        // The plain render (1 spp, no alpha, no ghosts): the pixel centre's
-        // ray straight to the tracer, the shader and the store, the same
-        // calls `sample` and `put` make without their per-pixel branches and
-        // counters, a block's row at a time: its rays' first leaf solved
-        // ahead (CsgTracer::solve_ahead), the rays traced, then shaded, so
-        // each ray's chains of divisions and square roots overlap its
-        // neighbours' instead of stalling it (docs/performance.md, "Grooves,
-        // fourth pass"). A culled block's rows are filled whole.
+        // The plain render (1 spp, no alpha, no ghosts): the pixel centres
+        // straight to the store, the same calls `sample` and `put` make
+        // without their per-pixel branches and counters, a block's row at a
+        // time (PixelSampler::centre_row: traced, then shaded). A culled
+        // block's rows are filled whole.
+        static_assert(kBlock <= PixelSampler::kMaxRow);
         const glm::dvec3 miss = shader.miss();
         complete &= tiles.run_rows(region, progress, [&](int x0, int x1, int y, ThreadState& ts, bool traced) {
-            ts.rays.primary += std::uint64_t(x1 - x0);
-            if (!traced) return store.fill(x0, x1, y, miss);
-            TraceRay rays[kBlock];
-            bool ok[kBlock], solid[kBlock];
-            // (Written by the trace where it hits, by the shading loop where
-            // not: left uninitialised, not zeroed for every row.)
-            union Hits {
-                TraceHit at[kBlock];
-                Hits() {}
-            } hits;
-            const int n = x1 - x0;
-            for (int i = 0; i < n; ++i) {
-                rays[i].tnear = 0;
-                rays[i].tfar = std::numeric_limits<double>::infinity();
-                ok[i] = camera.ray_unnormalised(x0 + i + 0.5, y + 0.5, rays[i].o, rays[i].d);
-                if (!ok[i]) rays[i].o = rays[i].d = glm::dvec3(0.0);
+            if (!traced) {
+                ts.rays.primary += std::uint64_t(x1 - x0);
+                return store.fill(x0, x1, y, miss);
             }
-            AheadSpans ahead[kBlock];
-            const bool solved = tracer.solve_ahead(rays, n, ahead);
-            for (int i = 0; i < n; ++i) {
-                ts.scratch.ahead = solved ? &ahead[i] : nullptr;
-                solid[i] = ok[i] && tracer.intersect(rays[i], hits.at[i], ts.scratch);
-            }
-            ts.scratch.ahead = nullptr;
-            for (int i = 0; i < n; ++i) {
-                if (!solid[i]) hits.at[i] = TraceHit{};
-                store.color(x0 + i, y, ok[i] ? shader.radiance(rays[i], solid[i], hits.at[i], 0, ts) : miss);
-            }
+            glm::dvec3 colour[kBlock];
+            sampler.centre_row(x0, x1, y, ts, colour);
+            for (int i = 0; i < x1 - x0; ++i) store.color(x0 + i, y, colour[i]);
         });
     } else {
         complete &= tiles.run(region, progress, [&](int x, int y, ThreadState& ts, bool traced) {

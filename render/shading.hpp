@@ -75,6 +75,7 @@ public:
     // What a ray that hits nothing sees: the background, or the fog's colour.
     const glm::dvec3& miss() const { return miss_; }
     const csg::Scene& scene() const { return scene_; }
+    const CsgTracer& tracer() const { return tracer_; }
     // The solid's world unit normal at `hit` (ThreadState::hit), point p.
     glm::dvec3 normal(const TraceHit& hit, const glm::dvec3& p) const { return tracer_.normal(hit, p); }
 
