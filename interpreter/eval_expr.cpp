@@ -411,7 +411,9 @@ void Evaluator::check_builtin_name(const Builtin& fn, const ast::Binding& a, std
     warn(a.loc, message + "; taken in order, as OpenSCAD does");
 }
 
-Value Evaluator::lenient_operator(const ast::Expr& e, const Value& a, const Value* b, OpBudget& budget) {
+Value Evaluator::lenient_operator(const ast::Expr& e, const Value& a, const Value* b, const OpBudget& tried) {
+    OpBudget budget{tried.limit};
+    budget.walk(tried.used + tried.walked);
     std::string warning;
     Value v = b ? openscad_binary(e.text, a, *b, e.loc, warning, budget)
                 : openscad_unary(e.text, a, e.loc, warning, budget);

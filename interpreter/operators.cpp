@@ -212,10 +212,11 @@ std::uint64_t checked_tree_size(OpBudget& budget, const Value& v, const SourceLo
 
 Value binary_op(std::string_view op, const Value& a, const Value& b, const SourceLoc& loc, OpBudget* budget) {
     if (op == "==" || op == "!=") {
-        // Shared nested lists could make the comparison exponentially long.
-        // It walks the elements of the smaller tree at most, the bytes of
-        // two strings alike.
-        walk(budget, std::min(precheck(budget, a, loc), precheck(budget, b, loc)));
+        // Shared nested lists could make the comparison exponentially long:
+        // both trees are sized (and charged, as walked) first; the
+        // comparison then walks the smaller at most, the bytes of two
+        // strings alike.
+        walk(budget, precheck(budget, a, loc) + precheck(budget, b, loc));
         if (a.is_string() && b.is_string()) walk(budget, std::min(a.as_string().size(), b.as_string().size()) / 16);
         return Value((a == b) == (op == "=="));
     }
