@@ -343,8 +343,7 @@ Value Evaluator::call_builtin(const ast::Expr& e, Scope& s) {
             if (argv[i].is_string()) walked += argv[i].as_string().size() / 16;
         }
     count_work(walked, e.loc);
-    const std::uint64_t steps_left = opt_.limits.steps - std::min(steps_, opt_.limits.steps);
-    WorkTally work{0, steps_left < UINT64_MAX / 32 ? (steps_left + 1) * 16 : UINT64_MAX};
+    WorkTally work{0, work_cap()};
     std::vector<std::string> said;
     BuiltinContext ctx{e.loc, opt_.limits.list_elements, module_stack_, lenient_, &said, &work};
     auto run = [&] {
@@ -388,6 +387,13 @@ void Evaluator::count_made(const Value& v, const SourceLoc& loc) {
     count_work(v.is_list() ? v.as_list().size() : v.is_string() ? v.as_string().size() / 16 : 0, loc);
 }
 
+// The elements count_work takes before the step limit is reached: a
+// built-in's or an operator's loop stops there (WorkCapReached).
+std::uint64_t Evaluator::work_cap() const {
+    const std::uint64_t steps_left = opt_.limits.steps - std::min(steps_, opt_.limits.steps);
+    return steps_left < UINT64_MAX / 32 ? (steps_left + 1) * 16 : UINT64_MAX;
+}
+
 void Evaluator::count_work(std::uint64_t elements, const SourceLoc& loc) {
     const std::uint64_t n = elements / 16;
     if (n == 0) return;
@@ -414,9 +420,16 @@ void Evaluator::check_builtin_name(const Builtin& fn, const ast::Binding& a, std
 Value Evaluator::lenient_operator(const ast::Expr& e, const Value& a, const Value* b, const OpBudget& tried) {
     OpBudget budget{tried.limit};
     budget.walk(tried.used + tried.walked);
+    budget.work_cap = work_cap();
     std::string warning;
-    Value v = b ? openscad_binary(e.text, a, *b, e.loc, warning, budget)
-                : openscad_unary(e.text, a, e.loc, warning, budget);
+    Value v;
+    try {
+        v = b ? openscad_binary(e.text, a, *b, e.loc, warning, budget)
+              : openscad_unary(e.text, a, e.loc, warning, budget);
+    } catch (const WorkCapReached&) {
+        count_work(budget.used + budget.walked, e.loc);  // past the limit: throws
+        throw;
+    }
     count_work(budget.used + budget.walked, e.loc);
     if (!warning.empty()) warn(e.loc, std::move(warning));
     return v;
@@ -600,12 +613,16 @@ Value Evaluator::eval(const ast::Expr& e, Scope& s) {
             if (lenient_ && (a.is_undef() || b.is_undef()) && !a.is_list() && !b.is_list() && e.text != "==" &&
                 e.text != "!=")
                 return lenient_operator(e, a, &b, budget);
+            budget.work_cap = work_cap();
             Value v;
             try {
                 v = binary_op(e.text, a, b, e.loc, &budget);
             } catch (const SoftError&) {
                 if (!lenient_) throw;
                 return lenient_operator(e, a, &b, budget);
+            } catch (const WorkCapReached&) {
+                count_work(budget.used + budget.walked, e.loc);  // past the limit: throws
+                throw;
             }
             // Lists made, or only read (compared, multiplied in a dot product).
             count_work(budget.used + budget.walked, e.loc);

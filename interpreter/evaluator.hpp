@@ -219,6 +219,7 @@ private:
     void count_step(const SourceLoc& loc);
     void count_made(const Value& v, const SourceLoc& loc);  // a built-in's result (eval_expr.cpp)
     void count_work(std::uint64_t elements, const SourceLoc& loc);  // elements made or compared
+    std::uint64_t work_cap() const;  // the elements count_work takes before the step limit
     void count_iterations(std::uint64_t n, const SourceLoc& loc);
     struct DepthGuard;
 

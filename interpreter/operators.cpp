@@ -97,12 +97,18 @@ struct Products {
     OpBudget* budget;
     std::uint64_t n = 0;
     ~Products() { walk(budget, n / 4); }
+    // k more, counted before they are computed: past the work cap the
+    // product stops (a 1000x1000 matrix squared is 10^9 of them).
+    void add(std::uint64_t k) {
+        n += k;
+        if (budget && budget->used + budget->walked + n / 4 > budget->work_cap) throw WorkCapReached{};
+    }
 };
 
 double dot(const ValueList& x, const ValueList& y, const Value& a, const Value& b, const SourceLoc& loc,
            Products& products) {
     if (x.size() != y.size()) length_error("*", x.size(), y.size(), loc);
-    products.n += x.size();
+    products.add(x.size());
     double s = 0;
     for (std::size_t i = 0; i < x.size(); ++i) {
         if (!x[i].is_number() || !y[i].is_number()) type_error("*", a, b, loc);
@@ -145,7 +151,7 @@ Value multiply_lists(const Value& a, const Value& b, const SourceLoc& loc, OpBud
         auto times_vector = [&](const ValueList& v) {
             if (v.size() != y.size()) length_error("*", v.size(), y.size(), loc);
             spend(budget, cols, loc);
-            products.n += static_cast<std::uint64_t>(cols) * v.size();
+            products.add(static_cast<std::uint64_t>(cols) * v.size());
             ValueList out;
             out.reserve(cols);
             for (std::size_t j = 0; j < cols; ++j) {

@@ -188,3 +188,15 @@ TEST_CASE("a warning in a function literal's call is counted when met again", "[
     REQUIRE(r.warnings[0].notes.size() == 2);
     CHECK(r.warnings[0].notes[0].message == "in 'function' called from here");
 }
+
+TEST_CASE("one product of two large matrices stops at the step limit", "[limits]") {
+    // 1200x1200 squared is 1.7*10^9 multiply-adds (~5 s): charged only
+    // after the product, the step error came at its end; the product stops
+    // where the limit is reached instead.
+    kerf::EvalOptions opt;
+    opt.limits.steps = 3'000'000;
+    auto t0 = std::chrono::steady_clock::now();
+    CHECK(error_of("m = [for (i = [0:1199]) [for (j = [0:1199]) i + j]];\nx = m * m;", opt) ==
+          "test.sdl:2:7: error: evaluation step limit 3000000 exceeded");
+    CHECK(seconds_since(t0) < 2);
+}
