@@ -327,11 +327,12 @@ Value Evaluator::call_builtin(const ast::Expr& e, Scope& s) {
         argv[i] = a.value ? eval(*a.value, s) : Value();
     }
     // A built-in that walks a list argument (max, min, norm, search,
-    // lookup, ...) costs its top-level length, and one that walks a string
-    // (len, ord, search, ...) 1 per 16 bytes, as count_made says; not those
-    // that only look at a type or a list's length, nor concat and str
-    // (charged by what they make). What a built-in walks beyond that (the
-    // pairs search compares) it tallies in ctx.walked.
+    // lookup, ...) costs its top-level length as elements, and one that
+    // walks a string (len, ord, search, ...) one element per 16 bytes (so a
+    // step per 256 bytes, count_work's 16 elements a step); not those that
+    // only look at a type or a list's length, nor concat and str (charged
+    // by what they make). What a built-in walks beyond that (the pairs
+    // search compares) it tallies in ctx.work (WorkTally::walked).
     static constexpr std::string_view kMakers[] = {"concat", "str"};
     static constexpr std::string_view kTypeTests[] = {"is_list", "is_num",    "is_bool",
                                                       "is_string", "is_undef", "is_function"};
@@ -632,8 +633,14 @@ Value Evaluator::eval(const ast::Expr& e, Scope& s) {
         case K::Index: {
             Value obj = eval(*e.items[0], s);
             Value idx = eval(*e.items[1], s);
-            // A string's i-th character is found walking it (UTF-8).
-            if (obj.is_string()) count_work(obj.as_string().size() / 16, e.loc);
+            // A string's i-th character is found walking it (UTF-8) up to
+            // there: i + 1 bytes at least (more where characters are not
+            // ASCII), the whole string for an index past its end.
+            if (obj.is_string() && idx.is_number() && !(idx.as_number() < 0)) {
+                const double i = idx.as_number();
+                const std::uint64_t n = obj.as_string().size();
+                count_work((i + 1 < double(n) ? std::uint64_t(i) + 1 : n) / 16, e.loc);
+            }
             if (lenient_) return openscad_index(obj, idx);
             return index_value(obj, idx, e.loc);
         }

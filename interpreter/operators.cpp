@@ -183,8 +183,11 @@ int compare(std::string_view op, const Value& a, const Value& b, const SourceLoc
         if (std::isnan(x) || std::isnan(y)) unordered = true;
         return x < y ? -1 : (x > y ? 1 : 0);
     }
-    if (a.is_string() && b.is_string()) walk(budget, std::min(a.as_string().size(), b.as_string().size()) / 16);
-    if (a.is_string() && b.is_string()) return a.as_string().compare(b.as_string()) < 0 ? -1 : (a.as_string() == b.as_string() ? 0 : 1);
+    if (a.is_string() && b.is_string()) {
+        walk(budget, std::min(a.as_string().size(), b.as_string().size()) / 16);
+        const int c = a.as_string().compare(b.as_string());
+        return (c > 0) - (c < 0);
+    }
     if (a.is_bool() && b.is_bool()) return int(a.as_bool()) - int(b.as_bool());
     type_error(op, a, b, loc);
 }
