@@ -327,11 +327,12 @@ Value Evaluator::call_builtin(const ast::Expr& e, Scope& s) {
         argv[i] = a.value ? eval(*a.value, s) : Value();
     }
     // A built-in that walks a list argument (max, min, norm, search,
-    // lookup, ...) costs its top-level length, and one that walks a string
-    // (len, ord, search, ...) 1 per 16 bytes, as count_made says; not those
-    // that only look at a type or a list's length, nor concat and str
-    // (charged by what they make). What a built-in walks beyond that (the
-    // pairs search compares) it tallies in ctx.walked.
+    // lookup, ...) costs its top-level length as elements, and one that
+    // walks a string (len, ord, search, ...) one element per 16 bytes (so a
+    // step per 256 bytes, count_work's 16 elements a step); not those that
+    // only look at a type or a list's length, nor concat and str (charged
+    // by what they make). What a built-in walks beyond that (the pairs
+    // search compares) it tallies in ctx.work (WorkTally::walked).
     static constexpr std::string_view kMakers[] = {"concat", "str"};
     static constexpr std::string_view kTypeTests[] = {"is_list", "is_num",    "is_bool",
                                                       "is_string", "is_undef", "is_function"};
@@ -343,8 +344,7 @@ Value Evaluator::call_builtin(const ast::Expr& e, Scope& s) {
             if (argv[i].is_string()) walked += argv[i].as_string().size() / 16;
         }
     count_work(walked, e.loc);
-    const std::uint64_t steps_left = opt_.limits.steps - std::min(steps_, opt_.limits.steps);
-    WorkTally work{0, steps_left < UINT64_MAX / 32 ? (steps_left + 1) * 16 : UINT64_MAX};
+    WorkTally work{0, work_cap()};
     std::vector<std::string> said;
     BuiltinContext ctx{e.loc, opt_.limits.list_elements, module_stack_, lenient_, &said, &work};
     auto run = [&] {
@@ -388,6 +388,13 @@ void Evaluator::count_made(const Value& v, const SourceLoc& loc) {
     count_work(v.is_list() ? v.as_list().size() : v.is_string() ? v.as_string().size() / 16 : 0, loc);
 }
 
+// The elements count_work takes before the step limit is reached: a
+// built-in's or an operator's loop stops there (WorkCapReached).
+std::uint64_t Evaluator::work_cap() const {
+    const std::uint64_t steps_left = opt_.limits.steps - std::min(steps_, opt_.limits.steps);
+    return steps_left < UINT64_MAX / 32 ? (steps_left + 1) * 16 : UINT64_MAX;
+}
+
 void Evaluator::count_work(std::uint64_t elements, const SourceLoc& loc) {
     const std::uint64_t n = elements / 16;
     if (n == 0) return;
@@ -411,10 +418,19 @@ void Evaluator::check_builtin_name(const Builtin& fn, const ast::Binding& a, std
     warn(a.loc, message + "; taken in order, as OpenSCAD does");
 }
 
-Value Evaluator::lenient_operator(const ast::Expr& e, const Value& a, const Value* b, OpBudget& budget) {
+Value Evaluator::lenient_operator(const ast::Expr& e, const Value& a, const Value* b, const OpBudget& tried) {
+    OpBudget budget{tried.limit};
+    budget.walk(tried.used + tried.walked);
+    budget.work_cap = work_cap();
     std::string warning;
-    Value v = b ? openscad_binary(e.text, a, *b, e.loc, warning, budget)
-                : openscad_unary(e.text, a, e.loc, warning, budget);
+    Value v;
+    try {
+        v = b ? openscad_binary(e.text, a, *b, e.loc, warning, budget)
+              : openscad_unary(e.text, a, e.loc, warning, budget);
+    } catch (const WorkCapReached&) {
+        count_work(budget.used + budget.walked, e.loc);  // past the limit: throws
+        throw;
+    }
     count_work(budget.used + budget.walked, e.loc);
     if (!warning.empty()) warn(e.loc, std::move(warning));
     return v;
@@ -598,12 +614,16 @@ Value Evaluator::eval(const ast::Expr& e, Scope& s) {
             if (lenient_ && (a.is_undef() || b.is_undef()) && !a.is_list() && !b.is_list() && e.text != "==" &&
                 e.text != "!=")
                 return lenient_operator(e, a, &b, budget);
+            budget.work_cap = work_cap();
             Value v;
             try {
                 v = binary_op(e.text, a, b, e.loc, &budget);
             } catch (const SoftError&) {
                 if (!lenient_) throw;
                 return lenient_operator(e, a, &b, budget);
+            } catch (const WorkCapReached&) {
+                count_work(budget.used + budget.walked, e.loc);  // past the limit: throws
+                throw;
             }
             // Lists made, or only read (compared, multiplied in a dot product).
             count_work(budget.used + budget.walked, e.loc);
@@ -613,8 +633,14 @@ Value Evaluator::eval(const ast::Expr& e, Scope& s) {
         case K::Index: {
             Value obj = eval(*e.items[0], s);
             Value idx = eval(*e.items[1], s);
-            // A string's i-th character is found walking it (UTF-8).
-            if (obj.is_string()) count_work(obj.as_string().size() / 16, e.loc);
+            // A string's i-th character is found walking it (UTF-8) up to
+            // there: i + 1 bytes at least (more where characters are not
+            // ASCII), the whole string for an index past its end.
+            if (obj.is_string() && idx.is_number() && !(idx.as_number() < 0)) {
+                const double i = idx.as_number();
+                const std::uint64_t n = obj.as_string().size();
+                count_work((i + 1 < double(n) ? std::uint64_t(i) + 1 : n) / 16, e.loc);
+            }
             if (lenient_) return openscad_index(obj, idx);
             return index_value(obj, idx, e.loc);
         }

@@ -149,8 +149,11 @@ private:
     enum class NameKind { Variable, Function, Module };
     std::string did_you_mean(std::string_view name, Scope& s, NameKind kind);
     void check_builtin_name(const Builtin& fn, const ast::Binding& a, std::size_t i, std::size_t count);
-    // The OpenSCAD dialect's answer to an operator that threw a SoftError.
-    Value lenient_operator(const ast::Expr& e, const Value& a, const Value* b, OpBudget& budget);
+    // The OpenSCAD dialect's answer to an operator that threw a SoftError;
+    // `tried` is the strict attempt's budget: its work is charged, but the
+    // fallback gets a fresh list size limit (the values the failed attempt
+    // made are gone).
+    Value lenient_operator(const ast::Expr& e, const Value& a, const Value* b, const OpBudget& tried);
     void do_assert(const std::vector<ast::Binding>& args, Scope& s, const SourceLoc& loc);
     // Counts (and charges) the iterations of a `for` over v; a string becomes
     // the list of its characters (as in OpenSCAD), so v may be replaced.
@@ -216,6 +219,7 @@ private:
     void count_step(const SourceLoc& loc);
     void count_made(const Value& v, const SourceLoc& loc);  // a built-in's result (eval_expr.cpp)
     void count_work(std::uint64_t elements, const SourceLoc& loc);  // elements made or compared
+    std::uint64_t work_cap() const;  // the elements count_work takes before the step limit
     void count_iterations(std::uint64_t n, const SourceLoc& loc);
     struct DepthGuard;
 

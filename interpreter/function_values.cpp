@@ -82,7 +82,9 @@ Value Evaluator::make_closure(const ast::Expr& e, Scope& s) {
 // `expr(args)`: a call of whatever value expr has.
 Value Evaluator::apply(const ast::Expr& e, Scope& s) {
     Value f = eval(*e.items[0], s);
-    if (f.is_function()) return call_closure(f, e.args, s, e.loc, "function");
+    // The name outlives the call: a kept warning's call stack refers to it.
+    static const std::string kName = "function";
+    if (f.is_function()) return call_closure(f, e.args, s, e.loc, kName);
     std::string message = std::string("cannot call ") + (f.is_undef() ? "undef" : std::string("a ") + f.type_name()) +
                           ", only a function";
     if (!lenient_) throw SourceError(e.loc, message);

@@ -204,33 +204,43 @@ FacetVars Evaluator::facet_vars() const {
 void Evaluator::warn(const SourceLoc& loc, std::string message) {
     const std::size_t key = std::hash<const void*>{}(loc.file.get()) ^ (std::size_t(loc.line) << 20) ^
                             std::size_t(loc.col) ^ (std::hash<std::string>{}(message) << 1);
-    std::vector<std::size_t>& same_key = warning_index_[key];
+    // find(), not [], and notes built only for a kept warning's place: past
+    // the cap a warning not kept costs a count, no memory.
+    const auto found = warning_index_.find(key);
+    static const std::vector<std::size_t> none;
+    const std::vector<std::size_t>& same_key = found == warning_index_.end() ? none : found->second;
     auto raw_calls_equal = [&](const std::vector<CallSite>& c) {
         if (c.size() != calls_.size()) return false;
         for (std::size_t i = 0; i < c.size(); ++i)
             if (c[i].at != calls_[i].at || c[i].name != calls_[i].name) return false;
         return true;
     };
-    for (std::size_t i : same_key)
-        if (same_place(warnings_[i], loc, message) && raw_calls_equal(warning_calls_[i])) {
+    bool same_place_kept = false;
+    for (std::size_t i : same_key) {
+        if (!same_place(warnings_[i], loc, message)) continue;
+        if (raw_calls_equal(warning_calls_[i])) {
             ++warnings_[i].repeats;
             return;
         }
+        same_place_kept = true;
+    }
     // The same warning reached through other calls is another diagnostic,
     // unless its notes are the same (a recursion one level deeper).
-    std::vector<Diagnostic> notes = call_notes();
+    std::vector<Diagnostic> notes;
+    if (same_place_kept || warnings_.size() < kMaxWarnings || warnings_dropped_ == 0) notes = call_notes();
     auto same_calls = [&](const Diagnostic& w) {
         if (w.notes.size() != notes.size()) return false;
         for (std::size_t i = 0; i < notes.size(); ++i)
             if (!same_place(w.notes[i], notes[i].loc, notes[i].message)) return false;
         return true;
     };
-    for (std::size_t i : same_key)
-        if (same_place(warnings_[i], loc, message) && same_calls(warnings_[i])) {
-            ++warnings_[i].repeats;
-            warning_calls_[i] = calls_;
-            return;
-        }
+    if (same_place_kept)
+        for (std::size_t i : same_key)
+            if (same_place(warnings_[i], loc, message) && same_calls(warnings_[i])) {
+                ++warnings_[i].repeats;
+                warning_calls_[i] = calls_;
+                return;
+            }
     if (warnings_.size() >= kMaxWarnings) {
         if (warnings_dropped_++ == 0) {
             first_dropped_ = message;
@@ -239,18 +249,20 @@ void Evaluator::warn(const SourceLoc& loc, std::string message) {
         }
         return;
     }
-    same_key.push_back(warnings_.size());
+    warning_index_[key].push_back(warnings_.size());
     warnings_.push_back(Diagnostic{Severity::Warning, loc, std::move(message), 1, std::move(notes)});
     warning_calls_.push_back(calls_);
 }
 
-// The last warning, when some were not kept, says how many and which first.
+// The last warning, when some were not kept, says which first and how many
+// more times a warning was not kept (each occurrence: past the cap kerf
+// cannot tell a repeat from another warning without keeping it).
 void Evaluator::close_warnings() {
     if (warnings_dropped_ == 0) return;
     warnings_[kMaxWarnings].message =
         warnings_dropped_ == 1 ? first_dropped_
                                : first_dropped_ + " (and " + std::to_string(warnings_dropped_ - 1) +
-                                     " more warnings not shown: kerf shows " + std::to_string(kMaxWarnings + 1) +
+                                     " more occurrences of warnings not shown: kerf shows " + std::to_string(kMaxWarnings + 1) +
                                      " different ones at most)";
 }
 

@@ -30,70 +30,73 @@ std::string undefined_operation(std::string_view op, const Value& a, const Value
            openscad_type_name(b) + ")";
 }
 
-// a < b as OpenSCAD's Value::operator<: same-type scalars compare, vectors
-// lexicographically (a shorter prefix is less); anything else is undef.
-// (The caller bounds the trees with checked_tree_size: each pair is
-// compared twice at most, so the walk is linear in the smaller one.)
-Value less(const Value& a, const Value& b, std::string& warning, OpBudget& budget) {
-    if (a.is_list() && b.is_list()) {
-        const ValueList& x = a.as_list();
-        const ValueList& y = b.as_list();
-        std::size_t i = 0;
-        for (; i < x.size() && i < y.size(); ++i) {
-            budget.walk(1);
-            if (x[i].is_number() && y[i].is_number()) {  // the common case, without a Value made
-                const double p = x[i].as_number(), q = y[i].as_number();
-                if (p < q) return Value(true);
-                if (q < p) return Value(false);
-                continue;  // equal, or NaN: neither is less, as below
-            }
-            Value t = less(x[i], y[i], warning, budget);
-            if (t.is_undef()) return t;
-            if (t.as_bool()) return Value(true);
-            Value u = less(y[i], x[i], warning, budget);
-            if (u.is_bool() && u.as_bool()) return Value(false);
-        }
-        return Value(i == x.size() && i < y.size());
-    }
-    if (a.is_number() && b.is_number()) return Value(a.as_number() < b.as_number());  // NaN: false, as binary_op
-    if (a.type() == b.type() && !a.is_undef() && !a.is_range()) {
-        try {
-            return binary_op("<", a, b, kNowhere, &budget);
-        } catch (const SoftError&) {
-        }
-    }
-    warning = undefined_operation("<", a, b);
-    return Value();
-}
+// a against b as OpenSCAD's Value::operator< orders them: same-type
+// scalars compare, vectors lexicographically (a shorter prefix is less);
+// anything else is Undef. OpenSCAD asks a < b, then b < a, of each element
+// pair, so equal lists nested d deep take 2^d steps there; one three-way
+// answer visits each pair once, so the walk is linear in the smaller tree
+// (which the caller bounds with checked_tree_size). NaN is neither less nor
+// greater, so Equal, as OpenSCAD goes on to the next element then.
+enum class Order { Less, Equal, Greater, Undef };
 
 // Two ranges as OpenSCAD's RangeType orders them: an empty one (no
 // element) below any other, then by begin, step and element count.
-Value compare_ranges(std::string_view op, const Range& a, const Range& b) {
+Order range_order(const Range& a, const Range& b) {
     const std::uint32_t n1 = openscad_range_count(a), n2 = openscad_range_count(b);
     int c;
     if (n1 == 0 || n2 == 0) c = (n1 != 0) - (n2 != 0);
     else if (a.start != b.start) c = a.start < b.start ? -1 : 1;
     else if (a.step != b.step) c = a.step < b.step ? -1 : 1;
     else c = (n1 > n2) - (n1 < n2);
-    return Value(op == "<" ? c < 0 : op == ">" ? c > 0 : op == "<=" ? c <= 0 : c >= 0);
+    return c < 0 ? Order::Less : c > 0 ? Order::Greater : Order::Equal;
+}
+
+Order order(const Value& a, const Value& b, OpBudget& budget) {
+    if (a.is_list() && b.is_list()) {
+        const ValueList& x = a.as_list();
+        const ValueList& y = b.as_list();
+        std::size_t i = 0;
+        for (; i < x.size() && i < y.size(); ++i) {
+            budget.walk(1);
+            if (x[i].is_number() && y[i].is_number()) {  // the common case, without a call
+                const double p = x[i].as_number(), q = y[i].as_number();
+                if (p < q) return Order::Less;
+                if (q < p) return Order::Greater;
+                continue;
+            }
+            const Order o = order(x[i], y[i], budget);
+            if (o != Order::Equal) return o;
+        }
+        if (i < y.size()) return Order::Less;
+        return i < x.size() ? Order::Greater : Order::Equal;
+    }
+    if (a.is_number() && b.is_number()) {
+        const double p = a.as_number(), q = b.as_number();
+        return p < q ? Order::Less : q < p ? Order::Greater : Order::Equal;
+    }
+    if (a.is_range() && b.is_range()) return range_order(a.as_range(), b.as_range());
+    if (a.type() == b.type() && !a.is_undef()) {
+        try {
+            if (binary_op("<", a, b, kNowhere, &budget).as_bool()) return Order::Less;
+            return binary_op("<", b, a, kNowhere, &budget).as_bool() ? Order::Greater : Order::Equal;
+        } catch (const SoftError&) {
+        }
+    }
+    return Order::Undef;
 }
 
 Value compare(std::string_view op, const Value& a, const Value& b, const SourceLoc& loc, std::string& warning,
               OpBudget& budget) {
-    if (a.is_range() && b.is_range()) return compare_ranges(op, a.as_range(), b.as_range());
-    budget.walk(std::min(checked_tree_size(budget, a, loc), checked_tree_size(budget, b, loc)));
-    Value r;
-    if (op == "<") r = less(a, b, warning, budget);
-    else if (op == ">") r = less(b, a, warning, budget);
-    else if (op == "<=") {
-        r = less(b, a, warning, budget);
-        if (!r.is_undef()) r = Value(!r.as_bool());
-    } else {
-        r = less(a, b, warning, budget);
-        if (!r.is_undef()) r = Value(!r.as_bool());
+    budget.walk(checked_tree_size(budget, a, loc) + checked_tree_size(budget, b, loc));  // both are walked
+    const Order o = order(a, b, budget);
+    if (o == Order::Undef) {
+        warning = undefined_operation(op, a, b);
+        return Value();
     }
-    if (r.is_undef()) warning = undefined_operation(op, a, b);
-    return r;
+    if (op == "<") return Value(o == Order::Less);
+    if (op == ">") return Value(o == Order::Greater);
+    if (op == "<=") return Value(o != Order::Greater);
+    return Value(o != Order::Less);
 }
 
 // + and - of two vectors: element-wise up to the shorter length; an element

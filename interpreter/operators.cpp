@@ -97,12 +97,18 @@ struct Products {
     OpBudget* budget;
     std::uint64_t n = 0;
     ~Products() { walk(budget, n / 4); }
+    // k more, counted before they are computed: past the work cap the
+    // product stops (a 1000x1000 matrix squared is 10^9 of them).
+    void add(std::uint64_t k) {
+        n += k;
+        if (budget && budget->used + budget->walked + n / 4 > budget->work_cap) throw WorkCapReached{};
+    }
 };
 
 double dot(const ValueList& x, const ValueList& y, const Value& a, const Value& b, const SourceLoc& loc,
            Products& products) {
     if (x.size() != y.size()) length_error("*", x.size(), y.size(), loc);
-    products.n += x.size();
+    products.add(x.size());
     double s = 0;
     for (std::size_t i = 0; i < x.size(); ++i) {
         if (!x[i].is_number() || !y[i].is_number()) type_error("*", a, b, loc);
@@ -145,7 +151,7 @@ Value multiply_lists(const Value& a, const Value& b, const SourceLoc& loc, OpBud
         auto times_vector = [&](const ValueList& v) {
             if (v.size() != y.size()) length_error("*", v.size(), y.size(), loc);
             spend(budget, cols, loc);
-            products.n += static_cast<std::uint64_t>(cols) * v.size();
+            products.add(static_cast<std::uint64_t>(cols) * v.size());
             ValueList out;
             out.reserve(cols);
             for (std::size_t j = 0; j < cols; ++j) {
@@ -177,8 +183,11 @@ int compare(std::string_view op, const Value& a, const Value& b, const SourceLoc
         if (std::isnan(x) || std::isnan(y)) unordered = true;
         return x < y ? -1 : (x > y ? 1 : 0);
     }
-    if (a.is_string() && b.is_string()) walk(budget, std::min(a.as_string().size(), b.as_string().size()) / 16);
-    if (a.is_string() && b.is_string()) return a.as_string().compare(b.as_string()) < 0 ? -1 : (a.as_string() == b.as_string() ? 0 : 1);
+    if (a.is_string() && b.is_string()) {
+        walk(budget, std::min(a.as_string().size(), b.as_string().size()) / 16);
+        const int c = a.as_string().compare(b.as_string());
+        return (c > 0) - (c < 0);
+    }
     if (a.is_bool() && b.is_bool()) return int(a.as_bool()) - int(b.as_bool());
     type_error(op, a, b, loc);
 }
@@ -212,10 +221,11 @@ std::uint64_t checked_tree_size(OpBudget& budget, const Value& v, const SourceLo
 
 Value binary_op(std::string_view op, const Value& a, const Value& b, const SourceLoc& loc, OpBudget* budget) {
     if (op == "==" || op == "!=") {
-        // Shared nested lists could make the comparison exponentially long.
-        // It walks the elements of the smaller tree at most, the bytes of
-        // two strings alike.
-        walk(budget, std::min(precheck(budget, a, loc), precheck(budget, b, loc)));
+        // Shared nested lists could make the comparison exponentially long:
+        // both trees are sized (and charged, as walked) first; the
+        // comparison then walks the smaller at most, the bytes of two
+        // strings alike.
+        walk(budget, precheck(budget, a, loc) + precheck(budget, b, loc));
         if (a.is_string() && b.is_string()) walk(budget, std::min(a.as_string().size(), b.as_string().size()) / 16);
         return Value((a == b) == (op == "=="));
     }

@@ -24,11 +24,19 @@ struct OpBudget {
     std::uint64_t limit;
     std::uint64_t used = 0;
     std::uint64_t walked = 0;
+    // Where the step limit is reached (used + walked, the evaluator's
+    // units): a long loop inside one operation (a matrix product) stops
+    // there with WorkCapReached instead of running to its end first.
+    std::uint64_t work_cap = UINT64_MAX;
 
     // n more values made: past limit, "list size limit N exceeded".
     void make(std::uint64_t n, const SourceLoc& loc);
     void walk(std::uint64_t n) { walked += n; }
 };
+
+// Thrown past a work cap (OpBudget::work_cap, WorkTally::cap): the
+// evaluator answers it with its step limit error.
+struct WorkCapReached {};
 
 // The values in v's list tree (0 for anything else), each shared sublist
 // counted where it occurs: past budget.limit, "list size limit N exceeded",

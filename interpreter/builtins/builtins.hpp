@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "grammar/source.hpp"
+#include "interpreter/operators.hpp"  // WorkCapReached
 #include "interpreter/value.hpp"
 
 namespace kerf {
@@ -22,7 +23,6 @@ struct WorkTally {
     std::uint64_t walked = 0;
     std::uint64_t cap = UINT64_MAX;
 };
-struct WorkCapReached {};  // the evaluator answers it with its step limit error
 
 struct BuiltinContext {
     const SourceLoc& loc;                 // the call expression

@@ -144,8 +144,23 @@ TEST_CASE("past 1000 different warnings the others are counted into one", "[limi
     REQUIRE(r.warnings.size() == 1001);
     CHECK(r.warnings[999].message == "lookup(\"999\", ...) first argument is not a number");
     CHECK(format_diagnostic_head(r.warnings[1000]) ==
-          "t.scad:1:25: warning: lookup(\"1000\", ...) first argument is not a number (and 499 more warnings not "
-          "shown: kerf shows 1001 different ones at most)");
+          "t.scad:1:25: warning: lookup(\"1000\", ...) first argument is not a number (and 499 more occurrences of "
+          "warnings not shown: kerf shows 1001 different ones at most)");
+    // Past the cap a kept warning met again is still a repeat, and a
+    // warning not kept met again is counted as an occurrence, not as
+    // another different warning (each used to be kept in an index, its
+    // notes built).
+    auto twice = kerf::evaluate_source(
+        kerf::test::source("x = [for (j = [0:1]) for (i = [0:1199]) lookup(str(i), [[0, 1]])];\n"
+                           "y = [for (i = [0:4]) lookup(\"same\", [[0, 1]])];",
+                           "t.scad"),
+        opt);
+    REQUIRE(twice.warnings.size() == 1001);
+    CHECK(twice.warnings[0].repeats == 2);
+    CHECK(twice.warnings[999].repeats == 2);
+    CHECK(format_diagnostic_head(twice.warnings[1000]) ==
+          "t.scad:1:41: warning: lookup(\"1000\", ...) first argument is not a number (and 404 more occurrences of "
+          "warnings not shown: kerf shows 1001 different ones at most)");
     // The same warning in a loop stays one, counted, whatever the calls
     // between (two call places alternating: two warnings).
     auto same = kerf::evaluate_source(
@@ -157,4 +172,31 @@ TEST_CASE("past 1000 different warnings the others are counted into one", "[limi
     CHECK(same.warnings[0].repeats == 100000);
     CHECK(same.warnings[1].repeats == 100000);
     CHECK(same.warnings[1].notes.size() == 2);
+}
+
+TEST_CASE("a warning in a function literal's call is counted when met again", "[limits]") {
+    // The kept warning's call stack names the call "function": that name
+    // must outlive the call (it was a temporary string, read after it died:
+    // only a sanitizer build sees that fail).
+    kerf::EvalOptions opt;
+    opt.echo = [](const std::string&) {};
+    auto r = kerf::evaluate_source(
+        kerf::test::source("f = function(x) x + undef;\nfunction g(i) = [f][0](i);\ny = [for (i = [0:9]) g(i)];", "t.scad"),
+        opt);
+    REQUIRE(r.warnings.size() == 1);
+    CHECK(r.warnings[0].repeats == 10);
+    REQUIRE(r.warnings[0].notes.size() == 2);
+    CHECK(r.warnings[0].notes[0].message == "in 'function' called from here");
+}
+
+TEST_CASE("one product of two large matrices stops at the step limit", "[limits]") {
+    // 1200x1200 squared is 1.7*10^9 multiply-adds (~5 s): charged only
+    // after the product, the step error came at its end; the product stops
+    // where the limit is reached instead.
+    kerf::EvalOptions opt;
+    opt.limits.steps = 3'000'000;
+    auto t0 = std::chrono::steady_clock::now();
+    CHECK(error_of("m = [for (i = [0:1199]) [for (j = [0:1199]) i + j]];\nx = m * m;", opt) ==
+          "test.sdl:2:7: error: evaluation step limit 3000000 exceeded");
+    CHECK(seconds_since(t0) < 2);
 }
