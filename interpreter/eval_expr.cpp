@@ -634,8 +634,9 @@ Value Evaluator::eval(const ast::Expr& e, Scope& s) {
             Value obj = eval(*e.items[0], s);
             Value idx = eval(*e.items[1], s);
             // A string's i-th character is found walking it (UTF-8) up to
-            // there: i + 1 bytes at least (more where characters are not
-            // ASCII), the whole string for an index past its end.
+            // there: charged i + 1 bytes, a lower bound (the walk takes up
+            // to 4 bytes a character where they are not ASCII), the whole
+            // string for an index past its end.
             if (obj.is_string() && idx.is_number() && !(idx.as_number() < 0)) {
                 const double i = idx.as_number();
                 const std::uint64_t n = obj.as_string().size();

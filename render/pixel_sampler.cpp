@@ -1,6 +1,7 @@
 #include "render/pixel_sampler.hpp"
 
 #include <limits>
+#include <stdexcept>
 
 namespace kerf::render {
 
@@ -53,6 +54,7 @@ void PixelSampler::centre_row(int x0, int x1, int y, ThreadState& ts, glm::dvec3
                               bool* ground) const {
     const CsgTracer& tracer = shader_.tracer();
     const int n = x1 - x0;
+    if (n < 0 || n > kMaxRow) throw std::logic_error("centre_row: more pixels than a block's row");
     ts.rays.primary += std::uint64_t(n);
     TraceRay rays[kMaxRow];
     bool ok[kMaxRow], solid[kMaxRow];
