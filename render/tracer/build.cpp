@@ -259,9 +259,8 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
         impl_->grid_minus[id] = m.op == Op::Leaf && one_span_kind(scene.leaves[m.first].kind);
     }
     impl_->build_accel(impl_->top, units, true);
-    if (impl_->top.items.size() == 1 && impl_->top.always.empty() && !impl_->top.bvh &&
-        impl_->grid_minus[impl_->top.items[0]])
-        impl_->plate_unit = impl_->top.items[0];
+    if (impl_->top.items.size() == 1 && impl_->top.always.empty()) impl_->lone_unit = impl_->top.items[0];
+    if (impl_->lone_unit != csg::kNone && impl_->grid_minus[impl_->lone_unit]) impl_->plate_unit = impl_->lone_unit;
     impl_->find_convex_units();
     impl_->ball_slack = use_float ? 1e-5 : 1e-12;  // float sphere tests round at ~1e-7 of |c - o|
     impl_->top.balls = unit_balls(scene, impl_->top.items, impl_->node_eps);
@@ -273,10 +272,9 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
     // ball chords decide most rays first (a sphere minus a few balls), nor
     // for other kinds (a box minuend: the checkered cube's camera rays
     // would solve it ahead for 8 % more instructions, 512²).
-    if (!use_float && impl_->top.items.size() == 1 && impl_->top.always.empty() &&
-        impl_->leaf_minus[impl_->top.items[0]]) {
+    if (!use_float && impl_->lone_unit != csg::kNone && impl_->leaf_minus[impl_->lone_unit]) {
         const bool chords = !impl_->top.sphere_minus.empty() && impl_->top.sphere_minus[0].r_in >= 0;
-        const std::uint32_t leaf = scene.nodes[scene.children[scene.nodes[impl_->top.items[0]].first]].first;
+        const std::uint32_t leaf = scene.nodes[scene.children[scene.nodes[impl_->lone_unit].first]].first;
         if (!chords && scene.leaves[leaf].kind == csg::PrimKind::Sphere) impl_->ahead_leaf = leaf;
     }
     if (impl_->top.always.empty()) {

@@ -145,8 +145,11 @@ struct CsgTracer::Impl {
     // first entry is then found in locals (difference_first_entry.cpp,
     // grid_first_entry), without the span stack.
     std::vector<std::uint8_t> grid_minus;
-    // The root's one unit when it is a grid_minus difference and there are
-    // no others (a holed plate alone: first_hit.cpp asks it directly), else kNone.
+    // The root's one unit (node) when there are no others, bounded or not
+    // (a grooved sphere, a lens, a holed plate alone), else kNone; with a
+    // single item the top has no BVH. plate_unit: the same when it is a
+    // grid_minus difference (first_hit.cpp asks it directly).
+    std::uint32_t lone_unit = csg::kNone;
     std::uint32_t plate_unit = csg::kNone;
     // Per leaf: the unit (top item index; unbounded units after the items)
     // that lies wholly inside it when the leaf is convex, else kNone: a

@@ -214,12 +214,12 @@ bool CsgTracer::occluded(const TraceRay& ray, TraceScratch& scratch, const Depar
     const std::uint32_t nitems = std::uint32_t(impl_->top.items.size());
     // A one-unit scene (a grooved sphere, a lens) whose unit the ray departs
     // from: nothing is left to block it, so no set-up at all.
-    if (departs && nitems == 1 && from->unit == 0 && impl_->top.always.empty()) return false;
+    const bool lone = impl_->lone_unit != csg::kNone;
+    if (departs && lone && from->unit == 0) return false;
     // A one-unit scene whose hole the ray departs into (a holed plate's
     // wall): stays_inside before any set-up, with a margin from a bound on
     // |o| (its 1-norm) instead of the unit's degenerate rule per unit of t.
-    if (from && nitems == 1 && !impl_->top.bvh && impl_->top.always.empty() && from->hollow == impl_->top.items[0] &&
-        ray.tnear >= 0) {
+    if (from && lone && from->hollow == impl_->lone_unit && ray.tnear >= 0) {
         const std::uint32_t node = from->hollow;
         const double margin =
             16 * (impl_->node_eps[node] + impl_->eps_per_distance * (std::abs(ray.o.x) + std::abs(ray.o.y) + std::abs(ray.o.z)));
