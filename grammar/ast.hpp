@@ -3,6 +3,7 @@
 // buffer, so the tree outlives the parse. One fat node type per category
 // (Expr, Stmt) keeps the parser's actions and the interpreter's switch simple.
 #pragma once
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -94,6 +95,13 @@ struct Stmt {
     // position (the evaluator's cache, filled on the first call: -1 not
     // known yet), so that only such functions take the tail-call loop.
     mutable signed char self_tail_call = -1;
+    // Instantiate: what the name calls unless a user module of that name is
+    // in scope (the evaluator's cache, filled on the first evaluation: -1
+    // not known yet; interpreter/eval_stmt.cpp, `dispatch`). The name never
+    // changes, so neither does the answer; comparing it against every
+    // control name and searching the built-in table was a quarter of
+    // evaluating a loop of translated spheres (docs/performance.md).
+    mutable std::int16_t dispatch = -1;
 };
 
 struct Program {

@@ -6,6 +6,7 @@
 
 #include "grammar/parser.hpp"
 #include "interpreter/evaluator.hpp"
+#include "interpreter/modules/module_call.hpp"
 #include "interpreter/openscad_ops.hpp"
 #include "interpreter/text/font.hpp"
 
@@ -494,6 +495,26 @@ void Evaluator::stmt_children(const ast::Stmt& st, Scope& s) {
     out_.group(mark, st.loc);
 }
 
+namespace {
+
+// What an instantiation's name calls, unless a user module of that name is
+// in scope (ast::Stmt::dispatch caches it): a control statement, no
+// built-in module, or kBuiltin + the built-in's place in the module table.
+enum Dispatch : std::int16_t { kFor, kIntersectionFor, kLet, kEcho, kAssert, kChildren, kNoBuiltin, kBuiltin };
+
+std::int16_t dispatch(const ast::Stmt& st) {
+    if (st.dispatch >= 0) return st.dispatch;
+    static constexpr std::string_view kControls[] = {"for", "intersection_for", "let", "echo", "assert", "children"};
+    std::int16_t d = kNoBuiltin;
+    for (std::size_t i = 0; i < std::size(kControls); ++i)
+        if (st.name == kControls[i]) d = static_cast<std::int16_t>(i);
+    if (d == kNoBuiltin)
+        if (const int i = find_module_index(st.name); i >= 0) d = static_cast<std::int16_t>(kBuiltin + i);
+    return st.dispatch = d;
+}
+
+}  // namespace
+
 void Evaluator::stmt_for(const ast::Stmt& st, std::size_t k, Scope& loop, Scope& s) {
     const ast::Binding& b = st.args[k];
     if (b.name.empty() || !b.value) throw SourceError(b.loc, "for: expected name = range or list");
@@ -521,7 +542,7 @@ void Evaluator::stmt_for(const ast::Stmt& st, std::size_t k, Scope& loop, Scope&
             for (const ast::Stmt* c : body.children) eval_stmt(*c, scope, false);
         }
         // intersection_for intersects its passes: each pass is one solid.
-        if (k + 1 == st.args.size() && st.name == "intersection_for") out_.group(pass, st.loc);
+        if (k + 1 == st.args.size() && dispatch(st) == kIntersectionFor) out_.group(pass, st.loc);
     }
     if (dollar) dyn_.resize(slot);
     else loop.truncate(slot);
@@ -529,10 +550,12 @@ void Evaluator::stmt_for(const ast::Stmt& st, std::size_t k, Scope& loop, Scope&
 
 // ---------------------------------------------------------------- statements
 
+
 void Evaluator::instantiate(const ast::Stmt& st, Scope& s, bool top_level) {
     const std::string& name = st.name;
     std::size_t mark = out_.mark();
-    if (name == "for" || name == "intersection_for") {
+    const std::int16_t d = dispatch(st);
+    if (d == kFor || d == kIntersectionFor) {
         count_step(st.loc);
         for (std::size_t i = 0; i < st.args.size(); ++i)
             for (std::size_t j = 0; j < i; ++j)
@@ -543,11 +566,11 @@ void Evaluator::instantiate(const ast::Stmt& st, Scope& s, bool top_level) {
         Scope loop(&s);
         loop.vars.reserve(st.args.size());
         if (!st.args.empty()) stmt_for(st, 0, loop, s);
-        if (name == "for") out_.group(mark, st.loc);
+        if (d == kFor) out_.group(mark, st.loc);
         else if (out_.produced_since(mark) > 1) out_.make_node(mark, graph::NodeKind::Intersection, st.loc);
         return;
     }
-    if (name == "let") {
+    if (d == kLet) {
         count_step(st.loc);
         DynRestore restore(dyn_);
         Scope ls(&s);
@@ -556,15 +579,15 @@ void Evaluator::instantiate(const ast::Stmt& st, Scope& s, bool top_level) {
         out_.group(mark, st.loc);
         return;
     }
-    if (name == "echo" || name == "assert") {
+    if (d == kEcho || d == kAssert) {
         count_step(st.loc);
-        if (name == "echo") do_echo(st.args, s, st.loc);
+        if (d == kEcho) do_echo(st.args, s, st.loc);
         else do_assert(st.args, s, st.loc);
         eval_block(st.body, s, false);
         out_.group(mark, st.loc);
         return;
     }
-    if (name == "children") {
+    if (d == kChildren) {
         count_step(st.loc);
         stmt_children(st, s);
         return;
@@ -588,7 +611,7 @@ void Evaluator::instantiate(const ast::Stmt& st, Scope& s, bool top_level) {
             }
     }
     count_step(st.loc);
-    if (builtin_module(st, s, top_level)) return;
+    if (d >= kBuiltin) return builtin_module(module_entry(d - kBuiltin), st, s, top_level);
     if (!lenient_) throw SourceError(st.loc, "unknown module '" + name + "'" + did_you_mean(name, s, NameKind::Module));
     warn(st.loc, "Ignoring unknown module '" + name + "'");
 }

@@ -184,9 +184,9 @@ private:
     void bind(Scope& s, std::string_view name, Value v, const SourceLoc* loc);
     void bind_sequential(const std::vector<ast::Binding>& bindings, Scope& s, const char* what);
 
-    // modules/table.cpp: a built-in module call (false: no such module).
-    bool builtin_module(const ast::Stmt& st, Scope& s, bool top_level);
-    bool builtin_module_lenient(const struct ModuleEntry& e, class ModuleCall& call);
+    // modules/table.cpp: a call of the built-in module e.
+    void builtin_module(const struct ModuleEntry& e, const ast::Stmt& st, Scope& s, bool top_level);
+    void builtin_module_lenient(const ModuleEntry& e, class ModuleCall& call);
 
     // Call-site notes (interpreter.cpp): the user-level calls being
     // evaluated, innermost last. bind_params pushes a call once its

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "csg/huge_pages.hpp"
 #include "grammar/source.hpp"
 #include "interpreter/scene_graph.hpp"
 
@@ -22,15 +23,25 @@ public:
     std::size_t mark() const { return pending.size(); }
     std::size_t produced_since(std::size_t mark) const { return pending.size() - mark; }
 
-    // Large scenes: once an array passes 64K entries it is reserved at the
+    // Large scenes: once an array passes 16K entries it is reserved at the
     // size the primitive limit allows (address space only; pages are touched
     // as nodes arrive), so a million-primitive loop never copies the arena
-    // while it grows.
+    // while it grows, and its pages are asked to be huge ones: a page fault
+    // per 4 KiB (46 nodes) was a third of evaluating 30,000 spheres in a
+    // loop (docs/performance.md, "The front end").
     std::size_t max_nodes = 0, max_matrices = 0;
     template <class V>
     static void grow(V& v, std::size_t max) {
-        if (v.size() == v.capacity() && v.size() >= 65536 && max > v.capacity()) v.reserve(max);
+        if (v.size() == v.capacity() && v.size() >= 16384 && max > v.capacity()) {
+            v.reserve(max);
+            advise_huge(v);
+        }
     }
+    template <class T>
+    static void advise_huge(std::vector<T>& v) {
+        csg::advise_huge_pages(v.data(), v.capacity() * sizeof(T));
+    }
+    static void advise_huge(graph::Transforms& t) { t.advise_huge_pages(); }
     void add_matrix(const glm::dmat4& m) {
         grow(graph.matrices, max_matrices);
         graph.matrices.push_back(m);

@@ -16,6 +16,7 @@
 
 #include <glm/glm.hpp>
 
+#include "csg/huge_pages.hpp"
 #include "csg/scene.hpp"
 #include "grammar/source.hpp"
 
@@ -74,6 +75,12 @@ public:
         slots_.reserve(n);
         offsets_.reserve(n);
         general_.reserve(n);
+    }
+    // Huge pages over the reserved arrays (csg/huge_pages.hpp: a hint).
+    void advise_huge_pages() {
+        csg::advise_huge_pages(slots_.data(), slots_.capacity() * sizeof(std::uint32_t));
+        csg::advise_huge_pages(offsets_.data(), offsets_.capacity() * sizeof(glm::dvec3));
+        csg::advise_huge_pages(general_.data(), general_.capacity() * sizeof(glm::dmat4));
     }
     glm::dmat4 operator[](std::size_t i) const {
         const std::uint32_t s = slots_[i];

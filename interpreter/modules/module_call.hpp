@@ -87,6 +87,10 @@ std::span<const ModuleEntry> surface_modules();     // surface.cpp
 
 // The built-in module called `name`, or null.
 const ModuleEntry* find_module(std::string_view name);
+// The same as a place in the table (-1: none), and the entry at a place:
+// what a statement's dispatch cache keeps (ast::Stmt::dispatch).
+int find_module_index(std::string_view name);
+const ModuleEntry& module_entry(int index);
 // Every built-in module's name (for "did you mean").
 std::vector<std::string_view> module_names();
 

@@ -75,16 +75,22 @@ std::vector<std::string_view> module_names() {
     return out;
 }
 
-const ModuleEntry* find_module(std::string_view name) {
+int find_module_index(std::string_view name) {
     const auto& table = module_table();
     auto it = std::lower_bound(table.begin(), table.end(), name,
                                [](const ModuleEntry* e, std::string_view n) { return e->name < n; });
-    return it != table.end() && (*it)->name == name ? *it : nullptr;
+    return it != table.end() && (*it)->name == name ? static_cast<int>(it - table.begin()) : -1;
 }
 
-bool Evaluator::builtin_module(const ast::Stmt& st, Scope& s, bool top_level) {
-    const ModuleEntry* e = find_module(st.name);
-    if (!e) return false;
+const ModuleEntry& module_entry(int index) { return *module_table()[static_cast<std::size_t>(index)]; }
+
+const ModuleEntry* find_module(std::string_view name) {
+    const int i = find_module_index(name);
+    return i < 0 ? nullptr : &module_entry(i);
+}
+
+void Evaluator::builtin_module(const ModuleEntry& entry, const ast::Stmt& st, Scope& s, bool top_level) {
+    const ModuleEntry* e = &entry;
     if (e->kind == ModuleKind::Setup && !top_level)
         throw SourceError(st.loc, st.name + " is only allowed at the top level");
     Args a = match_args(*this, *e, st, s);
@@ -98,11 +104,10 @@ bool Evaluator::builtin_module(const ast::Stmt& st, Scope& s, bool top_level) {
     ModuleCall call(*this, st, s, std::move(a));
     if (lenient_) return builtin_module_lenient(*e, call);
     e->handler(call);
-    return true;
 }
 
 // Out of line, so the strict path above stays as small as it was.
-[[gnu::noinline]] bool Evaluator::builtin_module_lenient(const ModuleEntry& entry, ModuleCall& call) {
+[[gnu::noinline]] void Evaluator::builtin_module_lenient(const ModuleEntry& entry, ModuleCall& call) {
     const ModuleEntry* e = &entry;
     const ast::Stmt& st = call.st;
     Scope& s = call.scope;
@@ -124,7 +129,6 @@ bool Evaluator::builtin_module(const ast::Stmt& st, Scope& s, bool top_level) {
             out_.group(mark, st.loc);
         }
     }
-    return true;
 }
 
 void ModuleCall::children() { ev_.eval_block(st.body, scope, false); }
