@@ -4,6 +4,7 @@
 // unsupported) cuts the number of faults by 512×.
 #pragma once
 #include <cstddef>
+#include <iterator>
 #include <vector>
 
 namespace kerf::csg {
@@ -14,11 +15,22 @@ constexpr std::size_t kHugePage = std::size_t(2) << 20;  // x86-64 transparent h
 // blocks under two huge pages are left alone.
 void advise_huge_pages(void* data, std::size_t bytes);
 
-// Reserves `count` elements and advises huge pages over the whole buffer.
+// Reserves `count` elements and advises huge pages over the whole buffer,
+// before the elements already there move in (so their copy lands on huge
+// pages too, not on 4 KiB faults).
 template <typename T>
 void reserve_huge(std::vector<T>& v, std::size_t count) {
-    v.reserve(count);
-    advise_huge_pages(v.data(), v.capacity() * sizeof(T));
+    if (count <= v.capacity()) return;
+    if (v.empty()) {
+        v.reserve(count);
+        advise_huge_pages(v.data(), v.capacity() * sizeof(T));
+        return;
+    }
+    std::vector<T> fresh;
+    fresh.reserve(count);
+    advise_huge_pages(fresh.data(), fresh.capacity() * sizeof(T));
+    fresh.insert(fresh.end(), std::make_move_iterator(v.begin()), std::make_move_iterator(v.end()));
+    v.swap(fresh);
 }
 
 }  // namespace kerf::csg

@@ -23,6 +23,7 @@
 // undef (or nothing) and a warning; indexing follows OpenSCAD silently.
 // `assert` and every limit still stop the run.
 #pragma once
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -81,10 +82,13 @@ struct FacetVars {
 // Arguments of a built-in module matched to its parameter names
 // (modules/module_call.hpp).
 struct Args {
+    // The most parameters of any built-in module (material's); the table
+    // refuses more (modules/table.cpp). Inline, so a call allocates nothing.
+    static constexpr std::size_t kMaxParams = 18;
     const char* callee;
     const ast::Stmt* call;
-    std::vector<Value> values;
-    std::vector<bool> given;
+    std::array<Value, kMaxParams> values{};
+    std::array<bool, kMaxParams> given{};
     double fn = 0;  // a $fn given in the call itself (docs/openscad.md, "Facets")
     bool facet_args = false;  // a $fn, $fa or $fs given in the call
     // Every `$` argument of the call, bound for its children and its own

@@ -32,16 +32,11 @@ public:
     std::size_t max_nodes = 0, max_matrices = 0;
     template <class V>
     static void grow(V& v, std::size_t max) {
-        if (v.size() == v.capacity() && v.size() >= 16384 && max > v.capacity()) {
-            v.reserve(max);
-            advise_huge(v);
-        }
+        if (v.size() == v.capacity() && v.size() >= 16384 && max > v.capacity()) reserve_huge(v, max);
     }
     template <class T>
-    static void advise_huge(std::vector<T>& v) {
-        csg::advise_huge_pages(v.data(), v.capacity() * sizeof(T));
-    }
-    static void advise_huge(graph::Transforms& t) { t.advise_huge_pages(); }
+    static void reserve_huge(std::vector<T>& v, std::size_t n) { csg::reserve_huge(v, n); }
+    static void reserve_huge(graph::Transforms& t, std::size_t n) { t.reserve_huge(n); }
     void add_matrix(const glm::dmat4& m) {
         grow(graph.matrices, max_matrices);
         graph.matrices.push_back(m);

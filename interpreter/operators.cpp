@@ -9,6 +9,17 @@
 
 namespace kerf {
 
+double number_op(char op, double x, double y) {
+    switch (op) {
+        case '+': return x + y;
+        case '-': return x - y;
+        case '*': return x * y;
+        case '/': return x / y;
+        case '%': return std::fmod(x, y);
+        default: return std::pow(x, y);
+    }
+}
+
 namespace {
 
 [[noreturn]] void type_error(std::string_view op, const Value& a, const Value& b, const SourceLoc& loc) {
@@ -45,16 +56,7 @@ std::uint64_t precheck(OpBudget* b, const Value& v, const SourceLoc& loc) {
     return b ? checked_tree_size(*b, v, loc) : 0;
 }
 
-double num_op(char op, double x, double y) {
-    switch (op) {
-        case '+': return x + y;
-        case '-': return x - y;
-        case '*': return x * y;
-        case '/': return x / y;
-        case '%': return std::fmod(x, y);
-        default: return std::pow(x, y);
-    }
-}
+double num_op(char op, double x, double y) { return number_op(op, x, y); }
 
 // Element-wise + and - on numbers or (nested) lists of equal shape.
 Value elementwise(std::string_view op, const Value& a, const Value& b, const SourceLoc& loc, OpBudget* budget) {

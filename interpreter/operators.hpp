@@ -46,6 +46,11 @@ std::uint64_t checked_tree_size(OpBudget& budget, const Value& v, const SourceLo
 // op is one of "-", "+" (unary).
 Value unary_op(std::string_view op, const Value& a, const SourceLoc& loc, OpBudget* budget = nullptr);
 
+// x op y for op one of "+ - * / % ^": binary_op's answer for two numbers
+// (the evaluator's way around binary_op for them: no budget, no dispatch on
+// the operator's text).
+double number_op(char op, double x, double y);
+
 // op is one of "+ - * / % ^ < <= > >= == !=" (&& and || short-circuit in the
 // evaluator).
 Value binary_op(std::string_view op, const Value& a, const Value& b, const SourceLoc& loc, OpBudget* budget = nullptr);

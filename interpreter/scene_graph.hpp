@@ -76,11 +76,11 @@ public:
         offsets_.reserve(n);
         general_.reserve(n);
     }
-    // Huge pages over the reserved arrays (csg/huge_pages.hpp: a hint).
-    void advise_huge_pages() {
-        csg::advise_huge_pages(slots_.data(), slots_.capacity() * sizeof(std::uint32_t));
-        csg::advise_huge_pages(offsets_.data(), offsets_.capacity() * sizeof(glm::dvec3));
-        csg::advise_huge_pages(general_.data(), general_.capacity() * sizeof(glm::dmat4));
+    // The same on huge pages (csg/huge_pages.hpp: a hint).
+    void reserve_huge(std::size_t n) {
+        csg::reserve_huge(slots_, n);
+        csg::reserve_huge(offsets_, n);
+        csg::reserve_huge(general_, n);
     }
     glm::dmat4 operator[](std::size_t i) const {
         const std::uint32_t s = slots_[i];

@@ -19,12 +19,13 @@ namespace kerf::eval {
 
 class ModuleCall {
 public:
-    ModuleCall(Evaluator& ev, const ast::Stmt& st, Scope& scope, Args args)
-        : st(st), scope(scope), args(std::move(args)), ev_(ev) {}
+    // `args` outlives the call (the caller's, not copied: it holds 18 values inline).
+    ModuleCall(Evaluator& ev, const ast::Stmt& st, Scope& scope, const Args& args)
+        : st(st), scope(scope), args(args), ev_(ev) {}
 
     const ast::Stmt& st;
     Scope& scope;
-    const Args args;
+    const Args& args;
 
     // Evaluates the statement's block of children (their nodes go on the
     // builder's pending stack).

@@ -1,6 +1,7 @@
 // One sorted table over the module groups, the dispatch of a call to its
 // entry, and the matching of arguments to parameters.
 #include <algorithm>
+#include <stdexcept>
 
 #include "interpreter/modules/args.hpp"
 #include "interpreter/modules/module_call.hpp"
@@ -9,9 +10,11 @@ namespace kerf::eval {
 
 namespace {
 
-Args match_args(Evaluator& ev, const ModuleEntry& e, const ast::Stmt& st, Scope& s) {
+// Fills a (fresh) for a call of e.
+void match_args(Evaluator& ev, const ModuleEntry& e, const ast::Stmt& st, Scope& s, Args& a) {
     const std::size_t n = e.params.size();
-    Args a{e.name, &st, std::vector<Value>(n), std::vector<bool>(n, false), 0, false, {}};
+    a.callee = e.name;
+    a.call = &st;
     std::size_t positional = 0;
     for (const ast::Binding& b : st.args) {
         std::size_t i = n;
@@ -48,7 +51,6 @@ Args match_args(Evaluator& ev, const ModuleEntry& e, const ast::Stmt& st, Scope&
         a.given[i] = true;
         a.values[i] = b.value ? ev.eval(*b.value, s) : Value();
     }
-    return a;
 }
 
 }  // namespace
@@ -60,7 +62,10 @@ const std::vector<const ModuleEntry*>& module_table() {
         for (auto group : {solid_modules(), transform_modules(), appearance_modules(), setup_modules(), shape2d_modules(),
                            revolve_modules(), text_modules(), hull_modules(), offset_modules(), projection_modules(),
                            surface_modules()})
-            for (const ModuleEntry& e : group) all.push_back(&e);
+            for (const ModuleEntry& e : group) {
+                if (e.params.size() > Args::kMaxParams) throw std::logic_error(std::string("built-in module ") + e.name + ": more parameters than Args holds");
+                all.push_back(&e);
+            }
         std::sort(all.begin(), all.end(),
                   [](const ModuleEntry* a, const ModuleEntry* b) { return std::string_view(a->name) < b->name; });
         return all;
@@ -93,7 +98,8 @@ void Evaluator::builtin_module(const ModuleEntry& entry, const ast::Stmt& st, Sc
     const ModuleEntry* e = &entry;
     if (e->kind == ModuleKind::Setup && !top_level)
         throw SourceError(st.loc, st.name + " is only allowed at the top level");
-    Args a = match_args(*this, *e, st, s);
+    Args a;
+    match_args(*this, *e, st, s, a);
     if (e->kind != ModuleKind::Operation && !st.body.empty()) {
         if (!lenient_) arg_error(a, e->kind == ModuleKind::Solid ? "a solid takes no children" : "takes no children");
         warn(st.loc, std::string("module ") + e->name + "() does not support child modules");  // ignored, as OpenSCAD
@@ -101,7 +107,7 @@ void Evaluator::builtin_module(const ModuleEntry& entry, const ast::Stmt& st, Sc
     // The call's `$` arguments hold for it and its children, as in OpenSCAD.
     DynRestore restore(dyn_);
     for (DynVar& d : a.dollars) dyn_.push_back(std::move(d));
-    ModuleCall call(*this, st, s, std::move(a));
+    ModuleCall call(*this, st, s, a);
     if (lenient_) return builtin_module_lenient(*e, call);
     e->handler(call);
 }
