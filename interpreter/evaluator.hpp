@@ -83,11 +83,12 @@ struct FacetVars {
 // (modules/module_call.hpp).
 struct Args {
     // The most parameters of any built-in module (material's); the table
-    // refuses more (modules/table.cpp). Inline, so a call allocates nothing.
+    // refuses more (modules/table.cpp). The values live in the caller's
+    // frame (ArgValues, modules/table.cpp), so a call allocates nothing.
     static constexpr std::size_t kMaxParams = 18;
     const char* callee;
     const ast::Stmt* call;
-    std::array<Value, kMaxParams> values{};
+    Value* values;  // one per parameter of the module
     std::array<bool, kMaxParams> given{};
     double fn = 0;  // a $fn given in the call itself (docs/openscad.md, "Facets")
     bool facet_args = false;  // a $fn, $fa or $fs given in the call

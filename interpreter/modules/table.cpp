@@ -1,6 +1,8 @@
 // One sorted table over the module groups, the dispatch of a call to its
 // entry, and the matching of arguments to parameters.
 #include <algorithm>
+#include <memory>
+#include <new>
 #include <stdexcept>
 
 #include "interpreter/modules/args.hpp"
@@ -10,7 +12,23 @@ namespace kerf::eval {
 
 namespace {
 
-// Fills a (fresh) for a call of e.
+// A call's argument values, as many as the module has parameters,
+// constructed in place: an array of kMaxParams values would construct and
+// destroy all 18 for every call.
+class ArgValues {
+public:
+    explicit ArgValues(std::size_t n) : n_(n) { std::uninitialized_default_construct_n(data(), n); }
+    ~ArgValues() { std::destroy_n(data(), n_); }
+    ArgValues(const ArgValues&) = delete;
+    ArgValues& operator=(const ArgValues&) = delete;
+    Value* data() { return std::launder(reinterpret_cast<Value*>(raw_)); }
+
+private:
+    alignas(Value) unsigned char raw_[Args::kMaxParams * sizeof(Value)];
+    std::size_t n_;
+};
+
+// Fills a (fresh, its values ArgValues of e) for a call of e.
 void match_args(Evaluator& ev, const ModuleEntry& e, const ast::Stmt& st, Scope& s, Args& a) {
     const std::size_t n = e.params.size();
     a.callee = e.name;
@@ -98,7 +116,9 @@ void Evaluator::builtin_module(const ModuleEntry& entry, const ast::Stmt& st, Sc
     const ModuleEntry* e = &entry;
     if (e->kind == ModuleKind::Setup && !top_level)
         throw SourceError(st.loc, st.name + " is only allowed at the top level");
+    ArgValues values(e->params.size());
     Args a;
+    a.values = values.data();
     match_args(*this, *e, st, s, a);
     if (e->kind != ModuleKind::Operation && !st.body.empty()) {
         if (!lenient_) arg_error(a, e->kind == ModuleKind::Solid ? "a solid takes no children" : "takes no children");

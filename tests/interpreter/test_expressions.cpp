@@ -20,6 +20,12 @@ TEST_CASE("arithmetic and precedence", "[expr]") {
     CHECK(value_of("10 - 4 - 3") == "3");
     CHECK(value_of("+5") == "5");
     CHECK(value_of("PI") == "3.14159");
+    // Numbers take the evaluator's short way (number_op, unary minus):
+    // the sign of zero survives it.
+    CHECK(value_of("1 / -0") == "-inf");
+    CHECK(value_of("1 / -(0 * 1)") == "-inf");
+    CHECK(value_of("1 / (0 * -1)") == "-inf");
+    CHECK(value_of("1 / +0") == "inf");
 }
 
 TEST_CASE("comparison and logic", "[expr]") {

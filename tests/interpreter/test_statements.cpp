@@ -69,3 +69,32 @@ TEST_CASE("a run reports at most 20 independent errors", "[statements]") {
         CHECK(e.reported.size() == 1);
     }
 }
+
+// Evaluator::instantiate caches what a statement's name calls
+// (ast::Stmt::dispatch): a control statement or a built-in module, found on
+// the first pass. User modules are still looked up first on every pass.
+TEST_CASE("a statement run many times calls what its name means on every pass", "[statements]") {
+    // A user module named after a built-in wins on every pass of a loop.
+    CHECK(shape_of("module cube(s) sphere(s);\nfor (i = [0:2]) cube(1);") == "U(U(sphere,sphere,sphere))");
+    // The same module body run from a loop: its built-in call, every time.
+    CHECK(shape_of("module m() cube();\nfor (i = [0:1]) m();") == "U(U(box,box))");
+    // Control statements keep their meaning pass after pass.
+    CHECK(echoes("module m(k) { for (j = [0:k]) echo(j); }\nfor (i = [0:1]) m(i);") ==
+          std::vector<std::string>{"ECHO: 0", "ECHO: 0", "ECHO: 1"});
+    CHECK(shape_of("for (i = [0:1]) intersection_for (j = [0:1]) { cube(); sphere(); }") ==
+          "U(U(I(U(box,sphere),U(box,sphere)),I(U(box,sphere),U(box,sphere))))");
+    CHECK(echoes("for (i = [0:1]) let (a = i * 2) echo(a);") == std::vector<std::string>{"ECHO: 0", "ECHO: 2"});
+    CHECK(error_of("for (i = [0:1]) nosuch();") == "test.sdl:1:17: error: unknown module 'nosuch'");
+}
+
+// Built-in modules' arguments are matched into values held in the call's
+// frame (modules/table.cpp, ArgValues): every parameter slot, the last of
+// the module with the most parameters included.
+TEST_CASE("a built-in module's arguments reach every parameter", "[statements]") {
+    CHECK(shape_of("translate(v = [1, 2, 3]) cube(size = 2, center = true);") == "U(T(box))");
+    CHECK(error_of("cube(1, true, 3);") == "test.sdl:1:15: error: too many arguments for 'cube' (takes 2)");
+    CHECK(error_of("cube(size = 1, size = 2);") == "test.sdl:1:16: error: argument 'size' given twice to 'cube'");
+    // material's 18th parameter, by name.
+    CHECK(error_of("material(interpolation = 3) cube();") ==
+          "test.sdl:1:1: error: material: interpolation must be \"bilinear\" or \"nearest\"");
+}
