@@ -550,7 +550,6 @@ void Evaluator::stmt_for(const ast::Stmt& st, std::size_t k, Scope& loop, Scope&
 
 // ---------------------------------------------------------------- statements
 
-
 void Evaluator::instantiate(const ast::Stmt& st, Scope& s, bool top_level) {
     const std::string& name = st.name;
     std::size_t mark = out_.mark();
