@@ -4,6 +4,7 @@
 // are done, moves that run into child_refs in one go. So nodes come before
 // their parents and no node owns a heap-allocated child list.
 #pragma once
+#include <new>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -32,7 +33,15 @@ public:
     std::size_t max_nodes = 0, max_matrices = 0;
     template <class V>
     static void grow(V& v, std::size_t max) {
-        if (v.size() == v.capacity() && v.size() >= 16384 && max > v.capacity()) reserve_huge(v, max);
+        if (v.size() == v.capacity() && v.size() >= 16384 && max > v.capacity()) {
+            // The whole reservation counts against RLIMIT_DATA (the memory
+            // cap): refused, the array grows as any vector does and only a
+            // scene that really needs the memory runs out of it.
+            try {
+                reserve_huge(v, max);
+            } catch (const std::bad_alloc&) {
+            }
+        }
     }
     template <class T>
     static void reserve_huge(std::vector<T>& v, std::size_t n) { csg::reserve_huge(v, n); }

@@ -22,6 +22,8 @@ public:
     // `args` outlives the call (the caller's, not copied: it holds 18 values inline).
     ModuleCall(Evaluator& ev, const ast::Stmt& st, Scope& scope, const Args& args)
         : st(st), scope(scope), args(args), ev_(ev) {}
+    // A temporary Args would dangle once the constructor returns.
+    ModuleCall(Evaluator&, const ast::Stmt&, Scope&, Args&&) = delete;
 
     const ast::Stmt& st;
     Scope& scope;

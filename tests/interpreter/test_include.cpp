@@ -117,3 +117,18 @@ TEST_CASE("defines (-D) override top-level bindings", "[include]") {
     CHECK(kerf::test::echoes("v = 1;\nmodule m() { v = 2; echo(v); }\nm();\necho(v);", opt) ==
           std::vector<std::string>{"ECHO: 2", "ECHO: 5"});
 }
+
+// A file included twice is parsed once and its statements shared
+// (ast::Stmt::dispatch caches what a name calls): the cache must hold the
+// name's meaning, never the module it resolved to. x.sdl's cube() is the
+// user's where main.sdl defines one, the built-in inside y.sdl.
+TEST_CASE("a shared included statement resolves its module in each scope", "[include]") {
+    TempTree t;
+    t.write("x.sdl", "module m() cube();\n");
+    t.write("y.sdl", "include <x.sdl>\nmodule n() m();\n");
+    std::string main = t.write("main.sdl", "module cube() sphere();\ninclude <x.sdl>\nuse <y.sdl>\nm();\nn();\n");
+    kerf::EvalOptions opt;
+    opt.echo = [](const std::string&) {};
+    auto g = kerf::evaluate_file(main, opt).graph;
+    CHECK(kerf::test::shape(g, g.root) == "U(sphere,box)");
+}
