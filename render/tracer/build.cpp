@@ -319,6 +319,10 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
         impl_->build_apexes();
     }
     impl_->float_rays = impl_->top.bvh != nullptr || impl_->ball_bvh != nullptr;
+    impl_->bare_spheres = !use_float && impl_->top.always.empty() && impl_->top.balls.size() == impl_->top.items.size() &&
+                          std::all_of(impl_->top.items.begin(), impl_->top.items.end(), [&](std::uint32_t u) {
+                              return scene.nodes[u].op == Op::Leaf && scene.leaves[scene.nodes[u].first].kind == csg::PrimKind::Sphere;
+                          });
 }
 
 CsgTracer::~CsgTracer() = default;

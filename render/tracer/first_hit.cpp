@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "render/tracer/ball_chords.hpp"
+#include "render/tracer/bare_spheres.hpp"
 
 namespace kerf::render {
 
@@ -137,6 +138,15 @@ void visit_cone(TopContext& ctx, const RayCone& cone) {
     float tfar = std::numeric_limits<float>::infinity();  // (no Embree ray to shrink)
     const Apex& ap = ctx.state->impl->apexes[cone.apex];
     const Apex::AtP* at = !ap.at_p.empty() && ctx.state->o == ap.p ? ap.at_p.data() : nullptr;
+    if (ctx.state->impl->bare_spheres) {  // bare_spheres.hpp: the same tests in locals
+        Span entry;
+        for (const ConeUnit& u : cone.units) {
+            if (u.key > ctx.best * len * (1 + 1e-9)) break;
+            if (bare_sphere_entry(*ctx.state, u.item, ctx.accel->items[u.item], ctx.tnear, ctx.best, entry))
+                take_entry(ctx, u.item, entry);
+        }
+        return;
+    }
     for (const ConeUnit& u : cone.units) {
         if (u.key > std::min(ctx.best, ctx.ub) * len * (1 + 1e-9)) break;
         visit_unit(ctx, u.item, tfar, at ? at + u.j : nullptr);

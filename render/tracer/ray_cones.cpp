@@ -100,7 +100,7 @@ const RayCone* find_cone(const RayState& st, std::uint32_t a, const glm::dvec3& 
     RayCone* cones = rc.cones[0];
     int& last = rc.last[0][a];
     if (holds(cones[last])) return &cones[last];
-    for (int i = 0; i < RayCones::kSlots; ++i)
+    for (int i = 0; i < RayCones::kScan; ++i)
         if (holds(cones[i])) {
             last = i;
             return &cones[i];
@@ -108,7 +108,7 @@ const RayCone* find_cone(const RayState& st, std::uint32_t a, const glm::dvec3& 
     int& next = rc.next[0];
     RayCone& c = cones[next];
     last = next;
-    next = (next + 1) % RayCones::kSlots;
+    next = (next + 1) % RayCones::kScan;
     build_cone(st, a, 0, dir / glm::length(dir), nullptr, c);
     ++rc.built;
     return holds(c) ? &c : nullptr;  // (a zero direction: no cone)
@@ -118,6 +118,12 @@ const RayCone* find_cone(const RayState& st, std::uint32_t a, const glm::dvec3& 
 std::int64_t floor_int(double x) {
     const std::int64_t i = std::int64_t(x);
     return double(i) > x ? i - 1 : i;
+}
+
+// The slot of cell (u, v) of apex a's grid (RayCones): neighbouring cells
+// never share one, and a 16×16 patch of them stays.
+int cell_slot(std::uint32_t a, std::int64_t u, std::int64_t v) {
+    return int((std::uint64_t(u) & 15) | (std::uint64_t(v) & 15) << 4 | std::uint64_t(a & 1) << 8);
 }
 
 // Two levels: the cone of `level` serving direction dir (|dir| = len) is
@@ -143,22 +149,12 @@ const RayCone* find_cell_cone(const RayState& st, std::uint32_t a, int level, co
     // A kept cone answers as a new one would (the same direction test), so
     // whether a ray takes a cone never depends on the thread's history.
     const auto fits = [&](const RayCone& c) { return glm::dot(dir, c.axis) >= need * len ? &c : nullptr; };
-    RayCone* cones = rc.cones[level];
-    int& last = rc.last[level][a];
-    if (is(cones[last])) return fits(cones[last]);
-    for (int i = 0; i < RayCones::kSlots; ++i)
-        if (is(cones[i])) {
-            last = i;
-            return fits(cones[i]);
-        }
+    RayCone& c = rc.cones[level][cell_slot(a, u, v)];
+    if (is(c)) return fits(c);
     const glm::dvec3 axis = glm::normalize(ap.e0 + ((double(u) + 0.5) * g) * ap.e1 + ((double(v) + 0.5) * g) * ap.e2);
     if (!(glm::dot(dir, axis) >= need * len)) return nullptr;
     const RayCone* from = level > 0 ? find_cell_cone(st, a, level - 1, axis, 1, ap.cos_sub[level]) : nullptr;
     if (level > 0 && !from) return nullptr;
-    int& next = rc.next[level];
-    RayCone& c = cones[next];
-    last = next;
-    next = (next + 1) % RayCones::kSlots;
     build_cone(st, a, level, axis, from, c);
     c.u = u;
     c.v = v;

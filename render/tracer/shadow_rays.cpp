@@ -10,6 +10,7 @@
 #include <limits>
 
 #include "render/tracer/ball_chords.hpp"
+#include "render/tracer/bare_spheres.hpp"
 
 namespace kerf::render {
 
@@ -245,6 +246,14 @@ bool CsgTracer::occluded(const TraceRay& ray, TraceScratch& scratch, const Depar
     // segment's start (a point of it is within (tfar - t)·|d| + rho of the light).
     if (const RayCone* cone = ray_cone(st, ray, false)) {
         const double seg = (ray.tfar - ray.tnear) * st.len * (1 + 1e-9);
+        if (impl_->bare_spheres && ctx.hollow == csg::kNone) {  // bare_spheres.hpp: the same tests in locals
+            for (const ConeUnit& u : cone->units) {
+                if (u.key > seg) break;
+                if (u.item != ctx.skip && bare_sphere_blocks(st, u.item, impl_->top.items[u.item], ray.tnear, ray.tfar))
+                    return true;
+            }
+            return false;
+        }
         for (const ConeUnit& u : cone->units) {
             if (u.key > seg) break;
             if (u.item != ctx.skip && item_blocks(ctx, u.item)) return true;
