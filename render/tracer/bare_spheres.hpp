@@ -1,7 +1,9 @@
 // Crowds of bare spheres (Impl::bare_spheres: every unit of the root a
-// sphere leaf, double path; the spheres_* lattices): a unit met in a ray
-// cone (ray_cones.hpp) is its ball test, its padded box and its leaf's
-// sphere test, in locals. The general visit (first_hit.cpp try_unit_entry,
+// sphere leaf, double path; the spheres_* lattices): a camera or shadow
+// ray in a ray cone (ray_cones.hpp) is served by bare_spheres.cpp without
+// the general query's set-up (no float Embree ray, no TopContext), and
+// each unit the cone lists is its ball test, its padded box and its
+// leaf's sphere test, in locals. The general visit (first_hit.cpp try_unit_entry,
 // shadow_rays.cpp unit_blocks) reaches the same tests through spans(): the
 // node switch, the leaf-kind dispatch, a push onto the span stack and the
 // walk of what was pushed, about half of a camera ray's work in such a
@@ -59,5 +61,11 @@ namespace kerf::render {
     Span sp;
     return bare_sphere_span(st, node, a, b, sp) && std::min(sp.t1, b) - std::max(sp.t0, a) > st.eps;
 }
+
+// bare_spheres.cpp: CsgTracer::intersect and occluded for a ray of a cone
+// in a bare-sphere crowd (`skip`: the Departure's unit, or kNone); -1 when
+// the ray has no cone (the caller asks the general path), else the answer.
+int bare_first_hit(const CsgTracer::Impl& impl, const TraceRay& ray, TraceHit& hit, TraceScratch& scratch);
+int bare_occluded(const CsgTracer::Impl& impl, const TraceRay& ray, TraceScratch& scratch, std::uint32_t skip);
 
 }  // namespace kerf::render

@@ -138,15 +138,6 @@ void visit_cone(TopContext& ctx, const RayCone& cone) {
     float tfar = std::numeric_limits<float>::infinity();  // (no Embree ray to shrink)
     const Apex& ap = ctx.state->impl->apexes[cone.apex];
     const Apex::AtP* at = !ap.at_p.empty() && ctx.state->o == ap.p ? ap.at_p.data() : nullptr;
-    if (ctx.state->impl->bare_spheres) {  // bare_spheres.hpp: the same tests in locals
-        Span entry;
-        for (const ConeUnit& u : cone.units) {
-            if (u.key > ctx.best * len * (1 + 1e-9)) break;
-            if (bare_sphere_entry(*ctx.state, u.item, ctx.accel->items[u.item], ctx.tnear, ctx.best, entry))
-                take_entry(ctx, u.item, entry);
-        }
-        return;
-    }
     for (const ConeUnit& u : cone.units) {
         if (u.key > std::min(ctx.best, ctx.ub) * len * (1 + 1e-9)) break;
         visit_unit(ctx, u.item, tfar, at ? at + u.j : nullptr);
@@ -179,6 +170,8 @@ void top_ball_filter(const RTCFilterFunctionNArguments* args) {
 }
 
 bool CsgTracer::intersect(const TraceRay& ray, TraceHit& hit, TraceScratch& scratch) const {
+    if (impl_->bare_spheres)  // a crowd of bare spheres: its cones' own loop (bare_spheres.hpp)
+        if (const int r = bare_first_hit(*impl_, ray, hit, scratch); r >= 0) return r == 1;
     RayState st;
     if (!make_state(st, impl_.get(), ray, scratch)) return false;
     // A holed plate alone (one unit, a grid_minus difference): its entry

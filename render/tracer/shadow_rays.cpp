@@ -226,6 +226,10 @@ bool CsgTracer::occluded(const TraceRay& ray, TraceScratch& scratch, const Depar
             16 * (impl_->node_eps[node] + impl_->eps_per_distance * (std::abs(ray.o.x) + std::abs(ray.o.y) + std::abs(ray.o.z)));
         if (stays_inside(*impl_, ray.o, ray.d, 1.0 / ray.d, margin, from->into, node, ray.tnear, ray.tfar)) return false;
     }
+    // A crowd of bare spheres (no unit is a hollow): its cones' own loop
+    // (bare_spheres.hpp).
+    if (impl_->bare_spheres && !(from && from->hollow != csg::kNone))
+        if (const int r = bare_occluded(*impl_, ray, scratch, departs ? from->unit : csg::kNone); r >= 0) return r == 1;
     RayState st;
     if (!make_state(st, impl_.get(), ray, scratch)) return false;
     TopContext ctx(st, ray);
@@ -246,14 +250,6 @@ bool CsgTracer::occluded(const TraceRay& ray, TraceScratch& scratch, const Depar
     // segment's start (a point of it is within (tfar - t)·|d| + rho of the light).
     if (const RayCone* cone = ray_cone(st, ray, false)) {
         const double seg = (ray.tfar - ray.tnear) * st.len * (1 + 1e-9);
-        if (impl_->bare_spheres && ctx.hollow == csg::kNone) {  // bare_spheres.hpp: the same tests in locals
-            for (const ConeUnit& u : cone->units) {
-                if (u.key > seg) break;
-                if (u.item != ctx.skip && bare_sphere_blocks(st, u.item, impl_->top.items[u.item], ray.tnear, ray.tfar))
-                    return true;
-            }
-            return false;
-        }
         for (const ConeUnit& u : cone->units) {
             if (u.key > seg) break;
             if (u.item != ctx.skip && item_blocks(ctx, u.item)) return true;

@@ -88,18 +88,11 @@ Ball node_ball(const csg::Scene& scene, std::uint32_t id, int depth) {
 }  // namespace
 
 std::vector<Ball> unit_balls(const csg::Scene& scene, const std::vector<std::uint32_t>& units,
-                             const std::vector<double>& pad) {
+                             const std::vector<double>& pad, bool leaves) {
     std::vector<Ball> out(units.size());
     bool any = false;
-    // A crowd of bare spheres (every unit a sphere leaf): their balls, though
-    // each repeats its leaf's own test, bring the crowd's machinery (tile
-    // culling by ball, ray cones, the ball BVH: README.md).
-    const bool bare = !units.empty() && std::all_of(units.begin(), units.end(), [&](std::uint32_t u) {
-        const csg::Node& n = scene.nodes[u];
-        return n.op == csg::Op::Leaf && scene.leaves[n.first].kind == csg::PrimKind::Sphere;
-    });
     for (std::size_t i = 0; i < units.size(); ++i) {
-        if (scene.nodes[units[i]].op == csg::Op::Leaf && !bare) continue;
+        if (scene.nodes[units[i]].op == csg::Op::Leaf && !leaves) continue;
         out[i] = node_ball(scene, units[i], 0);
         if (out[i].r < 0 || !std::isfinite(out[i].r) || !std::isfinite(glm::dot(out[i].c, out[i].c))) {
             out[i] = {};
