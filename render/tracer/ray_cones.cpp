@@ -136,21 +136,16 @@ int cell_slot(std::uint32_t a, std::int64_t u, std::int64_t v) {
 // lies far off the plane's centre (or behind it): then the ray takes the
 // ball BVH. A narrow cone is listed from the wide cone of its axis' cell
 // (it lies in that one: find_cone's need for level 0 is cos_sub).
-const RayCone* find_cell_cone(const RayState& st, std::uint32_t a, int level, const glm::dvec3& dir, double len,
-                              double need) {
+inline const RayCone* find_cell_cone(const RayState& st, std::uint32_t a, int level, const glm::dvec3& dir,
+                                     double len, double need);
+
+// find_cell_cone's cell (u, v) not kept in its slot `c`: built there (out of
+// line: the kept cone, most rays' case, then needs no frame).
+[[gnu::noinline]] const RayCone* build_cell_cone(const RayState& st, std::uint32_t a, int level,
+                                                 const glm::dvec3& dir, double len, double need, std::int64_t u,
+                                                 std::int64_t v, RayCone& c) {
     const Apex& ap = st.impl->apexes[a];
-    const double w = glm::dot(dir, ap.e0), g = ap.grid[level];
-    if (!(w > 0.5 * len)) return nullptr;
-    const double inv = 1 / (w * g), x = glm::dot(dir, ap.e1) * inv, y = glm::dot(dir, ap.e2) * inv;
-    if (!(std::abs(x) < 1e9 && std::abs(y) < 1e9)) return nullptr;
-    const std::int64_t u = floor_int(x), v = floor_int(y);
-    RayCones& rc = st.scratch->cones;
-    const auto is = [&](const RayCone& c) { return c.owner == st.impl->id && c.apex == a && c.u == u && c.v == v; };
-    // A kept cone answers as a new one would (the same direction test), so
-    // whether a ray takes a cone never depends on the thread's history.
-    const auto fits = [&](const RayCone& c) { return glm::dot(dir, c.axis) >= need * len ? &c : nullptr; };
-    RayCone& c = rc.cones[level][cell_slot(a, u, v)];
-    if (is(c)) return fits(c);
+    const double g = ap.grid[level];
     const glm::dvec3 axis = glm::normalize(ap.e0 + ((double(u) + 0.5) * g) * ap.e1 + ((double(v) + 0.5) * g) * ap.e2);
     if (!(glm::dot(dir, axis) >= need * len)) return nullptr;
     const RayCone* from = level > 0 ? find_cell_cone(st, a, level - 1, axis, 1, ap.cos_sub[level]) : nullptr;
@@ -158,8 +153,24 @@ const RayCone* find_cell_cone(const RayState& st, std::uint32_t a, int level, co
     build_cone(st, a, level, axis, from, c);
     c.u = u;
     c.v = v;
-    ++rc.built;
+    ++st.scratch->cones.built;
     return &c;
+}
+
+inline const RayCone* find_cell_cone(const RayState& st, std::uint32_t a, int level, const glm::dvec3& dir,
+                                     double len, double need) {
+    const Apex& ap = st.impl->apexes[a];
+    const double w = glm::dot(dir, ap.e0), g = ap.grid[level];
+    if (!(w > 0.5 * len)) return nullptr;
+    const double inv = 1 / (w * g), x = glm::dot(dir, ap.e1) * inv, y = glm::dot(dir, ap.e2) * inv;
+    if (!(std::abs(x) < 1e9 && std::abs(y) < 1e9)) return nullptr;
+    const std::int64_t u = floor_int(x), v = floor_int(y);
+    RayCone& c = st.scratch->cones.cones[level][cell_slot(a, u, v)];
+    // A kept cone answers as a new one would (the same direction test), so
+    // whether a ray takes a cone never depends on the thread's history.
+    if (c.owner == st.impl->id && c.apex == a && c.u == u && c.v == v)
+        return glm::dot(dir, c.axis) >= need * len ? &c : nullptr;
+    return build_cell_cone(st, a, level, dir, len, need, u, v, c);
 }
 
 // The cone of the apex's finest level holding a ray of direction dir.
