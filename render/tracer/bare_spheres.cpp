@@ -9,34 +9,9 @@
 
 namespace kerf::render {
 
-namespace {
-
-// make_state's numbers for the fields the cone loop reads; false when the
-// ray's line misses `reach` (then the general query answers "nothing").
-[[gnu::always_inline]] inline bool lean_state(RayState& st, const CsgTracer::Impl& impl, const TraceRay& ray,
-                                              TraceScratch& scratch) {
-    st.invd = 1.0 / ray.d;
-    double enter = -kInf, leave = kInf;
-    if (!slab_clip(impl.reach, ray.o, st.invd, enter, leave)) return false;
-    st.impl = &impl;
-    st.o = ray.o;
-    st.d = ray.d;
-    st.enter = enter;
-    st.leave = leave;
-    st.len = glm::length(ray.d);
-    st.inv_len = 1 / st.len;
-    st.float_ray = false;
-    st.eps_ray = impl.eps_per_distance * glm::length(ray.o);
-    st.eps = st.eps_ray * st.inv_len;
-    st.scratch = &scratch;
-    return true;
-}
-
-}  // namespace
-
 int bare_first_hit(const CsgTracer::Impl& impl, const TraceRay& ray, TraceHit& hit, TraceScratch& scratch) {
     RayState st;
-    if (!lean_state(st, impl, ray, scratch)) return 0;
+    if (!make_state(st, &impl, ray, scratch, false)) return 0;
     const RayCone* cone = ray_cone(st, ray, true);
     if (!cone) return -1;
     double best = ray.tfar;
@@ -59,7 +34,7 @@ int bare_first_hit(const CsgTracer::Impl& impl, const TraceRay& ray, TraceHit& h
 
 int bare_occluded(const CsgTracer::Impl& impl, const TraceRay& ray, TraceScratch& scratch, std::uint32_t skip) {
     RayState st;
-    if (!lean_state(st, impl, ray, scratch)) return 0;
+    if (!make_state(st, &impl, ray, scratch, false)) return 0;
     const RayCone* cone = ray_cone(st, ray, false);
     if (!cone) return -1;
     // A point of the segment is within (tfar - t)·|d| + rho of the light.

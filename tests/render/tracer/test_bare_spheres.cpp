@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "render/tracer/tracer.hpp"
+#include "tests/render/grazing_rays.hpp"
 #include "tests/render/random_csg.hpp"
 #include "tests/render/scene_builder.hpp"
 
@@ -28,11 +29,6 @@ using csg::Op;
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-struct Ball {
-    glm::dvec3 c;
-    double r;
-};
 
 struct Crowd {
     csg::Scene scene;
@@ -76,17 +72,6 @@ Crowd bare_crowd(RandomCsg& g, const glm::dvec3& at, double size, int n, bool la
     return c;
 }
 
-// A direction from p towards ball b: at a point within ±band of its surface,
-// or (tangent) along a tangent tilted in or out by up to band / 1000.
-glm::dvec3 aim(RandomCsg& g, const glm::dvec3& p, const Ball& b, double band, bool tangent) {
-    const glm::dvec3 u = glm::normalize(glm::dvec3(g.uni(-1, 1), g.uni(-1, 1), g.uni(-1, 1)) + 1e-3);
-    if (!tangent) return glm::normalize(b.c + g.uni(1 - band, 1 + band) * b.r * u - p);
-    const glm::dvec3 w = b.c - p;
-    const double dw = glm::length(w), beta = std::asin(b.r / dw) * (1 + 1e-3 * g.uni(-band, band));
-    const glm::dvec3 e = glm::normalize(u - glm::dot(u, w) / (dw * dw) * w);
-    return std::cos(beta) * (w / dw) + std::sin(beta) * e;
-}
-
 struct Result {
     int hits = 0, shadows = 0, departures = 0, twin_hits = 0;
     std::uint64_t cones = 0;
@@ -111,17 +96,8 @@ Result check(std::uint64_t seed, const glm::dvec3& at, double size, int n, bool 
         const glm::dvec3 d = size * aim(g, cam, b, band, i % 2 == 1 && !use_float);
         const render::TraceRay ray{cam, d, 0, kInf};
         render::TraceScratch fresh;
-        render::TraceHit hit, hit2;
-        const bool found = tracer.intersect(ray, hit, fresh);
-        const std::uint64_t tests = kept.counters.interval_tests;
-        const bool found2 = tracer.intersect(ray, hit2, kept);
-        CHECK(found == found2);
-        CHECK((found ? hit.t : kInf) == (found2 ? hit2.t : kInf));
-        CHECK(fresh.counters.interval_tests == kept.counters.interval_tests - tests);
-        {
-            INFO("camera ray entry " << (found ? hit.t : kInf));
-            CHECK(is_first_entry(s, ray.o, ray.d, found ? hit.t : kInf, 30, h));
-        }
+        render::TraceHit hit;
+        const bool found = camera_ray_agrees(s, tracer, ray, fresh, kept, 30, h, &hit);
         res.hits += found;
         if (found) {
             // Ties go by unit index: never the later of two coincident units.
@@ -147,17 +123,11 @@ Result check(std::uint64_t seed, const glm::dvec3& at, double size, int n, bool 
         }
         // A shadow ray from a point near ball b (outside the solid) to the
         // light: blocked exactly when the first entry comes before the light.
-        const glm::dvec3 ds = -aim(g, light, b, band, i % 2 == 0 && !use_float);
-        const glm::dvec3 o = light - size * g.uni(8, 20) * ds;
-        if (csg_contains(s, o)) continue;
-        const double dist = glm::length(light - o);
-        const glm::dvec3 dir = (light - o) / dist;
-        render::TraceHit e;
-        const double te = tracer.intersect(render::TraceRay{o, dir, 0, kInf}, e, fresh) ? e.t : kInf;
-        INFO("shadow ray entry " << te << " light at " << dist);
-        CHECK(is_first_entry(s, o, dir, te, dist, h * size));
-        CHECK(tracer.occluded(render::TraceRay{o, dir, 0, dist}, kept) == (te < dist));
-        res.shadows += te < dist;
+        ShadowRay sr;
+        if (!shadow_ray(g, s, tracer, light, b, band, i % 2 == 0 && !use_float, size, 8, 20, h * size, fresh, sr))
+            continue;
+        CHECK(tracer.occluded(render::TraceRay{sr.o, sr.dir, 0, sr.dist}, kept) == (sr.te < sr.dist));
+        res.shadows += sr.te < sr.dist;
     }
     res.cones = kept.cones.built;
     return res;
