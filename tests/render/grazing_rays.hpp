@@ -1,6 +1,7 @@
 // Rays that graze spheres, for the tracer's oracle tests of crowds (ray
 // cones, bare spheres): a ball to aim at, a direction at it that meets its
-// surface within a band or runs tangent to it, a camera ray's check and a shadow ray with its oracle entry.
+// surface within a band or runs tangent to it, a camera ray's check, and a
+// shadow ray with its first entry checked by point membership.
 #pragma once
 #include <catch2/catch.hpp>
 
