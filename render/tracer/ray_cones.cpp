@@ -91,7 +91,7 @@ void build_cone(const RayState& st, std::uint32_t a, int level, const glm::dvec3
 // The thread's cone of apex `a` and `level` whose axis lies within the angle
 // of cosine `need` of dir (|dir| = len), built (over the oldest of that
 // level) when none does (one level).
-const RayCone* find_cone(const RayState& st, std::uint32_t a, const glm::dvec3& dir, double need) {
+[[gnu::noinline]] const RayCone* find_cone(const RayState& st, std::uint32_t a, const glm::dvec3& dir, double need) {
     RayCones& rc = st.scratch->cones;
     const double need_len = need * st.len;
     const auto holds = [&](const RayCone& c) {
@@ -174,7 +174,7 @@ inline const RayCone* find_cell_cone(const RayState& st, std::uint32_t a, int le
 }
 
 // The cone of the apex's finest level holding a ray of direction dir.
-const RayCone* ray_cone_around(const RayState& st, std::uint32_t a, const glm::dvec3& dir) {
+[[gnu::always_inline]] inline const RayCone* ray_cone_around(const RayState& st, std::uint32_t a, const glm::dvec3& dir) {
     const Apex& ap = st.impl->apexes[a];
     if (ap.levels == 1) return find_cone(st, a, dir, ap.cos_in[0]);
     return find_cell_cone(st, a, ap.levels - 1, dir, st.len, ap.cos_in[ap.levels - 1]);
