@@ -174,6 +174,9 @@ struct CsgTracer::Impl {
     // The camera's and the point lights' positions (ray_cones.hpp), when
     // every unit has a ball and they are few; else empty.
     std::vector<Apex> apexes;
+    // Every unit a sphere leaf with a ball, on the double path: a cone's
+    // units are visited in locals (bare_spheres.hpp).
+    bool bare_spheres = false;
     // One level of cones up to kMaxConeUnits units, two up to
     // kMaxTwoLevelUnits (ray_cones.hpp); beyond, the ball BVH alone (the
     // apexes' per-unit arrays grow with the units, and no scene was measured).

@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "render/tracer/ball_chords.hpp"
+#include "render/tracer/bare_spheres.hpp"
 
 namespace kerf::render {
 
@@ -169,6 +170,8 @@ void top_ball_filter(const RTCFilterFunctionNArguments* args) {
 }
 
 bool CsgTracer::intersect(const TraceRay& ray, TraceHit& hit, TraceScratch& scratch) const {
+    if (impl_->bare_spheres)  // a crowd of bare spheres: its cones' own loop (bare_spheres.hpp)
+        if (const int r = bare_first_hit(*impl_, ray, hit, scratch); r >= 0) return r == 1;
     RayState st;
     if (!make_state(st, impl_.get(), ray, scratch)) return false;
     // A holed plate alone (one unit, a grid_minus difference): its entry

@@ -91,7 +91,7 @@ void build_cone(const RayState& st, std::uint32_t a, int level, const glm::dvec3
 // The thread's cone of apex `a` and `level` whose axis lies within the angle
 // of cosine `need` of dir (|dir| = len), built (over the oldest of that
 // level) when none does (one level).
-const RayCone* find_cone(const RayState& st, std::uint32_t a, const glm::dvec3& dir, double need) {
+[[gnu::noinline]] const RayCone* find_cone(const RayState& st, std::uint32_t a, const glm::dvec3& dir, double need) {
     RayCones& rc = st.scratch->cones;
     const double need_len = need * st.len;
     const auto holds = [&](const RayCone& c) {
@@ -100,7 +100,7 @@ const RayCone* find_cone(const RayState& st, std::uint32_t a, const glm::dvec3& 
     RayCone* cones = rc.cones[0];
     int& last = rc.last[0][a];
     if (holds(cones[last])) return &cones[last];
-    for (int i = 0; i < RayCones::kSlots; ++i)
+    for (int i = 0; i < RayCones::kScan; ++i)
         if (holds(cones[i])) {
             last = i;
             return &cones[i];
@@ -108,7 +108,7 @@ const RayCone* find_cone(const RayState& st, std::uint32_t a, const glm::dvec3& 
     int& next = rc.next[0];
     RayCone& c = cones[next];
     last = next;
-    next = (next + 1) % RayCones::kSlots;
+    next = (next + 1) % RayCones::kScan;
     build_cone(st, a, 0, dir / glm::length(dir), nullptr, c);
     ++rc.built;
     return holds(c) ? &c : nullptr;  // (a zero direction: no cone)
@@ -118,6 +118,12 @@ const RayCone* find_cone(const RayState& st, std::uint32_t a, const glm::dvec3& 
 std::int64_t floor_int(double x) {
     const std::int64_t i = std::int64_t(x);
     return double(i) > x ? i - 1 : i;
+}
+
+// The slot of cell (u, v) of apex a's grid (RayCones): neighbouring cells
+// never share one, and a 16×16 patch of them stays.
+int cell_slot(std::uint32_t a, std::int64_t u, std::int64_t v) {
+    return int((std::uint64_t(u) & 15) | (std::uint64_t(v) & 15) << 4 | std::uint64_t(a & 1) << 8);
 }
 
 // Two levels: the cone of `level` serving direction dir (|dir| = len) is
@@ -130,44 +136,45 @@ std::int64_t floor_int(double x) {
 // lies far off the plane's centre (or behind it): then the ray takes the
 // ball BVH. A narrow cone is listed from the wide cone of its axis' cell
 // (it lies in that one: find_cone's need for level 0 is cos_sub).
-const RayCone* find_cell_cone(const RayState& st, std::uint32_t a, int level, const glm::dvec3& dir, double len,
-                              double need) {
+inline const RayCone* find_cell_cone(const RayState& st, std::uint32_t a, int level, const glm::dvec3& dir,
+                                     double len, double need);
+
+// find_cell_cone's cell (u, v) not kept in its slot `c`: built there (out of
+// line: the kept cone, most rays' case, then needs no frame).
+[[gnu::noinline]] const RayCone* build_cell_cone(const RayState& st, std::uint32_t a, int level,
+                                                 const glm::dvec3& dir, double len, double need, std::int64_t u,
+                                                 std::int64_t v, RayCone& c) {
+    const Apex& ap = st.impl->apexes[a];
+    const double g = ap.grid[level];
+    const glm::dvec3 axis = glm::normalize(ap.e0 + ((double(u) + 0.5) * g) * ap.e1 + ((double(v) + 0.5) * g) * ap.e2);
+    if (!(glm::dot(dir, axis) >= need * len)) return nullptr;
+    const RayCone* from = level > 0 ? find_cell_cone(st, a, level - 1, axis, 1, ap.cos_sub[level]) : nullptr;
+    if (level > 0 && !from) return nullptr;
+    build_cone(st, a, level, axis, from, c);
+    c.u = u;
+    c.v = v;
+    ++st.scratch->cones.built;
+    return &c;
+}
+
+inline const RayCone* find_cell_cone(const RayState& st, std::uint32_t a, int level, const glm::dvec3& dir,
+                                     double len, double need) {
     const Apex& ap = st.impl->apexes[a];
     const double w = glm::dot(dir, ap.e0), g = ap.grid[level];
     if (!(w > 0.5 * len)) return nullptr;
     const double inv = 1 / (w * g), x = glm::dot(dir, ap.e1) * inv, y = glm::dot(dir, ap.e2) * inv;
     if (!(std::abs(x) < 1e9 && std::abs(y) < 1e9)) return nullptr;
     const std::int64_t u = floor_int(x), v = floor_int(y);
-    RayCones& rc = st.scratch->cones;
-    const auto is = [&](const RayCone& c) { return c.owner == st.impl->id && c.apex == a && c.u == u && c.v == v; };
+    RayCone& c = st.scratch->cones.cones[level][cell_slot(a, u, v)];
     // A kept cone answers as a new one would (the same direction test), so
     // whether a ray takes a cone never depends on the thread's history.
-    const auto fits = [&](const RayCone& c) { return glm::dot(dir, c.axis) >= need * len ? &c : nullptr; };
-    RayCone* cones = rc.cones[level];
-    int& last = rc.last[level][a];
-    if (is(cones[last])) return fits(cones[last]);
-    for (int i = 0; i < RayCones::kSlots; ++i)
-        if (is(cones[i])) {
-            last = i;
-            return fits(cones[i]);
-        }
-    const glm::dvec3 axis = glm::normalize(ap.e0 + ((double(u) + 0.5) * g) * ap.e1 + ((double(v) + 0.5) * g) * ap.e2);
-    if (!(glm::dot(dir, axis) >= need * len)) return nullptr;
-    const RayCone* from = level > 0 ? find_cell_cone(st, a, level - 1, axis, 1, ap.cos_sub[level]) : nullptr;
-    if (level > 0 && !from) return nullptr;
-    int& next = rc.next[level];
-    RayCone& c = cones[next];
-    last = next;
-    next = (next + 1) % RayCones::kSlots;
-    build_cone(st, a, level, axis, from, c);
-    c.u = u;
-    c.v = v;
-    ++rc.built;
-    return &c;
+    if (c.owner == st.impl->id && c.apex == a && c.u == u && c.v == v)
+        return glm::dot(dir, c.axis) >= need * len ? &c : nullptr;
+    return build_cell_cone(st, a, level, dir, len, need, u, v, c);
 }
 
 // The cone of the apex's finest level holding a ray of direction dir.
-const RayCone* ray_cone_around(const RayState& st, std::uint32_t a, const glm::dvec3& dir) {
+[[gnu::always_inline]] inline const RayCone* ray_cone_around(const RayState& st, std::uint32_t a, const glm::dvec3& dir) {
     const Apex& ap = st.impl->apexes[a];
     if (ap.levels == 1) return find_cone(st, a, dir, ap.cos_in[0]);
     return find_cell_cone(st, a, ap.levels - 1, dir, st.len, ap.cos_in[ap.levels - 1]);

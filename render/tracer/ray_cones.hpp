@@ -84,9 +84,12 @@ struct RayCone {
 };
 
 // Per thread (in TraceScratch): the last few cones of each level, reused
-// round-robin.
+// round-robin (one level: the first kScan slots, scanned), or the grid
+// cells' cones (two levels), each in the slot of its cell's low bits and
+// its apex's parity (ray_cones.cpp, cell_slot): a 16×16 patch of cells
+// per apex stays, and a ray finds its cell's cone without a scan.
 struct RayCones {
-    static constexpr int kSlots = 16, kApexes = 8;
+    static constexpr int kSlots = 512, kScan = 16, kApexes = 8;
     RayCone cones[Apex::kLevels][kSlots];
     int last[Apex::kLevels][kApexes] = {}, next[Apex::kLevels] = {};  // per apex the cone its last ray used
     std::uint64_t built = 0;  // cones built (tests, tuning)

@@ -269,7 +269,10 @@ inline void float_ray_now(RayState& st) {
 // The float ray for Embree starts where the line enters `reach` (or at o if
 // that is behind), relative to the BVHs' frame: its rounding then follows
 // the scene's extent, not the camera's distance or the scene's offset.
-[[gnu::always_inline]] inline bool make_state(RayState& st, const CsgTracer::Impl* impl, const TraceRay& ray, TraceScratch& scratch) {
+// `embree`: false for a query that never asks Embree (bare_spheres.cpp):
+// no float ray even where the scene's queries need one.
+[[gnu::always_inline]] inline bool make_state(RayState& st, const CsgTracer::Impl* impl, const TraceRay& ray,
+                                              TraceScratch& scratch, bool embree = true) {
     st.invd = 1.0 / ray.d;  // ±inf on axes the ray is parallel to
     double enter = -kInf, leave = kInf;
     if (!slab_clip(impl->reach, ray.o, st.invd, enter, leave)) return false;
@@ -283,7 +286,7 @@ inline void float_ray_now(RayState& st) {
     // (A query through a node's own BVH sets them on first use
     // (float_ray_now); a scene with a BVH of units needs them for every ray.)
     st.float_ray = false;
-    if (impl->float_rays) float_ray_now(st);
+    if (embree && impl->float_rays) float_ray_now(st);
     // Round-off of t also grows with the origin's own magnitude (far cameras).
     st.eps_ray = impl->eps_per_distance * glm::length(ray.o);
     st.eps = st.eps_ray * st.inv_len;  // until enter_unit

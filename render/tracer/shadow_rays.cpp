@@ -10,6 +10,7 @@
 #include <limits>
 
 #include "render/tracer/ball_chords.hpp"
+#include "render/tracer/bare_spheres.hpp"
 
 namespace kerf::render {
 
@@ -225,6 +226,10 @@ bool CsgTracer::occluded(const TraceRay& ray, TraceScratch& scratch, const Depar
             16 * (impl_->node_eps[node] + impl_->eps_per_distance * (std::abs(ray.o.x) + std::abs(ray.o.y) + std::abs(ray.o.z)));
         if (stays_inside(*impl_, ray.o, ray.d, 1.0 / ray.d, margin, from->into, node, ray.tnear, ray.tfar)) return false;
     }
+    // A crowd of bare spheres (no unit is a hollow): its cones' own loop
+    // (bare_spheres.hpp).
+    if (impl_->bare_spheres && !(from && from->hollow != csg::kNone))
+        if (const int r = bare_occluded(*impl_, ray, scratch, departs ? from->unit : csg::kNone); r >= 0) return r == 1;
     RayState st;
     if (!make_state(st, impl_.get(), ray, scratch)) return false;
     TopContext ctx(st, ray);

@@ -88,11 +88,11 @@ Ball node_ball(const csg::Scene& scene, std::uint32_t id, int depth) {
 }  // namespace
 
 std::vector<Ball> unit_balls(const csg::Scene& scene, const std::vector<std::uint32_t>& units,
-                             const std::vector<double>& pad) {
+                             const std::vector<double>& pad, bool leaves) {
     std::vector<Ball> out(units.size());
     bool any = false;
     for (std::size_t i = 0; i < units.size(); ++i) {
-        if (scene.nodes[units[i]].op == csg::Op::Leaf) continue;
+        if (scene.nodes[units[i]].op == csg::Op::Leaf && !leaves) continue;
         out[i] = node_ball(scene, units[i], 0);
         if (out[i].r < 0 || !std::isfinite(out[i].r) || !std::isfinite(glm::dot(out[i].c, out[i].c))) {
             out[i] = {};

@@ -49,8 +49,10 @@ struct SphereMinus {
 // Per unit (in `units` order), padded by `pad[unit]` (world length). Empty
 // when no unit has a ball, or only leaves do (a leaf's ball test would
 // duplicate its own interval test): scenes without such units pay nothing.
+// `leaves`: sphere leaves get their balls too (a crowd of bare spheres,
+// build.cpp: the balls bring tile culling and ray cones).
 std::vector<Ball> unit_balls(const csg::Scene& scene, const std::vector<std::uint32_t>& units,
-                             const std::vector<double>& pad);
+                             const std::vector<double>& pad, bool leaves = false);
 
 // Per unit (in `units` order) its SphereMinus, with the subtrahends appended
 // to `subs`; balls shrunk (inner) or grown (outer) by the same padding as

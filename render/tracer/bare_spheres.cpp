@@ -1,0 +1,49 @@
+// The queries of a bare-sphere crowd's cone rays (bare_spheres.hpp). Each
+// answers as CsgTracer::intersect / occluded do for the same ray: the same
+// early out where the line misses `reach` (make_state's slab test), the
+// same cone (ray_cone), its units in the same order with the same stop,
+// and per unit the tests of bare_spheres.hpp; ties go by unit index
+// (first_hit.cpp, take_entry). Only the set-up the general query makes
+// for Embree (the float ray, the Embree context) is left out.
+#include "render/tracer/bare_spheres.hpp"
+
+namespace kerf::render {
+
+int bare_first_hit(const CsgTracer::Impl& impl, const TraceRay& ray, TraceHit& hit, TraceScratch& scratch) {
+    RayState st;
+    if (!make_state(st, &impl, ray, scratch, false)) return 0;
+    const RayCone* cone = ray_cone(st, ray, true);
+    if (!cone) return -1;
+    double best = ray.tfar;
+    std::uint32_t best_unit = 0;
+    bool found = false;
+    Span entry;
+    const double stop = st.len * (1 + 1e-9);
+    for (const ConeUnit& u : cone->units) {
+        if (u.key > best * stop) break;
+        if (!bare_sphere_entry(st, u.item, impl.top.items[u.item], ray.tnear, best, entry)) continue;
+        if (!(entry.t0 < best || (entry.t0 == best && found && u.item < best_unit))) continue;
+        best = entry.t0;
+        best_unit = u.item;
+        hit.surface = entry.e0;
+        found = true;
+    }
+    if (found) hit.t = best;
+    return found ? 1 : 0;
+}
+
+int bare_occluded(const CsgTracer::Impl& impl, const TraceRay& ray, TraceScratch& scratch, std::uint32_t skip) {
+    RayState st;
+    if (!make_state(st, &impl, ray, scratch, false)) return 0;
+    const RayCone* cone = ray_cone(st, ray, false);
+    if (!cone) return -1;
+    // A point of the segment is within (tfar - t)·|d| + rho of the light.
+    const double seg = (ray.tfar - ray.tnear) * st.len * (1 + 1e-9);
+    for (const ConeUnit& u : cone->units) {
+        if (u.key > seg) break;
+        if (u.item != skip && bare_sphere_blocks(st, u.item, impl.top.items[u.item], ray.tnear, ray.tfar)) return 1;
+    }
+    return 0;
+}
+
+}  // namespace kerf::render

@@ -1,0 +1,71 @@
+// Crowds of bare spheres (Impl::bare_spheres: every unit of the root a
+// sphere leaf, double path; the spheres_* lattices): a camera or shadow
+// ray in a ray cone (ray_cones.hpp) is served by bare_spheres.cpp without
+// the general query's set-up (no float Embree ray, no TopContext), and
+// each unit the cone lists is its ball test, its padded box and its
+// leaf's sphere test, in locals. The general visit (first_hit.cpp try_unit_entry,
+// shadow_rays.cpp unit_blocks) reaches the same tests through spans(): the
+// node switch, the leaf-kind dispatch, a push onto the span stack and the
+// walk of what was pushed, about half of a camera ray's work in such a
+// crowd. The numbers are the same calls on the same operands (the box
+// test of analytic_spans.hpp's box_hit, the leaf's object-space ray of
+// Impl::leaf_point/leaf_vector, csg::intersect_sphere<double>), the
+// window filters those of analytic_spans and the callers: the same bits.
+#pragma once
+#include <algorithm>
+#include <cstdint>
+
+#include "render/primitives/kinds.hpp"
+#include "render/tracer/analytic_spans.hpp"
+
+namespace kerf::render {
+
+// The sphere leaf `node`'s span overlapping [a, b], as spans(node, a, b, ·)
+// pushes it (the leaf's box test first); false when it pushes none. The
+// degenerate rule is the caller's (RayState::enter_unit).
+[[gnu::always_inline]] inline bool bare_sphere_span(RayState& st, std::uint32_t node, double a, double b, Span& out) {
+    const CsgTracer::Impl& impl = *st.impl;
+    if (!box_hit(st, impl.padded[node], a, b)) return false;
+    const std::uint32_t leaf = impl.scene.nodes[node].first;
+    csg::Span<double> sp[csg::kMaxSpans];
+    const int count =
+        csg::intersect_sphere<double>(impl.scene.leaves[leaf].p, impl.leaf_point(leaf, st.o), impl.leaf_vector(leaf, st.d), sp);
+    st.scratch->counters.interval_tests++;
+    st.scratch->counters.spans_found += std::uint64_t(count);
+    if (count == 0 || sp[0].t1 < a || sp[0].t0 > b) return false;
+    out.t0 = sp[0].t0;
+    out.t1 = sp[0].t1;
+    out.e0 = SpanEnd{leaf, leaf, sp[0].part0, 0, 0, 0};
+    out.e1 = SpanEnd{leaf, leaf, sp[0].part1, 0, 0, 0};
+    out.inner = leaf;
+    return true;
+}
+
+// Unit `item`'s first entry on (a, b) for a ray of `st`, as try_unit_entry
+// finds it (its ball, then the span, whose start must lie past a); false:
+// none.
+[[gnu::always_inline]] inline bool bare_sphere_entry(RayState& st, std::uint32_t item, std::uint32_t node, double a,
+                                                     double b, Span& out) {
+    if (unit_ball_misses(st, item, a, b)) return false;
+    st.enter_unit(node);
+    return bare_sphere_span(st, node, a, b, out) && out.t0 > a;
+}
+
+// Whether unit `item` blocks the shadow segment (a, b), as unit_blocks
+// decides for a unit that is no Departure's hollow: its span's part inside
+// the window longer than the degenerate rule.
+[[gnu::always_inline]] inline bool bare_sphere_blocks(RayState& st, std::uint32_t item, std::uint32_t node, double a,
+                                                      double b) {
+    if (unit_ball_misses(st, item, a, b)) return false;
+    st.enter_unit(node);
+    Span sp;
+    return bare_sphere_span(st, node, a, b, sp) && std::min(sp.t1, b) - std::max(sp.t0, a) > st.eps;
+}
+
+// bare_spheres.cpp: CsgTracer::intersect and occluded for a ray of a cone
+// in a bare-sphere crowd (`skip`: the Departure's unit, or kNone); -1 when
+// the ray has no cone (the caller asks the general path), else the answer.
+int bare_first_hit(const CsgTracer::Impl& impl, const TraceRay& ray, TraceHit& hit, TraceScratch& scratch);
+int bare_occluded(const CsgTracer::Impl& impl, const TraceRay& ray, TraceScratch& scratch, std::uint32_t skip);
+
+}  // namespace kerf::render

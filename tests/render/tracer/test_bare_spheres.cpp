@@ -1,0 +1,164 @@
+// Crowds of bare spheres (render/tracer/bare_spheres.hpp): every unit a
+// sphere leaf, so the units keep their balls, and camera rays (starting at
+// the camera) and shadow rays (ending at the light) of the ray cones take
+// the bare loop instead of the general query. Checked against point
+// membership along the ray (no ray code): lattices like bench/scenes.py's
+// spheres(n) and random overlapping crowds with coincident pairs (ties go
+// by unit index), one level (60 units) and two (343, 320), at unit size,
+// tiny (1e-4), huge (1e4) and 1e6 from the origin; rays aimed within
+// ±0.01 % of the spheres or tangent to them; shadow rays from points near
+// the spheres and, as the shader makes them, from lit points with their
+// Departure (the unit left is skipped). The float path keeps no leaf balls
+// and takes the general query: checked the same way.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "render/tracer/tracer.hpp"
+#include "tests/render/grazing_rays.hpp"
+#include "tests/render/random_csg.hpp"
+#include "tests/render/scene_builder.hpp"
+
+using namespace kerf;
+using namespace kerf::test;
+using csg::Op;
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+struct Crowd {
+    csg::Scene scene;
+    std::vector<Ball> balls;  // per unit, in the union's order
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> twins;  // coincident units (i < j)
+};
+
+// A lattice of k³ spheres (pitch 2·size/k... radius 0.35 pitch, as
+// spheres(n)) or n random overlapping spheres of radii within 2× (a few of
+// them doubled: the same sphere twice), around `at`.
+Crowd bare_crowd(RandomCsg& g, const glm::dvec3& at, double size, int n, bool lattice) {
+    Crowd c;
+    Tree tree = op(Op::Union, {});
+    if (lattice) {
+        const int k = int(std::lround(std::cbrt(double(n))));
+        const double p = 2 * size / k;
+        for (int i = 0; i < k; ++i)
+            for (int j = 0; j < k; ++j)
+                for (int l = 0; l < k; ++l)
+                    c.balls.push_back({at + p * glm::dvec3(i + 0.5 - 0.5 * k, j + 0.5 - 0.5 * k, l + 0.5 - 0.5 * k), 0.35 * p});
+    } else {
+        for (int i = 0; i < n; ++i) {
+            if (i % 10 == 9) {
+                c.twins.push_back({std::uint32_t(i - 1), std::uint32_t(i)});
+                c.balls.push_back(c.balls.back());
+                continue;
+            }
+            const glm::dvec3 p = size * glm::dvec3(g.uni(-1, 1), g.uni(-1, 1), g.uni(-1, 1));
+            c.balls.push_back({at + p, size * g.uni(0.15, 0.3)});
+        }
+    }
+    for (const Ball& b : c.balls) {
+        // Translations relative to `at` as the scene's own numbers: far from
+        // the origin the centre is at + offset, rounded once.
+        tree.kids.push_back(leaf(sphere(b.r, translate(b.c.x, b.c.y, b.c.z))));
+    }
+    c.scene = make_scene(tree);
+    c.scene.camera.position = at + size * glm::dvec3(3, -8, 4);
+    c.scene.camera.look_at = at;
+    c.scene.lights[0].position = at + size * glm::dvec3(-5, -7, 10);
+    return c;
+}
+
+struct Result {
+    int hits = 0, shadows = 0, departures = 0, twin_hits = 0;
+    std::uint64_t cones = 0;
+};
+
+Result check(std::uint64_t seed, const glm::dvec3& at, double size, int n, bool lattice, bool use_float, double h,
+             int rays) {
+    const double band = use_float ? 1e-2 : 1e-4;
+    RandomCsg g(seed);
+    const Crowd c = bare_crowd(g, at, size, n, lattice);
+    const csg::Scene& s = c.scene;
+    const glm::dvec3 cam = s.camera.position, light = s.lights[0].position;
+    const render::CsgTracer tracer(s, use_float);
+    render::TraceScratch kept;  // primed by every earlier ray, as a render thread
+    Result res;
+    for (int i = 0; i < rays; ++i) {
+        const std::size_t k = std::size_t(g.pick(int(c.balls.size())));
+        const Ball& b = c.balls[k];
+        INFO("seed " << seed << " ray " << i << " unit " << k);
+        // A camera ray: the same entry and the same work on a fresh thread
+        // and on the primed one; the entry by point membership.
+        const glm::dvec3 d = size * aim(g, cam, b, band, i % 2 == 1 && !use_float);
+        const render::TraceRay ray{cam, d, 0, kInf};
+        render::TraceScratch fresh;
+        render::TraceHit hit;
+        const bool found = camera_ray_agrees(s, tracer, ray, fresh, kept, 30, h, &hit);
+        res.hits += found;
+        if (found) {
+            // Ties go by unit index: never the later of two coincident units.
+            for (const auto& [u0, u1] : c.twins) {
+                CHECK(hit.surface.leaf != u1);
+                res.twin_hits += hit.surface.leaf == u0;
+            }
+            // The shader's shadow ray from the lit point, leaving its unit.
+            const glm::dvec3 p = ray.o + hit.t * ray.d;
+            const glm::dvec3 nrm = tracer.normal(hit, p);
+            const glm::dvec3 o = p + tracer.surface_offset(hit, p) * nrm;
+            const double dist = glm::length(light - o);
+            const glm::dvec3 l = (light - o) / dist;
+            if (glm::dot(nrm, l) > 0 && glm::dot(nrm, ray.d) < 0) {
+                const render::Departure from = tracer.departure(hit, nrm);
+                render::TraceHit e;
+                const double te = tracer.intersect(render::TraceRay{o, l, 0, kInf}, e, fresh) ? e.t : kInf;
+                INFO("departing shadow ray entry " << te << " light at " << dist);
+                CHECK(is_first_entry(s, o, l, te, dist, h * size));
+                CHECK(tracer.occluded(render::TraceRay{o, l, 0, dist}, kept, &from) == (te < dist));
+                res.departures += te < dist;
+            }
+        }
+        // A shadow ray from a point near ball b (outside the solid) to the
+        // light: blocked exactly when the first entry comes before the light.
+        ShadowRay sr;
+        if (!shadow_ray(g, s, tracer, light, b, band, i % 2 == 0 && !use_float, size, 8, 20, h * size, fresh, sr))
+            continue;
+        CHECK(tracer.occluded(render::TraceRay{sr.o, sr.dir, 0, sr.dist}, kept) == (sr.te < sr.dist));
+        res.shadows += sr.te < sr.dist;
+    }
+    res.cones = kept.cones.built;
+    return res;
+}
+
+}  // namespace
+
+TEST_CASE("bare spheres: camera and shadow rays through crowds of sphere leaves keep every entry and shadow",
+          "[render][oracle]") {
+    const glm::dvec3 far = 1e6 * glm::normalize(glm::dvec3(0.4, -1, 0.3));
+    const struct {
+        std::uint64_t seed;
+        glm::dvec3 at;
+        double size;
+        int n;
+        bool lattice, use_float;
+        double h;
+        int rays;
+    } cases[] = {{1, glm::dvec3(0.0), 1, 60, false, false, 1e-7, 300},   {2, glm::dvec3(0.0), 1, 343, true, false, 1e-7, 200},
+                 {3, glm::dvec3(0.0), 1, 320, false, false, 1e-7, 200},  {4, glm::dvec3(0.0), 1e-4, 320, false, false, 1e-7, 120},
+                 {5, glm::dvec3(0.0), 1e4, 343, true, false, 1e-7, 120}, {6, far, 1, 320, false, false, 1e-6, 120},
+                 {7, far, 1, 64, true, false, 1e-6, 120},                {8, glm::dvec3(0.0), 1, 320, false, true, 1e-4, 120}};
+    for (const auto& k : cases) {
+        INFO("case " << k.seed);
+        const Result r = check(k.seed, k.at, k.size, k.n, k.lattice, k.use_float, k.h, k.rays);
+        CHECK(r.hits > k.rays / 3);
+        CHECK(r.shadows > k.rays / 20);
+        CHECK(r.departures > 0);
+        if (!k.lattice) CHECK(r.twin_hits > 0);
+        // The double path's rays went through cones (so through the bare
+        // loop); the float path's never do (no leaf balls).
+        CHECK((r.cones > 0) == !k.use_float);
+    }
+}
