@@ -112,7 +112,8 @@ int listing_failures(const Spiral& sp, const render::RayCone& cone, const glm::d
 }
 
 struct Tally {
-    int hits = 0, shadows = 0, listed = 0, full = 0, listing_failures = 0;
+    int hits = 0, shadows = 0, listing_failures = 0;
+    int listed = 0, full = 0;  // narrow cones seen in the thread's slots (every 25 rays)
 };
 
 Tally check(std::uint64_t seed, const glm::dvec3& at, double size, double h, bool use_float, int n, int rays) {
@@ -159,16 +160,15 @@ Tally check(std::uint64_t seed, const glm::dvec3& at, double size, double h, boo
         CHECK(is_first_entry(s, o, dir, te, dist, h * size));
         CHECK(tracer.occluded(render::TraceRay{o, dir, 0, dist}, kept) == (te < dist));
         t.shadows += te < dist;
-        if (i % 25 == 24)
+        if (i % 25 == 24 || i == rays - 1)
             for (const render::RayCone& cone : kept.cones.cones[1]) {
-                if (cone.owner == 0 || cone.full) continue;
+                if (cone.owner == 0) continue;
+                t.full += cone.full;
+                if (cone.full) continue;
+                t.listed += !cone.units.empty();
                 const glm::dvec3 apex = cone.apex == 0 ? cam : light;
                 t.listing_failures += listing_failures(sp, cone, apex, narrow_alpha(s, sp, apex));
             }
-    }
-    for (const render::RayCone& cone : kept.cones.cones[1]) {
-        t.listed += cone.owner != 0 && cone.level == 1 && !cone.full && !cone.units.empty();
-        t.full += cone.owner != 0 && cone.full;
     }
     return t;
 }
