@@ -203,6 +203,11 @@ struct CsgTracer::Impl {
     void build_apexes();       // ray_cones.cpp, after the balls and `reach`
 };
 
+// A crowd's largest `keep` units' balls and one ball around the rest, when
+// the rest crowd one spot; else empty (spread_cull.cpp).
+std::vector<CsgTracer::Impl::CullBound> spread_cull_bounds(const std::vector<Ball>& balls,
+                                                           const std::vector<csg::Aabb>& boxes, std::size_t keep);
+
 // Embree callbacks the build installs, each defined beside the query it serves.
 void top_intersect_callback(const RTCIntersectFunctionNArguments* args);  // first_hit.cpp
 void top_occluded_callback(const RTCOccludedFunctionNArguments* args);    // shadow_rays.cpp

@@ -91,8 +91,7 @@ void build_cone(const RayState& st, std::uint32_t a, int level, const glm::dvec3
     cone.units.clear();
     cone.full = from && from->full;
     if (cone.full) return;
-    const std::size_t most = ap.max_units[level];
-    cone.units.reserve(std::min(from ? from->units.size() : ap.order.size(), most));  // no growth while listing
+    cone.units.reserve(from ? from->units.size() : ap.order.size());  // no growth while listing
     // A ball meets the cone when the angle from the axis to its centre is
     // at most alpha plus its angular radius beta: cos(angle) >= cos(alpha +
     // beta) (alpha + beta < pi). The margin 1e-12 in the cosines is beyond
@@ -105,20 +104,16 @@ void build_cone(const RayState& st, std::uint32_t a, int level, const glm::dvec3
         // A ball the wider cone left out misses it, so this one too (it lies
         // in the wider cone: find_cone). Keyed by the cone's own bound.
         for (const ConeUnit& u : from->units)
-            if (meets(u.j)) {
-                if (cone.units.size() == most) return mark_full(cone);
-                cone.units.push_back({u.item, u.j, cone_key(ap, level, u, cone.axis)});
-            }
+            if (meets(u.j)) cone.units.push_back({u.item, u.j, cone_key(ap, level, u, cone.axis)});
+        if (cone.units.size() > ap.max_units[level]) return mark_full(cone);
         std::sort(cone.units.begin(), cone.units.end(), [](const ConeUnit& x, const ConeUnit& y) {
             return x.key < y.key || (x.key == y.key && x.j < y.j);
         });
         return;
     }
     for (std::uint32_t j = 0; j < ap.order.size(); ++j)
-        if (meets(j)) {
-            if (cone.units.size() == most) return mark_full(cone);
-            cone.units.push_back({ap.order[j], j, ap.key[j]});
-        }
+        if (meets(j)) cone.units.push_back({ap.order[j], j, ap.key[j]});
+    if (cone.units.size() > ap.max_units[level]) mark_full(cone);
 }
 
 // The thread's cone of apex `a` and `level` whose axis lies within the angle

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <random>
 #include <vector>
 
 #include "render/tracer/tracer.hpp"
@@ -35,16 +36,17 @@ struct Sphere {
 };
 
 // Cell k: a sphere of radius size·q^k at 3·size·q^k from `at`, turned 12
-// degrees per cell about z (q = 1e-3^(1/n): the last cell 1e-3 of the
-// first), minus one or two smaller spheres inside it (sometimes a box too).
+// degrees per cell about z (q = 1e-3^(1/n) unless given: the last cell
+// 1e-3 of the first), minus one or two smaller spheres inside it
+// (sometimes a box too).
 struct Spiral {
     Tree tree = op(Op::Union, {});
     std::vector<Sphere> cells, aims;  // the cells' spheres; every sphere (to aim at)
 };
 
-Spiral spiral(RandomCsg& g, const glm::dvec3& at, double size, int n) {
+Spiral spiral(RandomCsg& g, const glm::dvec3& at, double size, int n, double q = 0) {
     Spiral s;
-    const double q = std::pow(1e-3, 1.0 / n);
+    if (q == 0) q = std::pow(1e-3, 1.0 / n);
     for (int k = 0; k < n; ++k) {
         const double r = size * std::pow(q, k), a = 0.2094395102393195 * k;
         const glm::dvec3 p = at + 3 * r * glm::dvec3(std::cos(a), std::sin(a), g.uni(-0.2, 0.2));
@@ -60,6 +62,23 @@ Spiral spiral(RandomCsg& g, const glm::dvec3& at, double size, int n) {
         }
         if (g.pick(4) == 0) kids.push_back(leaf(box(glm::dvec3(0.5 * r), glm::dvec3(2 * r), m)));  // a corner cut
         s.tree.kids.push_back(op(Op::Difference, kids));
+    }
+    return s;
+}
+
+// A ring of 128 large cells (radius 0.75-1 size, 6 from `at`) round a
+// cluster of 472 small ones (0.05 size down by 0.99 a cell, within 0.15 of
+// `at`): seen through the ring, the cluster's outline is exposed.
+Spiral ring_and_cluster(RandomCsg& g, const glm::dvec3& at, double size) {
+    Spiral s;
+    for (int k = 0; k < 600; ++k) {
+        const double a = 0.049 * k;
+        const double r = size * (k < 128 ? 1 - 0.002 * k : 0.05 * std::pow(0.99, k - 128));
+        const glm::dvec3 p = at + size * (k < 128 ? 6.0 * glm::dvec3(std::cos(a), std::sin(a), 0)
+                                                  : 0.15 * glm::dvec3(g.uni(-1, 1), g.uni(-1, 1), g.uni(-1, 1)) / std::sqrt(3.0));
+        const glm::dmat4 m = translate(p.x, p.y, p.z);
+        s.cells.push_back({p, r});
+        s.tree.kids.push_back(op(Op::Difference, {leaf(sphere(r, m)), leaf(sphere(0.9 * r, m * translate(0, 0, 0.05 * r)))}));
     }
     return s;
 }
@@ -173,6 +192,23 @@ Tally check(std::uint64_t seed, const glm::dvec3& at, double size, double h, boo
     return t;
 }
 
+// How many of `samples` rays through the quad of corner rays (o, d) hit
+// (two of them its corners).
+int hits_in_quad(const render::CsgTracer& tracer, render::TraceScratch& scratch, const glm::dvec3 (&o)[4],
+                 const glm::dvec3 (&d)[4], int samples, std::mt19937_64& rng) {
+    std::uniform_real_distribution<double> w(0, 1);
+    int hits = 0;
+    for (int k = 0; k < samples; ++k) {
+        const double a = k == 0 ? 0 : k == 1 ? 1 : w(rng), b = k < 2 ? double(k) : w(rng);
+        const double wt[4] = {(1 - a) * (1 - b), a * (1 - b), a * b, (1 - a) * b};
+        glm::dvec3 ro(0.0), rd(0.0);
+        for (int i = 0; i < 4; ++i) ro += wt[i] * o[i], rd += wt[i] * d[i];
+        render::TraceHit hit;
+        hits += tracer.intersect(render::TraceRay{ro, rd, 0, kInf}, hit, scratch);
+    }
+    return hits;
+}
+
 }  // namespace
 
 TEST_CASE("ray cones over a spiral of cells of spread sizes keep every entry and shadow, full cones too",
@@ -195,5 +231,95 @@ TEST_CASE("ray cones over a spiral of cells of spread sizes keep every entry and
         CHECK(x.listed > 0);  // rays went through listed narrow cones
         CHECK(x.full > 0);    // and through full ones, to the BVH
         CHECK(x.listing_failures == 0);
+    }
+}
+
+// Culling a crowd of spread sizes (render/tracer/spread_cull.cpp): the
+// scene's pinhole camera's tiles ask the 128 largest cells' balls and one
+// ball round the other 472 (ring_and_cluster: the merged ball's outline
+// exposed). Tiles of corner rays from the camera, half of them tiny (1e-9
+// to 0.1 of a cell's radius) and just inside or outside the outline of one
+// of the merged cells that reach farthest from their centroid, on the far
+// side (1e-8 to 0.1 of its radius: the merged ball's edge), each split into
+// four blocks that ask only the tile's list: every culled quad's sampled
+// rays miss (intersect), at unit size, 1e-3, 1e4 and 1e6 from the origin.
+TEST_CASE("a crowd of spread sizes is culled by its largest cells and one ball round the rest",
+          "[render][cull]") {
+    const glm::dvec3 far = 1e6 * glm::normalize(glm::dvec3(0.4, -1, 0.3));
+    const struct {
+        double s;
+        glm::dvec3 at;
+    } cases[] = {{1, glm::dvec3(0.0)}, {1e-3, {5e-3, -3e-3, 2e-3}}, {1e4, {2e4, 0, -1e4}}, {1, far}};
+    for (const auto& c : cases) {
+        RandomCsg g(31);
+        const Spiral sp = ring_and_cluster(g, c.at, c.s);
+        csg::Scene s = make_scene(sp.tree);
+        s.camera.position = c.at + c.s * glm::dvec3(6, -9, 8);
+        s.camera.look_at = c.at;
+        const glm::dvec3 eye = s.camera.position;
+        const render::CsgTracer tracer(s, false);
+        REQUIRE(tracer.cull_unit_count() == 129);
+        // The merged cells (the 472 smallest) and the six that reach
+        // farthest from their centroid.
+        glm::dvec3 centroid(0.0);
+        for (std::size_t k = 128; k < 600; ++k) centroid += sp.cells[k].c / 472.0;
+        std::vector<std::size_t> outer(472);
+        for (std::size_t k = 0; k < 472; ++k) outer[k] = 128 + k;
+        const auto reach = [&](std::size_t k) { return glm::length(sp.cells[k].c - centroid) + sp.cells[k].r; };
+        std::partial_sort(outer.begin(), outer.begin() + 6, outer.end(),
+                          [&](std::size_t x, std::size_t y) { return reach(x) > reach(y); });
+        outer.resize(6);
+        render::TraceScratch scratch;
+        std::mt19937_64 rng(17);
+        std::uniform_real_distribution<double> u(-1, 1), w(0, 1);
+        std::vector<std::uint32_t> tile(129), block(129);
+        int culled = 0, kept = 0, alone = 0;
+        for (int q = 0; q < 1500; ++q) {
+            glm::dvec3 target = c.at + c.s * glm::dvec3(4 * u(rng), 4 * u(rng), 0.5 * u(rng));
+            double size = 0.01 + 0.1 * w(rng);
+            if (q % 4 >= 2) {
+                // Round the outline of one of the merged cells that reach
+                // farthest from their centroid, on the far side from it:
+                // where the merged ball's edge lies.
+                const Sphere& b = sp.cells[outer[std::size_t(q) % outer.size()]];
+                const glm::dvec3 view = glm::normalize(b.c - eye), away = b.c - centroid;
+                glm::dvec3 side = away - glm::dot(away, view) * view;
+                side = glm::normalize(side + 0.3 * glm::length(side) * glm::dvec3(u(rng), u(rng), u(rng)));
+                const double gap = (q % 8 < 5 ? 1 : -1) * std::pow(10.0, -8 + 7 * w(rng));
+                const double dist = glm::length(b.c - eye), r = b.r * (1 + gap);
+                target = eye + dist * (std::sqrt(std::max(0.0, 1 - r * r / (dist * dist))) * view + r / dist * side);
+                size = std::pow(10.0, -9 + 8 * w(rng)) * b.r / c.s;
+            }
+            const glm::dvec3 aim = glm::normalize(target - eye);
+            const glm::dvec3 right = glm::normalize(glm::cross(aim, {0, 0, 1})), up = glm::cross(right, aim);
+            const auto dir = [&](double x, double y) {
+                return glm::normalize(aim + 0.4 * size * (x - 0.5) * right + 0.4 * size * (y - 0.5) * up);
+            };
+            glm::dvec3 o[4] = {eye, eye, eye, eye};
+            glm::dvec3 d[4] = {dir(0, 0), dir(1, 0), dir(1, 1), dir(0, 1)};
+            const int ntile = tracer.near_units(o, d, nullptr, 0, tile.data());
+            REQUIRE(ntile >= 0);
+            CHECK((ntile == 0) == tracer.misses_all(o, d));
+            alone += ntile == 1 && tile[0] == 128;  // the merged ball only
+            for (int b = 0; b < 5; ++b) {
+                int n = ntile;
+                if (b > 0) {
+                    const double x0 = 0.5 * ((b - 1) % 2), y0 = 0.5 * ((b - 1) / 2);
+                    d[0] = dir(x0, y0), d[1] = dir(x0 + 0.5, y0), d[2] = dir(x0 + 0.5, y0 + 0.5), d[3] = dir(x0, y0 + 0.5);
+                    n = ntile == 0 ? 0 : tracer.near_units(o, d, tile.data(), ntile, block.data());
+                }
+                if (n > 0) {
+                    ++kept;
+                    continue;
+                }
+                ++culled;
+                INFO("scale " << c.s << " quad " << q << " part " << b);
+                CHECK(hits_in_quad(tracer, scratch, o, d, 24, rng) == 0);
+            }
+        }
+        INFO("scale " << c.s << ": " << culled << " culled, " << kept << " kept, " << alone << " tiles near the merged ball alone");
+        CHECK(culled > 1000);
+        CHECK(alone > 50);
+        CHECK(kept > 1000);
     }
 }
