@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "render/tracer/tracer.hpp"
+#include "render/tracer/unit_balls.hpp"
 #include "tests/render/random_csg.hpp"
 #include "tests/render/scene_builder.hpp"
 
@@ -28,12 +29,8 @@ using csg::Op;
 
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
-struct Sphere {
-    glm::dvec3 c;
-    double r;
-};
+using Sphere = render::Ball;  // a centre and a radius
+const double kInf = std::numeric_limits<double>::infinity();
 
 // Cell k: a sphere of radius size·q^k at 3·size·q^k from `at`, turned 12
 // degrees per cell about z (q = 1e-3^(1/n) unless given: the last cell
@@ -214,13 +211,8 @@ int hits_in_quad(const render::CsgTracer& tracer, render::TraceScratch& scratch,
 TEST_CASE("ray cones over a spiral of cells of spread sizes keep every entry and shadow, full cones too",
           "[render][oracle]") {
     const glm::dvec3 far = 1e6 * glm::normalize(glm::dvec3(0.4, -1, 0.3));
-    const struct {
-        std::uint64_t seed;
-        glm::dvec3 at;
-        double size, h;
-        bool use_float;
-        int n, rays;
-    } cases[] = {{1, glm::dvec3(0.0), 1, 1e-7, false, 600, 200}, {2, glm::dvec3(0.0), 1e-4, 1e-7, false, 600, 100},
+    struct Case { std::uint64_t seed; glm::dvec3 at; double size, h; bool use_float; int n, rays; };
+    const Case cases[] = {{1, glm::dvec3(0.0), 1, 1e-7, false, 600, 200}, {2, glm::dvec3(0.0), 1e-4, 1e-7, false, 600, 100},
                  {3, glm::dvec3(0.0), 1e4, 1e-7, false, 600, 100}, {4, far, 1, 1e-6, false, 600, 100},
                  {5, glm::dvec3(0.0), 1, 1e-4, true, 600, 100},    {6, glm::dvec3(0.0), 1, 1e-7, false, 4500, 30}};
     for (const auto& k : cases) {
@@ -286,14 +278,14 @@ TEST_CASE("a crowd of spread sizes is culled by its largest cells and one ball r
                 glm::dvec3 side = away - glm::dot(away, view) * view;
                 side = glm::normalize(side + 0.3 * glm::length(side) * glm::dvec3(u(rng), u(rng), u(rng)));
                 const double gap = (q % 8 < 5 ? 1 : -1) * std::pow(10.0, -8 + 7 * w(rng));
-                const double dist = glm::length(b.c - eye), r = b.r * (1 + gap);
-                target = eye + dist * (std::sqrt(std::max(0.0, 1 - r * r / (dist * dist))) * view + r / dist * side);
+                // The tangent direction from the eye, leaning out by gap.
+                const double sin_b = std::min(1.0, b.r * (1 + gap) / glm::length(b.c - eye));
+                target = eye + std::sqrt(1 - sin_b * sin_b) * view + sin_b * side;
                 size = std::pow(10.0, -9 + 8 * w(rng)) * b.r / c.s;
             }
-            const glm::dvec3 aim = glm::normalize(target - eye);
-            const glm::dvec3 right = glm::normalize(glm::cross(aim, {0, 0, 1})), up = glm::cross(right, aim);
+            const glm::dvec3 aim = glm::normalize(target - eye), across = glm::normalize(glm::cross(aim, {0, 0, 1}));
             const auto dir = [&](double x, double y) {
-                return glm::normalize(aim + 0.4 * size * (x - 0.5) * right + 0.4 * size * (y - 0.5) * up);
+                return glm::normalize(aim + 0.4 * size * ((x - 0.5) * across + (y - 0.5) * glm::cross(across, aim)));
             };
             glm::dvec3 o[4] = {eye, eye, eye, eye};
             glm::dvec3 d[4] = {dir(0, 0), dir(1, 0), dir(1, 1), dir(0, 1)};
@@ -301,20 +293,18 @@ TEST_CASE("a crowd of spread sizes is culled by its largest cells and one ball r
             REQUIRE(ntile >= 0);
             CHECK((ntile == 0) == tracer.misses_all(o, d));
             alone += ntile == 1 && tile[0] == 128;  // the merged ball only
-            for (int b = 0; b < 5; ++b) {
-                int n = ntile;
-                if (b > 0) {
-                    const double x0 = 0.5 * ((b - 1) % 2), y0 = 0.5 * ((b - 1) / 2);
-                    d[0] = dir(x0, y0), d[1] = dir(x0 + 0.5, y0), d[2] = dir(x0 + 0.5, y0 + 0.5), d[3] = dir(x0, y0 + 0.5);
-                    n = ntile == 0 ? 0 : tracer.near_units(o, d, tile.data(), ntile, block.data());
-                }
-                if (n > 0) {
-                    ++kept;
-                    continue;
-                }
-                ++culled;
-                INFO("scale " << c.s << " quad " << q << " part " << b);
-                CHECK(hits_in_quad(tracer, scratch, o, d, 24, rng) == 0);
+            // The tile itself (part 0), then its four blocks, which ask only
+            // the tile's list.
+            for (int part = 0; part < 5; ++part) {
+                const double e = part == 0 ? 1 : 0.5, x0 = part == 0 ? 0 : e * ((part - 1) % 2),
+                             y0 = part == 0 ? 0 : e * ((part - 1) / 2);
+                const glm::dvec3 corners[4] = {dir(x0, y0), dir(x0 + e, y0), dir(x0 + e, y0 + e), dir(x0, y0 + e)};
+                std::copy(corners, corners + 4, d);
+                const bool listed = part == 0 ? ntile > 0 : ntile > 0 && tracer.near_units(o, d, tile.data(), ntile, block.data()) > 0;
+                kept += listed;
+                culled += !listed;
+                INFO("scale " << c.s << " quad " << q << " part " << part);
+                if (!listed) CHECK(hits_in_quad(tracer, scratch, o, d, 24, rng) == 0);
             }
         }
         INFO("scale " << c.s << ": " << culled << " culled, " << kept << " kept, " << alone << " tiles near the merged ball alone");
