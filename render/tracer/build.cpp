@@ -308,7 +308,13 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
         const bool all_balls = impl_->top.balls.size() == items.size() &&
                                std::all_of(impl_->top.balls.begin(), impl_->top.balls.end(),
                                            [](const Ball& b) { return b.r >= 0; });
-        if (items.size() > 1 || (items.size() == 1 && !impl_->top.balls.empty()))
+        std::vector<csg::Aabb> boxes;
+        if (pinhole && all_balls && items.size() > Impl::kCullUnits && items.size() <= Impl::kMaxSpreadUnits) {
+            for (std::uint32_t unit : items)  // (the padding below: unused with a ball)
+                boxes.push_back({scene.nodes[unit].bounds.lo - glm::dvec3(pad), scene.nodes[unit].bounds.hi + glm::dvec3(pad)});
+            impl_->cull_units = spread_cull_bounds(impl_->top.balls, boxes, Impl::kCullUnits);
+        }
+        if (impl_->cull_units.empty() && (items.size() > 1 || (items.size() == 1 && !impl_->top.balls.empty())))
             if (items.size() <= Impl::kCullUnits || (pinhole && all_balls && items.size() <= Impl::kMaxTwoLevelUnits))
                 for (std::size_t i = 0; i < items.size(); ++i) {
                     const csg::Aabb& b = scene.nodes[items[i]].bounds;

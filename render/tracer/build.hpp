@@ -180,7 +180,11 @@ struct CsgTracer::Impl {
     // One level of cones up to kMaxConeUnits units, two up to
     // kMaxTwoLevelUnits (ray_cones.hpp); beyond, the ball BVH alone (the
     // apexes' per-unit arrays grow with the units, and no scene was measured).
+    // Crowds of spread sizes: two levels up to kMaxSpreadUnits (spiral_10000),
+    // a wide cone listing at most kSpreadWideUnits, a narrow one
+    // kSpreadNarrowUnits (ray_cones.cpp, build_apexes).
     static constexpr std::size_t kMaxConeUnits = 256, kMaxTwoLevelUnits = 4096;
+    static constexpr std::size_t kMaxSpreadUnits = 1 << 16, kSpreadWideUnits = 1024, kSpreadNarrowUnits = 64;
     // Unique per tracer in the process: a thread's cones name their owner
     // by it, not by address (a tracer built where a freed one stood must
     // not take that one's cones, whose unit indices are another scene's).
@@ -201,6 +205,11 @@ struct CsgTracer::Impl {
     void build_ball_bvh();     // build.cpp, after the balls and `reach`
     void build_apexes();       // ray_cones.cpp, after the balls and `reach`
 };
+
+// A crowd's largest `keep` units' balls and one ball around the rest, when
+// the rest crowd one spot; else empty (spread_cull.cpp).
+std::vector<CsgTracer::Impl::CullBound> spread_cull_bounds(const std::vector<Ball>& balls,
+                                                           const std::vector<csg::Aabb>& boxes, std::size_t keep);
 
 // Embree callbacks the build installs, each defined beside the query it serves.
 void top_intersect_callback(const RTCIntersectFunctionNArguments* args);  // first_hit.cpp

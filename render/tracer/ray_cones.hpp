@@ -16,6 +16,11 @@
 // each sorted by its own key (where its rays can first reach a unit), and
 // a ray's cone is its direction's cell in a grid: its work depends on the
 // ray alone, as with one level.
+//
+// Crowds whose ball sizes spread over orders of magnitude (257 to
+// kMaxSpreadUnits units: the spiral family) get two levels too, their angle
+// from the balls most rays meet (ray_cones.cpp, spread_radius), and a cone
+// that would list too many units is full: its rays take the BVH.
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -45,6 +50,9 @@ struct Apex {
     // grid in its gnomonic plane that new cones' axes snap to (0: none).
     glm::dvec3 e0{0, 0, 1}, e1{1, 0, 0}, e2{0, 1, 0};
     double grid[kLevels] = {};
+    // Per level, the most units a cone lists; one that would list more is
+    // full (RayCone::full). Limited only for crowds of spread sizes.
+    std::size_t max_units[kLevels] = {~std::size_t(0), ~std::size_t(0)};
     // The units nearest p first (`key`: a bound on the distance from p of
     // any point of the unit a ray keeps), and their balls grown by every
     // per-ray slack the ball and chord tests add for a ray of this apex.
@@ -81,6 +89,7 @@ struct RayCone {
     std::int64_t u = 0, v = 0;    // two levels: its cell (ray_cones.cpp, find_cell_cone)
     glm::dvec3 axis{0.0};         // unit, pointing away from the apex
     std::vector<ConeUnit> units;  // in the apex's order
+    bool full = false;            // listed no units: more than Apex::max_units (its rays take the BVH)
 };
 
 // Per thread (in TraceScratch): the last few cones of each level, reused
