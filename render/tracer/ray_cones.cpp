@@ -72,9 +72,11 @@ double spread_radius(const std::vector<double>& sorted_radii) {
 // marked, so that its rays take the ball or box BVH (ray_cone_around), and
 // the narrow cones of a full wide cone are full too. Whether a cone is full
 // depends on its cell alone, so a ray's path (and work) still does.
-void mark_full(RayCone& cone) {
+void publish(const RayState& st, RayCone& cone) { cone.owner = st.impl->id; }
+void mark_full(const RayState& st, RayCone& cone) {
     cone.units.clear();
     cone.full = true;
+    publish(st, cone);
 }
 
 // The cone of apex `a` and `level` around `axis` (unit, away from the
@@ -83,14 +85,21 @@ void mark_full(RayCone& cone) {
 void build_cone(const RayState& st, std::uint32_t a, int level, const glm::dvec3& axis, const RayCone* from,
                 RayCone& cone) {
     const Apex& ap = st.impl->apexes[a];
-    cone.owner = st.impl->id;
+    // Claimed last (publish): a listing that fails (bad_alloc) leaves a
+    // slot that names no tracer, never one holding another cell's units.
+    cone.owner = 0;
     cone.apex = a;
     cone.level = level;
     cone.axis = axis;
     cone.units.clear();
     cone.full = from && from->full;
-    if (cone.full) return;
-    cone.units.reserve(from ? from->units.size() : ap.order.size());  // no growth while listing
+    if (cone.full) return publish(st, cone);
+    // Listed into the thread's one scratch list, then copied at its size:
+    // a slot reserving room for every unit (4,096 to 65,536 of them) would
+    // hold up to 1 MB of address space each, 512 slots per thread.
+    std::vector<ConeUnit>& list = st.scratch->cones.listing;
+    list.clear();
+    list.reserve(from ? from->units.size() : ap.order.size());  // no growth while listing
     // A ball meets the cone when the angle from the axis to its centre is
     // at most alpha plus its angular radius beta: cos(angle) >= cos(alpha +
     // beta) (alpha + beta < pi). The margin 1e-12 in the cosines is beyond
@@ -103,16 +112,18 @@ void build_cone(const RayState& st, std::uint32_t a, int level, const glm::dvec3
         // A ball the wider cone left out misses it, so this one too (it lies
         // in the wider cone: find_cone). Keyed by the cone's own bound.
         for (const ConeUnit& u : from->units)
-            if (meets(u.j)) cone.units.push_back({u.item, u.j, cone_key(ap, level, u, cone.axis)});
-        if (cone.units.size() > ap.max_units[level]) return mark_full(cone);
-        std::sort(cone.units.begin(), cone.units.end(), [](const ConeUnit& x, const ConeUnit& y) {
+            if (meets(u.j)) list.push_back({u.item, u.j, cone_key(ap, level, u, cone.axis)});
+        if (list.size() > ap.max_units[level]) return mark_full(st, cone);
+        std::sort(list.begin(), list.end(), [](const ConeUnit& x, const ConeUnit& y) {
             return x.key < y.key || (x.key == y.key && x.j < y.j);
         });
-        return;
+    } else {
+        for (std::uint32_t j = 0; j < ap.order.size(); ++j)
+            if (meets(j)) list.push_back({ap.order[j], j, ap.key[j]});
+        if (list.size() > ap.max_units[level]) return mark_full(st, cone);
     }
-    for (std::uint32_t j = 0; j < ap.order.size(); ++j)
-        if (meets(j)) cone.units.push_back({ap.order[j], j, ap.key[j]});
-    if (cone.units.size() > ap.max_units[level]) mark_full(cone);
+    cone.units.assign(list.begin(), list.end());
+    publish(st, cone);
 }
 
 // The thread's cone of apex `a` and `level` whose axis lies within the angle
@@ -177,9 +188,10 @@ inline const RayCone* find_cell_cone(const RayState& st, std::uint32_t a, int le
     if (!(glm::dot(dir, axis) >= need * len)) return nullptr;
     const RayCone* from = level > 0 ? find_cell_cone(st, a, level - 1, axis, 1, ap.cos_sub[level]) : nullptr;
     if (level > 0 && !from) return nullptr;
-    build_cone(st, a, level, axis, from, c);
+    c.owner = 0;  // (build_cone claims it once listed)
     c.u = u;
     c.v = v;
+    build_cone(st, a, level, axis, from, c);
     ++st.scratch->cones.built;
     return &c;
 }

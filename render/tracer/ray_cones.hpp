@@ -102,6 +102,7 @@ struct RayCones {
     RayCone cones[Apex::kLevels][kSlots];
     int last[Apex::kLevels][kApexes] = {}, next[Apex::kLevels] = {};  // per apex the cone its last ray used
     std::uint64_t built = 0;  // cones built (tests, tuning)
+    std::vector<ConeUnit> listing;  // a cone's units while it is listed (ray_cones.cpp, build_cone)
 };
 
 }  // namespace kerf::render
