@@ -111,7 +111,8 @@ LineCrossing crossing_on_line(const glm::dvec3& o0, const glm::dvec3& d0, const 
     double u = 1;
     for (int i = 0; i < n; ++i) {
         for (const double end : {out[i].t0, out[i].t1}) {
-            if (std::abs(end) <= kNear || std::abs(end - 1) <= kNear || !std::isfinite(end)) return {};
+            // (A half-space's span has an infinite end: outside the line.)
+            if (std::isnan(end) || std::abs(end) <= kNear || std::abs(end - 1) <= kNear) return {};
             if (end > 0 && end < u) u = end;
         }
         inside0 = inside0 || (out[i].t0 < 0 && 0 < out[i].t1);

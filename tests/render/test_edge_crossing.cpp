@@ -190,6 +190,16 @@ TEST_CASE("edge prediction: a hole's rim from the cylinder's own intervals, exac
     // at the end says it.
     for (const double off : {0.0, 1e-6, -1e-6})
         CHECK_FALSE(from_spans({eye, glm::dvec3(r + off, 0, 0) - eye, eye, glm::dvec3(r - 1, 0, 0) - eye}, leaf).applies);
+    // A half-space's infinite span end: the plane x <= 2.7 (a plane leaf)
+    // met by the plate along the same pinhole side, at x = 2.7.
+    kerf::csg::Leaf half;
+    half.kind = kerf::csg::PrimKind::Plane;
+    half.p[0] = 1, half.p[3] = 2.7;
+    const kerf::render::LineCrossing wall = from_spans(sides[0], half);
+    REQUIRE(wall.applies);
+    REQUIRE(wall.at);
+    const glm::dvec3 o = sides[0].o0, d = glm::mix(sides[0].d0, sides[0].d1, *wall.at);
+    CHECK((o - o.z / d.z * d).x == Approx(2.7).margin(1e-12));
     // Rays of neither one origin nor one direction: the plane's points
     // do not lie on a line.
     CHECK_FALSE(from_spans({eye, A - eye, eye + glm::dvec3(1, 0, 0), B - eye}, leaf).applies);
