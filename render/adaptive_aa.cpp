@@ -231,6 +231,14 @@ int Refinement::like(double px, double py, const CornerProbe& p, const CornerPro
     return like_q;
 }
 
+// Whether csg::intersect_leaf gives a leaf's spans along any line exactly
+// (a mesh, a prism and a lathe have entry points of their own).
+bool analytic(csg::PrimKind kind) {
+    using K = csg::PrimKind;
+    return kind == K::Sphere || kind == K::Box || kind == K::Cylinder || kind == K::Torus || kind == K::Plane ||
+           kind == K::Paraboloid || kind == K::Hyperboloid;
+}
+
 // Where an edge between the surfaces corners p (at (cx, cy)) and q (the
 // next one right, or down) see crosses the side between them, predicted
 // from their tangent planes (edge_crossing.hpp); nothing where either saw
@@ -261,9 +269,16 @@ std::optional<Refinement::Prediction> Refinement::predicted(int cx, int cy, bool
     // whether that is exact.
     const auto meets = [&](const TangentPlane& face, const TraceHit& own, const TraceHit& other, const glm::dvec3& go,
                            const glm::dvec3& gd, int towards) -> std::optional<Prediction> {
-        const std::optional<double> e = crossing_on_plane(o0, d0, o1, d1, face, [&](const glm::dvec3& w) {
-            return distance(other, w);
-        });
+        const auto across = [&](const glm::dvec3& w) { return distance(other, w); };
+        // The other leaf's spans along the line a→b (crossing_on_line).
+        const csg::Leaf& leaf = sampler_.scene().leaves[other.surface.leaf];
+        const auto spans = [&](const glm::dvec3& a, const glm::dvec3& b, csg::Span<double>* out) {
+            return csg::intersect_leaf<double>(leaf, leaf.object_from_world.point(a),
+                                               leaf.object_from_world.vector(b - a), out, 0.0, 1.0);
+        };
+        const LineCrossing line =
+            analytic(leaf.kind) ? crossing_on_line(o0, d0, o1, d1, face, spans) : LineCrossing{};
+        const std::optional<double> e = line.applies ? line.at : crossing_on_plane(o0, d0, o1, d1, face, across);
         if (!e) return std::nullopt;
         Prediction r{*e, 0};
         const auto on_face = [&](double s) {
@@ -276,11 +291,26 @@ std::optional<Refinement::Prediction> Refinement::predicted(int cx, int cy, bool
         return r;
     };
     // p's face first, then q's (not copied into a list of tuples: their
-    // copies showed in the profile).
+    // copies showed in the profile); q's first where only q's is flat (a
+    // box's or a plane's: its plane is its surface, and meets the other
+    // leaf exactly, while a curved face's plane leaves its surface: a
+    // hole's wall beside the plate's top, half the rims' sides).
+    const auto flat = [&](const TraceHit& hit) {
+        const csg::PrimKind kind = sampler_.scene().leaves[hit.surface.leaf].kind;
+        return kind == csg::PrimKind::Box || kind == csg::PrimKind::Plane;
+    };
+    const bool q_first = flat(q.hit) && !flat(p.hit);
+    std::optional<Prediction> from_q;
+    if (q_first) {
+        from_q = meets(q_plane, q.hit, p.hit, o0, d0, -1);
+        if (from_q && from_q->confirm) return from_q;
+    }
     const std::optional<Prediction> from_p = meets(p_plane, p.hit, q.hit, o1, d1, 1);
     if (from_p && from_p->confirm) return from_p;
-    const std::optional<Prediction> from_q = meets(q_plane, q.hit, p.hit, o0, d0, -1);
-    if (from_q && from_q->confirm) return from_q;
+    if (!q_first) {
+        from_q = meets(q_plane, q.hit, p.hit, o0, d0, -1);
+        if (from_q && from_q->confirm) return from_q;
+    }
     if (from_p) return from_p;
     if (from_q) return from_q;
     if (const std::optional<double> e = predicted_crossing(o0, d0, o1, d1, p_plane, q_plane)) return Prediction{*e, 0};

@@ -1,13 +1,15 @@
 // Adaptive AA's edge prediction (render/edge_crossing.hpp) against closed
 // forms: two planes' crease seen by a pinhole and an orthographic camera,
-// a cylinder's rim, and no prediction where the planes do not cross
-// between the side's ends.
+// a cylinder's rim (also from the cylinder's own intervals along the
+// plate's line), and no prediction where the planes do not cross between
+// the side's ends.
 #include <catch2/catch.hpp>
 
 #include <cmath>
 #include <limits>
 
 #include "render/edge_crossing.hpp"
+#include "render/primitives/primitives.hpp"
 
 using kerf::render::predicted_crossing;
 using kerf::render::TangentPlane;
@@ -114,4 +116,91 @@ TEST_CASE("edge prediction: a hole's near and far rim where the plate's face mee
     CHECK_FALSE(kerf::render::crossing_on_plane({0, 0, 1}, down, {1, 0, 1}, down, plate, far_hole));
     const auto mesh = [](const glm::dvec3&) { return std::numeric_limits<double>::infinity(); };
     CHECK_FALSE(kerf::render::crossing_on_plane({0, 0, 1}, down, {1, 0, 1}, down, plate, mesh));
+}
+
+namespace {
+
+// The cylinder leaf |(x, y)| < r, -1 < z < 1 (object space = world).
+kerf::csg::Leaf hole_leaf(double r) {
+    kerf::csg::Leaf l;
+    l.kind = kerf::csg::PrimKind::Cylinder;
+    l.p[0] = -1, l.p[1] = 1, l.p[2] = r, l.p[3] = r;
+    return l;
+}
+
+// crossing_on_line() of the plate z = 0 (its plane) against that leaf,
+// from csg::intersect_leaf's spans, as adaptive_aa.cpp asks it.
+kerf::render::LineCrossing from_spans(const Side& side, const kerf::csg::Leaf& leaf) {
+    const TangentPlane plate{{0, 0, 0}, {0, 0, 1}};
+    return kerf::render::crossing_on_line(side.o0, side.d0, side.o1, side.d1, plate,
+                                          [&](const glm::dvec3& a, const glm::dvec3& b, kerf::csg::Span<double>* out) {
+                                              return kerf::csg::intersect_leaf<double>(leaf, a, b - a, out, 0.0, 1.0);
+                                          });
+}
+
+// How far from the rim the ray at s along the side meets the plate:
+// its direction mix(d0, d1, s), as the side's rays run in crossing_on_plane.
+double off_rim(const Side& side, double s, double r) {
+    const glm::dvec3 o = glm::mix(side.o0, side.o1, s), d = glm::mix(side.d0, side.d1, s);
+    const glm::dvec3 p = o - o.z / d.z * d;
+    return std::hypot(p.x, p.y) - r;
+}
+
+}  // namespace
+
+TEST_CASE("edge prediction: a hole's rim from the cylinder's own intervals, exact for a pinhole and an orthographic "
+          "camera",
+          "[render][aa]") {
+    // The plate z = 0 minus the cylinder of radius 3: the side runs from A
+    // on the plate to B over the hole. The pinhole's end rays have
+    // different lengths (the plane at depth 0.5 of one, 2 of the other:
+    // camera rays are not normalised), so a crossing found a fraction u
+    // along the line A→B lies at s = u·t1 / ((1 − u)·t0 + u·t1) along the
+    // side, not at u; the orthographic rays lean.
+    const double r = 3;
+    const kerf::csg::Leaf leaf = hole_leaf(r);
+    const glm::dvec3 A{3.4, 0.3, 0}, B{2.5, -0.2, 0}, eye{7, 2, 9};
+    const Side sides[2] = {{eye, 2.0 * (A - eye), eye, 0.5 * (B - eye)},
+                           {A - 5.0 * glm::dvec3(0.3, 0.1, -1), {0.3, 0.1, -1}, B - 5.0 * glm::dvec3(0.3, 0.1, -1),
+                            {0.3, 0.1, -1}}};
+    const auto cylinder = [&](const glm::dvec3& p) { return std::hypot(p.x, p.y) - r; };
+    for (const Side& side : sides) {
+        const kerf::render::LineCrossing c = from_spans(side, leaf);
+        REQUIRE(c.applies);
+        REQUIRE(c.at);
+        const auto falsi = kerf::render::crossing_on_plane(side.o0, side.d0, side.o1, side.d1,
+                                                           TangentPlane{{0, 0, 0}, {0, 0, 1}}, cylinder);
+        REQUIRE(falsi);
+        INFO("from the spans " << *c.at << ", regula falsi " << *falsi);
+        // The ray there meets the plate on the rim, to rounding; regula
+        // falsi's answer lies within its 1/1,024 of the side.
+        CHECK(std::abs(off_rim(side, *c.at, r)) < 1e-12);
+        CHECK(std::abs(*c.at - *falsi) < 1.0 / 1024);
+        // Backwards (from B to A): the same point.
+        const kerf::render::LineCrossing back = from_spans({side.o1, side.d1, side.o0, side.d0}, leaf);
+        REQUIRE(back.at);
+        CHECK(*back.at == Approx(1 - *c.at).margin(1e-12));
+    }
+    // Both ends on the plate, beside the hole: no crossing, and said so.
+    const kerf::render::LineCrossing none = from_spans({eye, glm::dvec3(4, 1, 0) - eye, eye, glm::dvec3(5, 1, 0) - eye}, leaf);
+    CHECK(none.applies);
+    CHECK_FALSE(none.at);
+    // An end on the rim (within 1/65,536 of the side: whether it lies
+    // inside is rounding's to say): left to regula falsi, whose distance
+    // at the end says it.
+    for (const double off : {0.0, 1e-6, -1e-6})
+        CHECK_FALSE(from_spans({eye, glm::dvec3(r + off, 0, 0) - eye, eye, glm::dvec3(r - 1, 0, 0) - eye}, leaf).applies);
+    // A half-space's infinite span end: the plane x <= 2.7 (a plane leaf)
+    // met by the plate along the same pinhole side, at x = 2.7.
+    kerf::csg::Leaf half;
+    half.kind = kerf::csg::PrimKind::Plane;
+    half.p[0] = 1, half.p[3] = 2.7;
+    const kerf::render::LineCrossing wall = from_spans(sides[0], half);
+    REQUIRE(wall.applies);
+    REQUIRE(wall.at);
+    const glm::dvec3 o = sides[0].o0, d = glm::mix(sides[0].d0, sides[0].d1, *wall.at);
+    CHECK((o - o.z / d.z * d).x == Approx(2.7).margin(1e-12));
+    // Rays of neither one origin nor one direction: the plane's points
+    // do not lie on a line.
+    CHECK_FALSE(from_spans({eye, A - eye, eye + glm::dvec3(1, 0, 0), B - eye}, leaf).applies);
 }
