@@ -231,12 +231,16 @@ int Refinement::like(double px, double py, const CornerProbe& p, const CornerPro
     return like_q;
 }
 
-// Whether csg::intersect_leaf gives a leaf's spans along any line exactly
-// (a mesh, a prism and a lathe have entry points of their own).
+// Whether csg::intersect_leaf gives a leaf's solid along any line as one
+// span with exact ends, so that the crossing is the one end inside the
+// side (a mesh, a prism and a lathe have entry points of their own). Not
+// a torus: it clips its spans to the window asked, so a span through the
+// side's end ends there and every crossing was refused as too near it
+// (a quartic solve for nothing); nor a hyperboloid's waist, whose several
+// ends leave "the first from p" wrong where q's face is the one asked.
 bool analytic(csg::PrimKind kind) {
     using K = csg::PrimKind;
-    return kind == K::Sphere || kind == K::Box || kind == K::Cylinder || kind == K::Torus || kind == K::Plane ||
-           kind == K::Paraboloid || kind == K::Hyperboloid;
+    return kind == K::Sphere || kind == K::Box || kind == K::Cylinder || kind == K::Plane || kind == K::Paraboloid;
 }
 
 // Where an edge between the surfaces corners p (at (cx, cy)) and q (the
