@@ -240,6 +240,14 @@ bool analytic(csg::PrimKind kind) {
            kind == K::Paraboloid || kind == K::Hyperboloid;
 }
 
+// A leaf's spans along the line a + u·(b − a), u in [0, 1] (crossing_on_line).
+auto spans_on(const csg::Leaf& leaf) {
+    return [&leaf](const glm::dvec3& a, const glm::dvec3& b, csg::Span<double>* out) {
+        return csg::intersect_leaf<double>(leaf, leaf.object_from_world.point(a), leaf.object_from_world.vector(b - a),
+                                           out, 0.0, 1.0);
+    };
+}
+
 // Where an edge between the surfaces corners p (at (cx, cy)) and q (the
 // next one right, or down) see crosses the side between them, predicted
 // from their tangent planes (edge_crossing.hpp); nothing where either saw
@@ -273,12 +281,8 @@ std::optional<Refinement::Prediction> Refinement::predicted(int cx, int cy, bool
         const auto across = [&](const glm::dvec3& w) { return distance(other, w); };
         // The other leaf's spans along the line a→b (crossing_on_line).
         const csg::Leaf& leaf = sampler_.scene().leaves[other.surface.leaf];
-        const auto spans = [&](const glm::dvec3& a, const glm::dvec3& b, csg::Span<double>* out) {
-            return csg::intersect_leaf<double>(leaf, leaf.object_from_world.point(a),
-                                               leaf.object_from_world.vector(b - a), out, 0.0, 1.0);
-        };
         const LineCrossing line =
-            analytic(leaf.kind) ? crossing_on_line(o0, d0, o1, d1, face, spans) : LineCrossing{};
+            analytic(leaf.kind) ? crossing_on_line(o0, d0, o1, d1, face, spans_on(leaf)) : LineCrossing{};
         const std::optional<double> e = line.applies ? line.at : crossing_on_plane(o0, d0, o1, d1, face, across);
         if (!e) return std::nullopt;
         Prediction r{*e, 0};
@@ -346,11 +350,7 @@ std::optional<double> Refinement::outline(int cx, int cy, bool vertical, const C
     // of a pixel at 2048² (a pixel spans ~5e-4 of it).
     const double shift = 1e-9 * glm::distance(behind.point, o0);
     behind.point += (glm::dot(behind.normal, d0) > 0 ? shift : -shift) * behind.normal;
-    const auto spans = [&](const glm::dvec3& a, const glm::dvec3& b, csg::Span<double>* out) {
-        return csg::intersect_leaf<double>(leaf, leaf.object_from_world.point(a), leaf.object_from_world.vector(b - a),
-                                           out, 0.0, 1.0);
-    };
-    const LineCrossing line = crossing_on_line(o0, d0, o1, d1, behind, spans);
+    const LineCrossing line = crossing_on_line(o0, d0, o1, d1, behind, spans_on(leaf));
     if (!line.applies || !line.at || !line.starts_inside) return std::nullopt;
     return from_p ? *line.at : 1 - *line.at;
 }
@@ -360,7 +360,9 @@ std::optional<double> Refinement::outline(int cx, int cy, bool vertical, const C
 // predicted and confirmed by a sample either side of the prediction (one,
 // where it is exact: predicted(); answered by the faces' model where that
 // says the corner across shows there, docs/quality.md "The confirming
-// samples from the faces"), else (or where one disagrees) bisection.
+// samples from the faces"); where one corner misses, where the other's box
+// face ends (outline()), confirmed by one sample past it; else (or where a
+// sample disagrees) bisection.
 const SideProbe& Refinement::side(int cx, int cy, bool vertical, ThreadState& ts, bool traced) const {
     SideProbe& s = probes().side(cx, cy, vertical);
     if (s.traced) return s;
@@ -403,13 +405,13 @@ const SideProbe& Refinement::side(int cx, int cy, bool vertical, ThreadState& ts
         return true;
     };
     const double precision = precision_;
+    // Where one corner misses (the solid's outline), where its box face
+    // ends (outline()): one sample past that, towards the miss, which must
+    // miss (nothing models what lies behind).
     // Between two surfaces (only the surface decides, unshaded) the
     // prediction's two samples bracket the edge to the precision.
     // Where the prediction is exact (predicted()), one of them: the one
     // towards the corner across from the face it came from.
-    // Where one corner misses (the solid's outline), where its box face
-    // ends (outline()): one sample past that, towards the miss, which must
-    // miss (nothing models what lies behind).
     if (p.surface != q.surface && !sampler_.ghosts() && (p.hit.t < 0) != (q.hit.t < 0)) {
         if (const std::optional<double> e = outline(cx, cy, vertical, p, q); e && *e > lo && *e < hi) {
             const bool from_p = p.hit.t >= 0;
