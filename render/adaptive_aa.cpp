@@ -117,6 +117,7 @@ private:
     };
     std::optional<Prediction> predicted(int cx, int cy, bool vertical, const CornerProbe& p,
                                         const CornerProbe& q) const;
+    std::optional<double> outline(int cx, int cy, bool vertical, const CornerProbe& p, const CornerProbe& q) const;
     // The tangent plane at corner (cx, cy)'s hit (`p`, which hit the solid).
     const TangentPlane& plane(double cx, double cy, const CornerProbe& p) const {
         if (!p.has_plane) {
@@ -243,6 +244,14 @@ bool analytic(csg::PrimKind kind) {
     return kind == K::Sphere || kind == K::Box || kind == K::Cylinder || kind == K::Plane || kind == K::Paraboloid;
 }
 
+// A leaf's spans along the line a + u·(b − a), u in [0, 1] (crossing_on_line).
+auto spans_on(const csg::Leaf& leaf) {
+    return [&leaf](const glm::dvec3& a, const glm::dvec3& b, csg::Span<double>* out) {
+        return csg::intersect_leaf<double>(leaf, leaf.object_from_world.point(a), leaf.object_from_world.vector(b - a),
+                                           out, 0.0, 1.0);
+    };
+}
+
 // Where an edge between the surfaces corners p (at (cx, cy)) and q (the
 // next one right, or down) see crosses the side between them, predicted
 // from their tangent planes (edge_crossing.hpp); nothing where either saw
@@ -276,12 +285,8 @@ std::optional<Refinement::Prediction> Refinement::predicted(int cx, int cy, bool
         const auto across = [&](const glm::dvec3& w) { return distance(other, w); };
         // The other leaf's spans along the line a→b (crossing_on_line).
         const csg::Leaf& leaf = sampler_.scene().leaves[other.surface.leaf];
-        const auto spans = [&](const glm::dvec3& a, const glm::dvec3& b, csg::Span<double>* out) {
-            return csg::intersect_leaf<double>(leaf, leaf.object_from_world.point(a),
-                                               leaf.object_from_world.vector(b - a), out, 0.0, 1.0);
-        };
         const LineCrossing line =
-            analytic(leaf.kind) ? crossing_on_line(o0, d0, o1, d1, face, spans) : LineCrossing{};
+            analytic(leaf.kind) ? crossing_on_line(o0, d0, o1, d1, face, spans_on(leaf)) : LineCrossing{};
         const std::optional<double> e = line.applies ? line.at : crossing_on_plane(o0, d0, o1, d1, face, across);
         if (!e) return std::nullopt;
         Prediction r{*e, 0};
@@ -321,12 +326,47 @@ std::optional<Refinement::Prediction> Refinement::predicted(int cx, int cy, bool
     return std::nullopt;
 }
 
+// Where the face that one of the side's corners sees ends along the side,
+// the other corner seeing no solid (the outline against the background),
+// from the face's own leaf: a box's face is its plane, and the points a
+// plane just behind it (as the corner's ray sees it) puts on the side's
+// rays lie on one line (crossing_on_line), inside the box at the face's
+// corner and leaving it where the face ends, at the box's edge. Nothing
+// for another leaf (a curved face's plane leaves its surface), where the
+// line does not start inside the leaf (a face of a subtrahend: behind it
+// lies the solid, not the leaf), or where the camera's rays share neither
+// origin nor direction. docs/quality.md, "The outline from the face's own
+// box".
+std::optional<double> Refinement::outline(int cx, int cy, bool vertical, const CornerProbe& p,
+                                          const CornerProbe& q) const {
+    const bool from_p = p.hit.t >= 0;
+    const CornerProbe& f = from_p ? p : q;
+    const csg::Leaf& leaf = sampler_.scene().leaves[f.hit.surface.leaf];
+    if (leaf.kind != csg::PrimKind::Box) return std::nullopt;
+    // The face's corner first: the line runs from it to the corner that misses.
+    const int fx = from_p ? cx : cx + !vertical, fy = from_p ? cy : cy + vertical;
+    const int gx = from_p ? cx + !vertical : cx, gy = from_p ? cy + vertical : cy;
+    glm::dvec3 o0, d0, o1, d1;
+    if (!sampler_.ray(fx, fy, o0, d0) || !sampler_.ray(gx, gy, o1, d1)) return std::nullopt;
+    TangentPlane behind = plane(fx, fy, f);
+    // Just behind the face: on it, whether the line lies inside the box is
+    // rounding's to say. 1e-9 of the distance moves the crossing by ~1e-5
+    // of a pixel at 2048² (a pixel spans ~5e-4 of it).
+    const double shift = 1e-9 * glm::distance(behind.point, o0);
+    behind.point += (glm::dot(behind.normal, d0) > 0 ? shift : -shift) * behind.normal;
+    const LineCrossing line = crossing_on_line(o0, d0, o1, d1, behind, spans_on(leaf));
+    if (!line.applies || !line.at || !line.starts_inside) return std::nullopt;
+    return from_p ? *line.at : 1 - *line.at;
+}
+
 // Where the look changes along the side from corner (cx, cy) to the next
 // one right (or down), to 1/2^steps of the side: between two surfaces
 // predicted and confirmed by a sample either side of the prediction (one,
 // where it is exact: predicted(); answered by the faces' model where that
 // says the corner across shows there, docs/quality.md "The confirming
-// samples from the faces"), else (or where one disagrees) bisection.
+// samples from the faces"); where one corner misses, where the other's box
+// face ends (outline()), confirmed by one sample past it; else (or where a
+// sample disagrees) bisection.
 const SideProbe& Refinement::side(int cx, int cy, bool vertical, ThreadState& ts, bool traced) const {
     SideProbe& s = probes().side(cx, cy, vertical);
     if (s.traced) return s;
@@ -369,11 +409,22 @@ const SideProbe& Refinement::side(int cx, int cy, bool vertical, ThreadState& ts
         return true;
     };
     const double precision = precision_;
+    // Where one corner misses (the solid's outline), where its box face
+    // ends (outline()): one sample past that, towards the miss, which must
+    // miss (nothing models what lies behind).
     // Between two surfaces (only the surface decides, unshaded) the
     // prediction's two samples bracket the edge to the precision.
     // Where the prediction is exact (predicted()), one of them: the one
     // towards the corner across from the face it came from.
-    if (p.surface != q.surface && !sampler_.ghosts())
+    if (p.surface != q.surface && !sampler_.ghosts() && (p.hit.t < 0) != (q.hit.t < 0)) {
+        if (const std::optional<double> e = outline(cx, cy, vertical, p, q); e && *e > lo && *e < hi) {
+            const bool from_p = p.hit.t >= 0;
+            const double before = *e - precision / 2, past = *e + precision / 2, m = from_p ? past : before;
+            const double l = lo, h = hi;
+            if (m > lo && m < hi && step(m) && (from_p ? hi == m : lo == m))
+                lo = std::max(l, before), hi = std::min(h, past);
+        }
+    } else if (p.surface != q.surface && !sampler_.ghosts())
         if (const std::optional<Prediction> e = predicted(cx, cy, vertical, p, q); e && e->at > lo && e->at < hi) {
             const double before = e->at - precision / 2, past = e->at + precision / 2;
             if (e->confirm != 0) {

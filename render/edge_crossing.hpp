@@ -95,6 +95,7 @@ std::optional<double> crossing_on_plane(const glm::dvec3& o0, const glm::dvec3& 
 struct LineCrossing {
     bool applies = false;
     std::optional<double> at;
+    bool starts_inside = false;  // the line's end at 0 lies inside the surface's solid
 };
 template <class Spans>
 LineCrossing crossing_on_line(const glm::dvec3& o0, const glm::dvec3& d0, const glm::dvec3& o1, const glm::dvec3& d1,
@@ -118,14 +119,14 @@ LineCrossing crossing_on_line(const glm::dvec3& o0, const glm::dvec3& d0, const 
         inside0 = inside0 || (out[i].t0 < 0 && 0 < out[i].t1);
         inside1 = inside1 || (out[i].t0 < 1 && 1 < out[i].t1);
     }
-    if (inside0 == inside1) return {true, std::nullopt};
+    if (inside0 == inside1) return {true, std::nullopt, inside0};
     // u along the line to s along the side: the ray at s, o + t(s)·d(s)
     // with d(s) = mix(d0, d1, s), meets the line at u = s·t0 / ((1 − s)·t1
     // + s·t0) for a shared origin (t0, t1: the plane's depths at the ends),
     // so s = u·t1 / ((1 − u)·t0 + u·t1); u = s for a shared direction.
     const double s = pinhole ? u * t1 / ((1 - u) * t0 + u * t1) : u;
     if (!(u < 1 && s > 0 && s < 1)) return {};
-    return {true, s};
+    return {true, s, inside0};
 }
 
 }  // namespace kerf::render
