@@ -131,7 +131,7 @@ void CsgTracer::Impl::build_accel(Accel& accel, const std::vector<std::uint32_t>
 // Embree's sphere test, of the rounded centre and of the per-ray slack the
 // double tests add (which the query checks per ray, ball_path_fits).
 void CsgTracer::Impl::build_ball_bvh() {
-    if (use_float || !top.bvh || top.balls.size() != top.items.size()) return;
+    if (use_float || !top.bvh || top.balls.size() != top.items.size() || !sphere_grid.empty()) return;
     for (const Ball& b : top.balls)
         if (b.r < 0) return;
     // Few boxes along a ray (cells_100: 2 on average) gain too little to pay
@@ -266,12 +266,12 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
     // A crowd of bare spheres (every unit a sphere leaf: the spheres_*
     // lattices) up to kMaxTwoLevelUnits keeps their balls, though each
     // repeats its leaf's own test: they bring tile culling by ball and ray
-    // cones (bare_spheres.hpp). Not beyond: without cones the ball BVH
-    // alone is slower on bare spheres than the box BVH (spheres_10000 at
-    // 1024²: 2,518 M instructions against 2,138 M).
+    // cones (bare_spheres.hpp). Beyond, a grid of their balls that rays
+    // walk (sphere_grid.hpp; without it the ball BVH alone is slower on
+    // bare spheres than the box BVH: spheres_10000 at 1024², 2,518 M
+    // instructions against 2,138 M).
     const std::vector<std::uint32_t>& top_items = impl_->top.items;
     impl_->bare_spheres = !use_float && impl_->top.always.empty() && top_items.size() > 1 &&
-                          top_items.size() <= Impl::kMaxTwoLevelUnits &&
                           std::all_of(top_items.begin(), top_items.end(), [&](std::uint32_t u) {
                               return scene.nodes[u].op == Op::Leaf && scene.leaves[scene.nodes[u].first].kind == csg::PrimKind::Sphere;
                           });
@@ -302,6 +302,13 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
         const double pad = 4e-6 * impl_->frame_radius + 4 * eps;
         if (!reach.empty()) reach = {reach.lo - glm::dvec3(pad), reach.hi + glm::dvec3(pad)};
         impl_->reach = reach;
+        if (impl_->bare_spheres && impl_->top.items.size() > Impl::kMaxTwoLevelUnits) {
+            impl_->sphere_grid.build(reach, impl_->top.balls);
+            if (impl_->sphere_grid.empty()) {  // (not expected of bare spheres) as before: the box BVH, no balls
+                impl_->bare_spheres = false;
+                impl_->top.balls.clear();
+            }
+        }
         const std::vector<std::uint32_t>& items = impl_->top.items;
         const csg::Camera& cam = scene.camera;
         const bool pinhole = cam.projection == csg::Projection::Planar && !cam.orthographic && !(cam.aperture > 0);
