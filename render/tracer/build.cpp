@@ -224,8 +224,12 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
             impl_->node_accels.push_back(std::make_unique<Accel>());
             Accel& accel = *impl_->node_accels.back();
             // A difference's BVH waits for its first query (Accel::ready), but
-            // not a huge one's: its boxes would stay resident until then.
-            impl_->build_accel(accel, kids, false, n.op == Op::Difference && kids.size() < kHugeAccel);
+            // not a huge one's: its boxes would stay resident until then. So
+            // does a big root union's, whose children are the units: the
+            // top-level queries visit them, and nothing may ever ask the
+            // root's own spans (the spheres_* lattices: 50 ms of build at 10⁵).
+            const bool root_union = n.op == Op::Union && id == scene.root && kids.size() > Impl::kMaxTwoLevelUnits;
+            impl_->build_accel(accel, kids, false, (n.op == Op::Difference && kids.size() < kHugeAccel) || root_union);
             if (n.op == Op::Difference && accel.bvh) {
                 std::vector<csg::Aabb> boxes;
                 for (std::uint32_t item : accel.items) boxes.push_back(impl_->padded[item]);
@@ -258,7 +262,10 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
         const Node& m = scene.nodes[scene.children[n.first]];
         impl_->grid_minus[id] = m.op == Op::Leaf && one_span_kind(scene.leaves[m.first].kind);
     }
-    impl_->build_accel(impl_->top, units, true);
+    // Past the cones' units the top BVH waits (Accel::ready): a crowd of
+    // bare spheres walks its grid instead (sphere_grid.hpp), and only rays
+    // too far for the grid's margin would ask it.
+    impl_->build_accel(impl_->top, units, true, units.size() > Impl::kMaxTwoLevelUnits);
     if (impl_->top.items.size() == 1 && impl_->top.always.empty()) impl_->lone_unit = impl_->top.items[0];
     if (impl_->lone_unit != csg::kNone && impl_->grid_minus[impl_->lone_unit]) impl_->plate_unit = impl_->lone_unit;
     impl_->find_convex_units();
@@ -337,6 +344,7 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
         impl_->build_ball_bvh();
         impl_->build_apexes();
     }
+    if (impl_->sphere_grid.empty()) impl_->top.ready();
     impl_->float_rays = impl_->top.bvh != nullptr || impl_->ball_bvh != nullptr;
 }
 

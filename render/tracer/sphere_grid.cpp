@@ -85,32 +85,36 @@ template <class Visit>
 [[gnu::always_inline]] inline void walk(const SphereGrid& g, const RayState& st, double t0, double slack, const double& limit,
                                         Visit&& visit) {
     const glm::dvec3 p = st.o + t0 * st.d;
-    int c[3], step[3];
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    int c[3], step[3], end[3];
+    double next[3];  // the t where the ray leaves the cell across each axis
+    std::ptrdiff_t stride[3] = {1, g.n[0], std::ptrdiff_t(g.n[0]) * g.n[1]};
+    const auto boundary = [&](int a) {
+        return (g.lo[a] + double(c[a] + (step[a] > 0 ? 1 : 0)) * g.h[a] - st.o[a]) * st.invd[a];
+    };
+    std::ptrdiff_t cell = 0;
     for (int a = 0; a < 3; ++a) {
         c[a] = int(std::clamp(std::floor((p[a] - g.lo[a]) * g.inv_h[a]), 0.0, double(g.n[a] - 1)));
         step[a] = st.d[a] > 0 ? 1 : (st.d[a] < 0 ? -1 : 0);
+        end[a] = step[a] > 0 ? g.n[a] : -1;
+        next[a] = step[a] == 0 ? kInf : boundary(a);
+        cell += c[a] * stride[a];
+        stride[a] *= step[a];
     }
     const std::uint32_t* start = g.start.data();
     const std::uint32_t* items = g.items.data();
+    std::uint64_t walked = 0;
     for (;;) {
-        const std::size_t cell = (std::size_t(c[2]) * std::size_t(g.n[1]) + std::size_t(c[1])) * std::size_t(g.n[0]) + std::size_t(c[0]);
-        st.scratch->counters.grid_cells++;
-        if (visit(items + start[cell], items + start[cell + 1])) return;
-        double t_out = std::numeric_limits<double>::infinity();
-        int axis = -1;
-        for (int a = 0; a < 3; ++a) {
-            if (step[a] == 0) continue;
-            const double b = g.lo[a] + double(c[a] + (step[a] > 0 ? 1 : 0)) * g.h[a];
-            const double t = (b - st.o[a]) * st.invd[a];
-            if (t < t_out) {
-                t_out = t;
-                axis = a;
-            }
-        }
-        if (axis < 0 || t_out - slack > limit) return;
-        c[axis] += step[axis];
-        if (c[axis] < 0 || c[axis] >= g.n[axis]) return;
+        ++walked;
+        if (visit(items + start[cell], items + start[cell + 1])) break;
+        const int a = next[0] < next[1] ? (next[0] < next[2] ? 0 : 2) : (next[1] < next[2] ? 1 : 2);
+        if (!(next[a] - slack <= limit)) break;  // (inf: no boundary left)
+        c[a] += step[a];
+        if (c[a] == end[a]) break;
+        cell += stride[a];
+        next[a] = boundary(a);
     }
+    st.scratch->counters.grid_cells += walked;
 }
 
 }  // namespace
