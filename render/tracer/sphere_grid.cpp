@@ -11,6 +11,14 @@
 
 namespace kerf::render {
 
+namespace {
+
+// floor(x) clamped to [0, n - 1]: for x >= 0 the truncation is the floor,
+// and x86-64's baseline has no rounding instruction (std::floor is a call).
+inline int cell_of(double x, int n) { return int(std::min(std::max(x, 0.0), double(n - 1))); }
+
+}  // namespace
+
 void SphereGrid::build(const csg::Aabb& box, const std::vector<Ball>& balls) {
     *this = SphereGrid{};
     const std::size_t count = balls.size();
@@ -47,8 +55,8 @@ void SphereGrid::build(const csg::Aabb& box, const std::vector<Ball>& balls) {
     const auto cells = [&](const Ball& b, glm::ivec3& c0, glm::ivec3& c1) {
         for (int a = 0; a < 3; ++a) {
             const double r = b.r + margin;
-            c0[a] = int(std::clamp(std::floor((b.c[a] - r - lo[a]) * inv_h[a]), 0.0, double(n[a] - 1)));
-            c1[a] = int(std::clamp(std::floor((b.c[a] + r - lo[a]) * inv_h[a]), 0.0, double(n[a] - 1)));
+            c0[a] = cell_of((b.c[a] - r - lo[a]) * inv_h[a], n[a]);
+            c1[a] = cell_of((b.c[a] + r - lo[a]) * inv_h[a], n[a]);
         }
     };
     const std::size_t ncells = std::size_t(n[0]) * std::size_t(n[1]) * std::size_t(n[2]);
@@ -94,7 +102,7 @@ template <class Visit>
     };
     std::ptrdiff_t cell = 0;
     for (int a = 0; a < 3; ++a) {
-        c[a] = int(std::clamp(std::floor((p[a] - g.lo[a]) * g.inv_h[a]), 0.0, double(g.n[a] - 1)));
+        c[a] = cell_of((p[a] - g.lo[a]) * g.inv_h[a], g.n[a]);
         step[a] = st.d[a] > 0 ? 1 : (st.d[a] < 0 ? -1 : 0);
         end[a] = step[a] > 0 ? g.n[a] : -1;
         next[a] = step[a] == 0 ? kInf : boundary(a);

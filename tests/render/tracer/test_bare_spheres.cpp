@@ -178,9 +178,9 @@ TEST_CASE("bare spheres: past the cones' 4,096 units, rays walk the balls' grid 
         double h;
         int rays;
     } cases[] = {{11, glm::dvec3(0.0), 1, 4913, true, false, 1e-7, 80},   {12, glm::dvec3(0.0), 1, 5000, false, false, 1e-7, 80},
-                 {13, glm::dvec3(0.0), 1e-4, 4913, true, false, 1e-7, 40}, {14, glm::dvec3(0.0), 1e-4, 5000, false, false, 1e-7, 40},
-                 {15, glm::dvec3(0.0), 1e4, 4913, true, false, 1e-7, 40},  {16, glm::dvec3(0.0), 1e4, 5000, false, false, 1e-7, 40},
-                 {17, far, 1, 4913, true, false, 1e-6, 40},                {18, far, 1, 5000, false, false, 1e-6, 40},
+                 {13, glm::dvec3(0.0), 1e-4, 4913, true, false, 1e-7, 40}, {14, glm::dvec3(0.0), 1e-4, 5000, false, false, 1e-7, 80},
+                 {15, glm::dvec3(0.0), 1e4, 4913, true, false, 1e-7, 40},  {16, glm::dvec3(0.0), 1e4, 5000, false, false, 1e-7, 80},
+                 {17, far, 1, 4913, true, false, 1e-6, 40},                {18, far, 1, 5000, false, false, 1e-6, 80},
                  {19, glm::dvec3(0.0), 1, 5000, false, true, 1e-4, 30}};
     for (const auto& k : cases) {
         INFO("case " << k.seed);
