@@ -136,62 +136,60 @@ Result check(std::uint64_t seed, const glm::dvec3& at, double size, int n, bool 
     return res;
 }
 
+struct Case {
+    std::uint64_t seed;
+    glm::dvec3 at;
+    double size;
+    int n;
+    bool lattice, use_float;
+    double h;
+    int rays;
+};
+
+const glm::dvec3 kFar = 1e6 * glm::normalize(glm::dvec3(0.4, -1, 0.3));
+
+// Every case's rays against point membership. The double path's rays went
+// through cones (so through the bare loop), or for crowds past the cones'
+// 4,096 units (`grid`) walked the balls' grid; the float path's take
+// neither (no leaf balls).
+void check_cases(const std::vector<Case>& cases, bool grid) {
+    for (const Case& k : cases) {
+        INFO("case " << k.seed);
+        const Result r = check(k.seed, k.at, k.size, k.n, k.lattice, k.use_float, k.h, k.rays);
+        CHECK(r.hits > k.rays / 3);
+        CHECK(r.shadows > k.rays / 20);
+        CHECK(r.departures > 0);
+        if (!k.lattice) CHECK(r.twin_hits > 0);
+        CHECK((r.cones > 0) == (!k.use_float && !grid));
+        CHECK((r.cells > 0) == (!k.use_float && grid));
+    }
+}
+
 }  // namespace
 
 TEST_CASE("bare spheres: camera and shadow rays through crowds of sphere leaves keep every entry and shadow",
           "[render][oracle]") {
-    const glm::dvec3 far = 1e6 * glm::normalize(glm::dvec3(0.4, -1, 0.3));
-    const struct {
-        std::uint64_t seed;
-        glm::dvec3 at;
-        double size;
-        int n;
-        bool lattice, use_float;
-        double h;
-        int rays;
-    } cases[] = {{1, glm::dvec3(0.0), 1, 60, false, false, 1e-7, 300},   {2, glm::dvec3(0.0), 1, 343, true, false, 1e-7, 200},
-                 {3, glm::dvec3(0.0), 1, 320, false, false, 1e-7, 200},  {4, glm::dvec3(0.0), 1e-4, 320, false, false, 1e-7, 120},
-                 {5, glm::dvec3(0.0), 1e4, 343, true, false, 1e-7, 120}, {6, far, 1, 320, false, false, 1e-6, 120},
-                 {7, far, 1, 64, true, false, 1e-6, 120},                {8, glm::dvec3(0.0), 1, 320, false, true, 1e-4, 120}};
-    for (const auto& k : cases) {
-        INFO("case " << k.seed);
-        const Result r = check(k.seed, k.at, k.size, k.n, k.lattice, k.use_float, k.h, k.rays);
-        CHECK(r.hits > k.rays / 3);
-        CHECK(r.shadows > k.rays / 20);
-        CHECK(r.departures > 0);
-        if (!k.lattice) CHECK(r.twin_hits > 0);
-        // The double path's rays went through cones (so through the bare
-        // loop); the float path's never do (no leaf balls).
-        CHECK((r.cones > 0) == !k.use_float);
-    }
+    check_cases({{1, glm::dvec3(0.0), 1, 60, false, false, 1e-7, 300},
+                 {2, glm::dvec3(0.0), 1, 343, true, false, 1e-7, 200},
+                 {3, glm::dvec3(0.0), 1, 320, false, false, 1e-7, 200},
+                 {4, glm::dvec3(0.0), 1e-4, 320, false, false, 1e-7, 120},
+                 {5, glm::dvec3(0.0), 1e4, 343, true, false, 1e-7, 120},
+                 {6, kFar, 1, 320, false, false, 1e-6, 120},
+                 {7, kFar, 1, 64, true, false, 1e-6, 120},
+                 {8, glm::dvec3(0.0), 1, 320, false, true, 1e-4, 120}},
+                false);
 }
 
 TEST_CASE("bare spheres: past the cones' 4,096 units, rays walk the balls' grid and keep every entry and shadow",
           "[render][oracle]") {
-    const glm::dvec3 far = 1e6 * glm::normalize(glm::dvec3(0.4, -1, 0.3));
-    const struct {
-        std::uint64_t seed;
-        glm::dvec3 at;
-        double size;
-        int n;
-        bool lattice, use_float;
-        double h;
-        int rays;
-    } cases[] = {{11, glm::dvec3(0.0), 1, 4913, true, false, 1e-7, 80},   {12, glm::dvec3(0.0), 1, 5000, false, false, 1e-7, 80},
-                 {13, glm::dvec3(0.0), 1e-4, 4913, true, false, 1e-7, 40}, {14, glm::dvec3(0.0), 1e-4, 5000, false, false, 1e-7, 80},
-                 {15, glm::dvec3(0.0), 1e4, 4913, true, false, 1e-7, 40},  {16, glm::dvec3(0.0), 1e4, 5000, false, false, 1e-7, 80},
-                 {17, far, 1, 4913, true, false, 1e-6, 40},                {18, far, 1, 5000, false, false, 1e-6, 80},
-                 {19, glm::dvec3(0.0), 1, 5000, false, true, 1e-4, 30}};
-    for (const auto& k : cases) {
-        INFO("case " << k.seed);
-        const Result r = check(k.seed, k.at, k.size, k.n, k.lattice, k.use_float, k.h, k.rays);
-        CHECK(r.hits > k.rays / 3);
-        CHECK(r.shadows > k.rays / 20);
-        CHECK(r.departures > 0);
-        if (!k.lattice) CHECK(r.twin_hits > 0);
-        // The double path's rays walked the grid (no cones); the float
-        // path's never do.
-        CHECK(r.cones == 0);
-        CHECK((r.cells > 0) == !k.use_float);
-    }
+    check_cases({{11, glm::dvec3(0.0), 1, 4913, true, false, 1e-7, 80},
+                 {12, glm::dvec3(0.0), 1, 5000, false, false, 1e-7, 80},
+                 {13, glm::dvec3(0.0), 1e-4, 4913, true, false, 1e-7, 40},
+                 {14, glm::dvec3(0.0), 1e-4, 5000, false, false, 1e-7, 80},
+                 {15, glm::dvec3(0.0), 1e4, 4913, true, false, 1e-7, 40},
+                 {16, glm::dvec3(0.0), 1e4, 5000, false, false, 1e-7, 80},
+                 {17, kFar, 1, 4913, true, false, 1e-6, 40},
+                 {18, kFar, 1, 5000, false, false, 1e-6, 80},
+                 {19, glm::dvec3(0.0), 1, 5000, false, true, 1e-4, 30}},
+                true);
 }
