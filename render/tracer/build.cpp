@@ -314,6 +314,7 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
             if (impl_->sphere_grid.empty()) {  // (not expected of bare spheres) as before: the box BVH, no balls
                 impl_->bare_spheres = false;
                 impl_->top.balls.clear();
+                impl_->top.sphere_minus.clear();
             }
         }
         const std::vector<std::uint32_t>& items = impl_->top.items;
