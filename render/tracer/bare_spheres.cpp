@@ -12,6 +12,7 @@ namespace kerf::render {
 int bare_first_hit(const CsgTracer::Impl& impl, const TraceRay& ray, TraceHit& hit, TraceScratch& scratch) {
     RayState st;
     if (!make_state(st, &impl, ray, scratch, false)) return 0;
+    if (!impl.sphere_grid.empty()) return grid_first_hit(st, ray, hit);
     const RayCone* cone = ray_cone(st, ray, true);
     if (!cone) return -1;
     double best = ray.tfar;
@@ -35,6 +36,7 @@ int bare_first_hit(const CsgTracer::Impl& impl, const TraceRay& ray, TraceHit& h
 int bare_occluded(const CsgTracer::Impl& impl, const TraceRay& ray, TraceScratch& scratch, std::uint32_t skip) {
     RayState st;
     if (!make_state(st, &impl, ray, scratch, false)) return 0;
+    if (!impl.sphere_grid.empty()) return grid_occluded(st, ray, skip);
     const RayCone* cone = ray_cone(st, ray, false);
     if (!cone) return -1;
     // A point of the segment is within (tfar - t)·|d| + rho of the light.

@@ -67,5 +67,10 @@ namespace kerf::render {
 // the ray has no cone (the caller asks the general path), else the answer.
 int bare_first_hit(const CsgTracer::Impl& impl, const TraceRay& ray, TraceHit& hit, TraceScratch& scratch);
 int bare_occluded(const CsgTracer::Impl& impl, const TraceRay& ray, TraceScratch& scratch, std::uint32_t skip);
+// sphere_grid.cpp: the same for a crowd with a SphereGrid (past the cones'
+// units), its ray's state made; -1 when the ray rounds beyond the grid's
+// margin (SphereGrid::fits).
+int grid_first_hit(RayState& st, const TraceRay& ray, TraceHit& hit);
+int grid_occluded(RayState& st, const TraceRay& ray, std::uint32_t skip);
 
 }  // namespace kerf::render

@@ -131,7 +131,7 @@ void CsgTracer::Impl::build_accel(Accel& accel, const std::vector<std::uint32_t>
 // Embree's sphere test, of the rounded centre and of the per-ray slack the
 // double tests add (which the query checks per ray, ball_path_fits).
 void CsgTracer::Impl::build_ball_bvh() {
-    if (use_float || !top.bvh || top.balls.size() != top.items.size()) return;
+    if (use_float || !top.bvh || top.balls.size() != top.items.size() || !sphere_grid.empty()) return;
     for (const Ball& b : top.balls)
         if (b.r < 0) return;
     // Few boxes along a ray (cells_100: 2 on average) gain too little to pay
@@ -224,8 +224,12 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
             impl_->node_accels.push_back(std::make_unique<Accel>());
             Accel& accel = *impl_->node_accels.back();
             // A difference's BVH waits for its first query (Accel::ready), but
-            // not a huge one's: its boxes would stay resident until then.
-            impl_->build_accel(accel, kids, false, n.op == Op::Difference && kids.size() < kHugeAccel);
+            // not a huge one's: its boxes would stay resident until then. So
+            // does a big root union's, whose children are the units: the
+            // top-level queries visit them, and nothing may ever ask the
+            // root's own spans (the spheres_* lattices: 50 ms of build at 10⁵).
+            const bool root_union = n.op == Op::Union && id == scene.root && kids.size() > Impl::kMaxTwoLevelUnits;
+            impl_->build_accel(accel, kids, false, (n.op == Op::Difference && kids.size() < kHugeAccel) || root_union);
             if (n.op == Op::Difference && accel.bvh) {
                 std::vector<csg::Aabb> boxes;
                 for (std::uint32_t item : accel.items) boxes.push_back(impl_->padded[item]);
@@ -258,7 +262,10 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
         const Node& m = scene.nodes[scene.children[n.first]];
         impl_->grid_minus[id] = m.op == Op::Leaf && one_span_kind(scene.leaves[m.first].kind);
     }
-    impl_->build_accel(impl_->top, units, true);
+    // Past the cones' units the top BVH waits (Accel::ready): a crowd of
+    // bare spheres walks its grid instead (sphere_grid.hpp), and only rays
+    // too far for the grid's margin would ask it.
+    impl_->build_accel(impl_->top, units, true, units.size() > Impl::kMaxTwoLevelUnits);
     if (impl_->top.items.size() == 1 && impl_->top.always.empty()) impl_->lone_unit = impl_->top.items[0];
     if (impl_->lone_unit != csg::kNone && impl_->grid_minus[impl_->lone_unit]) impl_->plate_unit = impl_->lone_unit;
     impl_->find_convex_units();
@@ -266,12 +273,12 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
     // A crowd of bare spheres (every unit a sphere leaf: the spheres_*
     // lattices) up to kMaxTwoLevelUnits keeps their balls, though each
     // repeats its leaf's own test: they bring tile culling by ball and ray
-    // cones (bare_spheres.hpp). Not beyond: without cones the ball BVH
-    // alone is slower on bare spheres than the box BVH (spheres_10000 at
-    // 1024²: 2,518 M instructions against 2,138 M).
+    // cones (bare_spheres.hpp). Beyond, a grid of their balls that rays
+    // walk (sphere_grid.hpp; without it the ball BVH alone is slower on
+    // bare spheres than the box BVH: spheres_10000 at 1024², 2,518 M
+    // instructions against 2,138 M).
     const std::vector<std::uint32_t>& top_items = impl_->top.items;
     impl_->bare_spheres = !use_float && impl_->top.always.empty() && top_items.size() > 1 &&
-                          top_items.size() <= Impl::kMaxTwoLevelUnits &&
                           std::all_of(top_items.begin(), top_items.end(), [&](std::uint32_t u) {
                               return scene.nodes[u].op == Op::Leaf && scene.leaves[scene.nodes[u].first].kind == csg::PrimKind::Sphere;
                           });
@@ -302,6 +309,14 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
         const double pad = 4e-6 * impl_->frame_radius + 4 * eps;
         if (!reach.empty()) reach = {reach.lo - glm::dvec3(pad), reach.hi + glm::dvec3(pad)};
         impl_->reach = reach;
+        if (impl_->bare_spheres && impl_->top.items.size() > Impl::kMaxTwoLevelUnits) {
+            impl_->sphere_grid.build(reach, impl_->top.balls);
+            if (impl_->sphere_grid.empty()) {  // (not expected of bare spheres) as before: the box BVH, no balls
+                impl_->bare_spheres = false;
+                impl_->top.balls.clear();
+                impl_->top.sphere_minus.clear();
+            }
+        }
         const std::vector<std::uint32_t>& items = impl_->top.items;
         const csg::Camera& cam = scene.camera;
         const bool pinhole = cam.projection == csg::Projection::Planar && !cam.orthographic && !(cam.aperture > 0);
@@ -336,6 +351,7 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
         impl_->build_ball_bvh();
         impl_->build_apexes();
     }
+    if (impl_->sphere_grid.empty()) impl_->top.ready();
     impl_->float_rays = impl_->top.bvh != nullptr || impl_->ball_bvh != nullptr;
 }
 

@@ -18,6 +18,7 @@
 #include "csg/scene.hpp"
 #include "render/primitives/prism_grid.hpp"
 #include "render/tracer/box_grid.hpp"
+#include "render/tracer/sphere_grid.hpp"
 #include "render/tracer/tracer.hpp"
 #include "render/tracer/unit_balls.hpp"
 
@@ -177,6 +178,9 @@ struct CsgTracer::Impl {
     // Every unit a sphere leaf with a ball, on the double path: a cone's
     // units are visited in locals (bare_spheres.hpp).
     bool bare_spheres = false;
+    // Such a crowd of more than kMaxTwoLevelUnits units: its cells, which
+    // its rays walk instead of cones (sphere_grid.hpp).
+    SphereGrid sphere_grid;
     // One level of cones up to kMaxConeUnits units, two up to
     // kMaxTwoLevelUnits (ray_cones.hpp); beyond, the ball BVH alone (the
     // apexes' per-unit arrays grow with the units, and no scene was measured).

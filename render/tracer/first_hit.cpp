@@ -205,6 +205,7 @@ bool CsgTracer::intersect(const TraceRay& ray, TraceHit& hit, TraceScratch& scra
         const bool balls = start_before_balls(st, ray.tnear);
         RTCRayHit rh = make_rayhit(st, ray.tnear, ctx.best);
         ctx.tfar = rh.ray.tfar;
+        if (!balls) impl_->top.ready();  // (a bare crowd's grid defers it: build.cpp)
         rtcIntersect1(balls ? impl_->ball_bvh : impl_->top.bvh, &ctx.rtc, &rh);
         if (ctx.ncandidates > 0) evaluate_queued(ctx);
     }

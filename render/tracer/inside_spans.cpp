@@ -28,6 +28,7 @@ void CsgTracer::inside_spans(const TraceRay& ray, TraceScratch& scratch, std::ve
         for (std::uint32_t node : impl_->top.items) gather_unit(ctx, node);
     } else {
         RTCRayHit rh = make_rayhit(st, ray.tnear, ray.tfar);
+        impl_->top.ready();  // (a bare crowd's grid defers it: build.cpp)
         rtcIntersect1(impl_->top.bvh, &ctx.rtc, &rh);
     }
     const int n = span_normalize_union(stack.at(base), int(stack.size() - base), ctx.gather_eps);

@@ -261,6 +261,7 @@ bool CsgTracer::occluded(const TraceRay& ray, TraceScratch& scratch, const Depar
     // boxes.
     const bool balls = ball_slack_fits(st) && st.leave + ball_margin(st) <= ray.tfar;
     RTCRay r = make_rayhit(st, ray.tnear, ray.tfar).ray;
+    if (!balls) impl_->top.ready();  // (a bare crowd's grid defers it: build.cpp)
     rtcOccluded1(balls ? impl_->ball_bvh : impl_->top.bvh, &ctx.rtc, &r);
     return ctx.found;
 }

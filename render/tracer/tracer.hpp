@@ -20,6 +20,7 @@ struct TraceCounters {
     std::uint64_t union_ops = 0, difference_ops = 0, intersection_ops = 0;
     std::uint64_t interval_tests = 0;  // intersect_leaf calls
     std::uint64_t spans_found = 0;     // primitive intervals those calls returned
+    std::uint64_t grid_cells = 0;      // cells a big bare crowd's rays walked (sphere_grid.hpp)
 };
 
 // A leaf's spans along one ray, solved ahead of the query that needs them

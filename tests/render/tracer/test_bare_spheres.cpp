@@ -9,7 +9,9 @@
 // ±0.01 % of the spheres or tangent to them; shadow rays from points near
 // the spheres and, as the shader makes them, from lit points with their
 // Departure (the unit left is skipped). The float path keeps no leaf balls
-// and takes the general query: checked the same way.
+// and takes the general query: checked the same way. Crowds of more than
+// 4,096 units (17³ lattices, 5,000 random spheres) walk a grid of the
+// balls instead of cones (sphere_grid.hpp), at the same scales.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -74,7 +76,7 @@ Crowd bare_crowd(RandomCsg& g, const glm::dvec3& at, double size, int n, bool la
 
 struct Result {
     int hits = 0, shadows = 0, departures = 0, twin_hits = 0;
-    std::uint64_t cones = 0;
+    std::uint64_t cones = 0, cells = 0;
 };
 
 Result check(std::uint64_t seed, const glm::dvec3& at, double size, int n, bool lattice, bool use_float, double h,
@@ -130,35 +132,64 @@ Result check(std::uint64_t seed, const glm::dvec3& at, double size, int n, bool 
         res.shadows += sr.te < sr.dist;
     }
     res.cones = kept.cones.built;
+    res.cells = kept.counters.grid_cells;
     return res;
 }
 
-}  // namespace
+struct Case {
+    std::uint64_t seed;
+    glm::dvec3 at;
+    double size;
+    int n;
+    bool lattice, use_float;
+    double h;
+    int rays;
+};
 
-TEST_CASE("bare spheres: camera and shadow rays through crowds of sphere leaves keep every entry and shadow",
-          "[render][oracle]") {
-    const glm::dvec3 far = 1e6 * glm::normalize(glm::dvec3(0.4, -1, 0.3));
-    const struct {
-        std::uint64_t seed;
-        glm::dvec3 at;
-        double size;
-        int n;
-        bool lattice, use_float;
-        double h;
-        int rays;
-    } cases[] = {{1, glm::dvec3(0.0), 1, 60, false, false, 1e-7, 300},   {2, glm::dvec3(0.0), 1, 343, true, false, 1e-7, 200},
-                 {3, glm::dvec3(0.0), 1, 320, false, false, 1e-7, 200},  {4, glm::dvec3(0.0), 1e-4, 320, false, false, 1e-7, 120},
-                 {5, glm::dvec3(0.0), 1e4, 343, true, false, 1e-7, 120}, {6, far, 1, 320, false, false, 1e-6, 120},
-                 {7, far, 1, 64, true, false, 1e-6, 120},                {8, glm::dvec3(0.0), 1, 320, false, true, 1e-4, 120}};
-    for (const auto& k : cases) {
+const glm::dvec3 kFar = 1e6 * glm::normalize(glm::dvec3(0.4, -1, 0.3));
+
+// Every case's rays against point membership. The double path's rays went
+// through cones (so through the bare loop), or for crowds past the cones'
+// 4,096 units (`grid`) walked the balls' grid; the float path's take
+// neither (no leaf balls).
+void check_cases(const std::vector<Case>& cases, bool grid) {
+    for (const Case& k : cases) {
         INFO("case " << k.seed);
         const Result r = check(k.seed, k.at, k.size, k.n, k.lattice, k.use_float, k.h, k.rays);
         CHECK(r.hits > k.rays / 3);
         CHECK(r.shadows > k.rays / 20);
         CHECK(r.departures > 0);
         if (!k.lattice) CHECK(r.twin_hits > 0);
-        // The double path's rays went through cones (so through the bare
-        // loop); the float path's never do (no leaf balls).
-        CHECK((r.cones > 0) == !k.use_float);
+        CHECK((r.cones > 0) == (!k.use_float && !grid));
+        CHECK((r.cells > 0) == (!k.use_float && grid));
     }
+}
+
+}  // namespace
+
+TEST_CASE("bare spheres: camera and shadow rays through crowds of sphere leaves keep every entry and shadow",
+          "[render][oracle]") {
+    check_cases({{1, glm::dvec3(0.0), 1, 60, false, false, 1e-7, 300},
+                 {2, glm::dvec3(0.0), 1, 343, true, false, 1e-7, 200},
+                 {3, glm::dvec3(0.0), 1, 320, false, false, 1e-7, 200},
+                 {4, glm::dvec3(0.0), 1e-4, 320, false, false, 1e-7, 120},
+                 {5, glm::dvec3(0.0), 1e4, 343, true, false, 1e-7, 120},
+                 {6, kFar, 1, 320, false, false, 1e-6, 120},
+                 {7, kFar, 1, 64, true, false, 1e-6, 120},
+                 {8, glm::dvec3(0.0), 1, 320, false, true, 1e-4, 120}},
+                false);
+}
+
+TEST_CASE("bare spheres: past the cones' 4,096 units, rays walk the balls' grid and keep every entry and shadow",
+          "[render][oracle]") {
+    check_cases({{11, glm::dvec3(0.0), 1, 4913, true, false, 1e-7, 80},
+                 {12, glm::dvec3(0.0), 1, 5000, false, false, 1e-7, 80},
+                 {13, glm::dvec3(0.0), 1e-4, 4913, true, false, 1e-7, 40},
+                 {14, glm::dvec3(0.0), 1e-4, 5000, false, false, 1e-7, 80},
+                 {15, glm::dvec3(0.0), 1e4, 4913, true, false, 1e-7, 40},
+                 {16, glm::dvec3(0.0), 1e4, 5000, false, false, 1e-7, 80},
+                 {17, kFar, 1, 4913, true, false, 1e-6, 40},
+                 {18, kFar, 1, 5000, false, false, 1e-6, 80},
+                 {19, glm::dvec3(0.0), 1, 5000, false, true, 1e-4, 30}},
+                true);
 }

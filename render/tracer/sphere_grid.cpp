@@ -1,0 +1,172 @@
+// The grid of a big bare-sphere crowd (sphere_grid.hpp): its build, and the
+// camera and shadow queries that walk it (bare_spheres.hpp's grid_first_hit
+// and grid_occluded).
+#include "render/tracer/sphere_grid.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "render/tracer/bare_spheres.hpp"
+
+namespace kerf::render {
+
+namespace {
+
+// floor(x) clamped to [0, n - 1]: for x >= 0 the truncation is the floor,
+// and x86-64's baseline has no rounding instruction (std::floor is a call).
+inline int cell_of(double x, int n) { return int(std::min(std::max(x, 0.0), double(n - 1))); }
+
+}  // namespace
+
+void SphereGrid::build(const csg::Aabb& box, const std::vector<Ball>& balls) {
+    *this = SphereGrid{};
+    const std::size_t count = balls.size();
+    if (count == 0 || box.empty()) return;
+    std::vector<double> radii;
+    radii.reserve(count);
+    for (const Ball& b : balls) {
+        if (!(b.r >= 0)) return;
+        radii.push_back(b.r);
+    }
+    std::nth_element(radii.begin(), radii.begin() + std::ptrdiff_t(count / 2), radii.end());
+    const double r_mid = radii[count / 2];
+    radii = {};
+    const glm::dvec3 ext = box.hi - box.lo;
+    if (!(ext.x > 0 && ext.y > 0 && ext.z > 0) || !std::isfinite(ext.x + ext.y + ext.z)) return;
+    // About one unit per cell (a flat crowd's thin axis counts as one ball
+    // thick), but no smaller than the middle ball's radius: a dense crowd
+    // of overlapping balls would list each in dozens of cells.
+    const glm::dvec3 e = glm::max(ext, glm::dvec3(2 * r_mid));
+    double h0 = std::max(std::cbrt(e.x * e.y * e.z / double(count)), r_mid);
+    for (;;) {
+        for (int a = 0; a < 3; ++a) n[a] = int(std::clamp(std::lround(ext[a] / h0), 1L, 2048L));
+        if (double(n[0]) * n[1] * n[2] <= 4.0 * double(count) + 64) break;
+        h0 *= 1.25;
+    }
+    lo = box.lo;
+    h = ext / glm::dvec3(n[0], n[1], n[2]);
+    inv_h = 1.0 / h;
+    size = ext.x + ext.y + ext.z;
+    mag = std::abs(box.lo.x) + std::abs(box.lo.y) + std::abs(box.lo.z) + std::abs(box.hi.x) + std::abs(box.hi.y) +
+          std::abs(box.hi.z);
+    margin = 1e-3 * std::min({h.x, h.y, h.z}) + 1e-12 * mag;
+    // Each unit's cells: those its ball's box, grown by the margin, meets.
+    const auto cells = [&](const Ball& b, glm::ivec3& c0, glm::ivec3& c1) {
+        for (int a = 0; a < 3; ++a) {
+            const double r = b.r + margin;
+            c0[a] = cell_of((b.c[a] - r - lo[a]) * inv_h[a], n[a]);
+            c1[a] = cell_of((b.c[a] + r - lo[a]) * inv_h[a], n[a]);
+        }
+    };
+    const std::size_t ncells = std::size_t(n[0]) * std::size_t(n[1]) * std::size_t(n[2]);
+    std::vector<std::uint32_t> fill(ncells + 1, 0);
+    std::uint64_t total = 0;
+    glm::ivec3 c0, c1;
+    for (const Ball& b : balls) {
+        cells(b, c0, c1);
+        for (int z = c0.z; z <= c1.z; ++z)
+            for (int y = c0.y; y <= c1.y; ++y)
+                for (int x = c0.x; x <= c1.x; ++x) ++fill[(std::size_t(z) * n[1] + std::size_t(y)) * n[0] + std::size_t(x) + 1];
+        total += std::uint64_t(c1.x - c0.x + 1) * std::uint64_t(c1.y - c0.y + 1) * std::uint64_t(c1.z - c0.z + 1);
+    }
+    if (total > 64 * std::uint64_t(count) + 4096) return;  // balls far larger than a cell: not this crowd's scheme
+    for (std::size_t i = 0; i < ncells; ++i) fill[i + 1] += fill[i];
+    items.resize(std::size_t(total));
+    start = fill;
+    for (std::uint32_t i = 0; i < count; ++i) {
+        cells(balls[i], c0, c1);
+        for (int z = c0.z; z <= c1.z; ++z)
+            for (int y = c0.y; y <= c1.y; ++y)
+                for (int x = c0.x; x <= c1.x; ++x) items[fill[(std::size_t(z) * n[1] + std::size_t(y)) * n[0] + std::size_t(x)]++] = i;
+    }
+}
+
+namespace {
+
+// The cells a ray crosses from t0 on, in order (3D DDA): visit(first, last)
+// gets each cell's units and returns true to stop; the walk also stops at
+// the first cell whose exit, less `slack`, lies past `limit` (which the
+// visits may lower). Each boundary's t is solved from the ray's origin,
+// not accumulated, so its error stays that of one step.
+template <class Visit>
+[[gnu::always_inline]] inline void walk(const SphereGrid& g, const RayState& st, double t0, double slack, const double& limit,
+                                        Visit&& visit) {
+    const glm::dvec3 p = st.o + t0 * st.d;
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    int c[3], step[3], end[3];
+    double next[3];  // the t where the ray leaves the cell across each axis
+    std::ptrdiff_t stride[3] = {1, g.n[0], std::ptrdiff_t(g.n[0]) * g.n[1]};
+    const auto boundary = [&](int a) {
+        return (g.lo[a] + double(c[a] + (step[a] > 0 ? 1 : 0)) * g.h[a] - st.o[a]) * st.invd[a];
+    };
+    std::ptrdiff_t cell = 0;
+    for (int a = 0; a < 3; ++a) {
+        c[a] = cell_of((p[a] - g.lo[a]) * g.inv_h[a], g.n[a]);
+        step[a] = st.d[a] > 0 ? 1 : (st.d[a] < 0 ? -1 : 0);
+        end[a] = step[a] > 0 ? g.n[a] : -1;
+        next[a] = step[a] == 0 ? kInf : boundary(a);
+        cell += c[a] * stride[a];
+        stride[a] *= step[a];
+    }
+    const std::uint32_t* start = g.start.data();
+    const std::uint32_t* items = g.items.data();
+    std::uint64_t walked = 0;
+    for (;;) {
+        ++walked;
+        if (visit(items + start[cell], items + start[cell + 1])) break;
+        const int a = next[0] < next[1] ? (next[0] < next[2] ? 0 : 2) : (next[1] < next[2] ? 1 : 2);
+        if (!(next[a] - slack <= limit)) break;  // (inf: no boundary left)
+        c[a] += step[a];
+        if (c[a] == end[a]) break;
+        cell += stride[a];
+        next[a] = boundary(a);
+    }
+    st.scratch->counters.grid_cells += walked;
+}
+
+}  // namespace
+
+int grid_first_hit(RayState& st, const TraceRay& ray, TraceHit& hit) {
+    const CsgTracer::Impl& impl = *st.impl;
+    const SphereGrid& g = impl.sphere_grid;
+    const double t0 = std::max(ray.tnear, st.enter);
+    double best = std::min(ray.tfar, st.leave);
+    if (!(t0 <= best)) return 0;
+    if (!g.fits(st.o, st.d, best)) return -1;
+    best = ray.tfar;
+    std::uint32_t best_unit = 0;
+    bool found = false;
+    Span entry;
+    walk(g, st, t0, g.margin * st.inv_len, best, [&](const std::uint32_t* u, const std::uint32_t* end) {
+        for (; u != end; ++u) {
+            if (!bare_sphere_entry(st, *u, impl.top.items[*u], ray.tnear, best, entry)) continue;
+            if (!(entry.t0 < best || (entry.t0 == best && found && *u < best_unit))) continue;
+            best = entry.t0;
+            best_unit = *u;
+            hit.surface = entry.e0;
+            found = true;
+        }
+        return false;
+    });
+    if (found) hit.t = best;
+    return found ? 1 : 0;
+}
+
+int grid_occluded(RayState& st, const TraceRay& ray, std::uint32_t skip) {
+    const CsgTracer::Impl& impl = *st.impl;
+    const SphereGrid& g = impl.sphere_grid;
+    const double t0 = std::max(ray.tnear, st.enter);
+    const double t1 = std::min(ray.tfar, st.leave);
+    if (!(t0 <= t1)) return 0;
+    if (!g.fits(st.o, st.d, t1)) return -1;
+    bool blocked = false;
+    walk(g, st, t0, g.margin * st.inv_len, ray.tfar, [&](const std::uint32_t* u, const std::uint32_t* end) {
+        for (; u != end; ++u)
+            if (*u != skip && bare_sphere_blocks(st, *u, impl.top.items[*u], ray.tnear, ray.tfar)) return blocked = true;
+        return false;
+    });
+    return blocked ? 1 : 0;
+}
+
+}  // namespace kerf::render
