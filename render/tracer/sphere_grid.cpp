@@ -71,6 +71,7 @@ void SphereGrid::build(const csg::Aabb& box, const std::vector<Ball>& balls) {
         total += std::uint64_t(c1.x - c0.x + 1) * std::uint64_t(c1.y - c0.y + 1) * std::uint64_t(c1.z - c0.z + 1);
     }
     if (total > 64 * std::uint64_t(count) + 4096) return;  // balls far larger than a cell: not this crowd's scheme
+    if (total > std::numeric_limits<std::uint32_t>::max()) return;  // (start and fill count in 32 bits)
     for (std::size_t i = 0; i < ncells; ++i) fill[i + 1] += fill[i];
     items.resize(std::size_t(total));
     start = fill;
@@ -103,7 +104,10 @@ template <class Visit>
     std::ptrdiff_t cell = 0;
     for (int a = 0; a < 3; ++a) {
         c[a] = cell_of((p[a] - g.lo[a]) * g.inv_h[a], g.n[a]);
-        step[a] = st.d[a] > 0 ? 1 : (st.d[a] < 0 ? -1 : 0);
+        // A component so small its reciprocal overflows (denormal) moves the
+        // ray by nothing across the grid: parallel, as a zero one (else a
+        // start on a cell plane gives 0 * inf = NaN and ends the walk).
+        step[a] = !std::isfinite(st.invd[a]) ? 0 : st.d[a] > 0 ? 1 : (st.d[a] < 0 ? -1 : 0);
         end[a] = step[a] > 0 ? g.n[a] : -1;
         next[a] = step[a] == 0 ? kInf : boundary(a);
         cell += c[a] * stride[a];
