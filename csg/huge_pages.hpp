@@ -21,11 +21,6 @@ void advise_huge_pages(void* data, std::size_t bytes);
 template <typename T>
 void reserve_huge(std::vector<T>& v, std::size_t count) {
     if (count <= v.capacity()) return;
-    if (v.empty()) {
-        v.reserve(count);
-        advise_huge_pages(v.data(), v.capacity() * sizeof(T));
-        return;
-    }
     std::vector<T> fresh;
     fresh.reserve(count);
     advise_huge_pages(fresh.data(), fresh.capacity() * sizeof(T));

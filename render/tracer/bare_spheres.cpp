@@ -15,22 +15,13 @@ int bare_first_hit(const CsgTracer::Impl& impl, const TraceRay& ray, TraceHit& h
     if (!impl.sphere_grid.empty()) return grid_first_hit(st, ray, hit);
     const RayCone* cone = ray_cone(st, ray, true);
     if (!cone) return -1;
-    double best = ray.tfar;
-    std::uint32_t best_unit = 0;
-    bool found = false;
-    Span entry;
+    NearestBare near{ray.tfar};
     const double stop = st.len * (1 + 1e-9);
     for (const ConeUnit& u : cone->units) {
-        if (u.key > best * stop) break;
-        if (!bare_sphere_entry(st, u.item, impl.top.items[u.item], ray.tnear, best, entry)) continue;
-        if (!(entry.t0 < best || (entry.t0 == best && found && u.item < best_unit))) continue;
-        best = entry.t0;
-        best_unit = u.item;
-        hit.surface = entry.e0;
-        found = true;
+        if (u.key > near.best * stop) break;
+        near.offer(st, u.item, impl.top.items[u.item], ray.tnear);
     }
-    if (found) hit.t = best;
-    return found ? 1 : 0;
+    return near.answer(hit);
 }
 
 int bare_occluded(const CsgTracer::Impl& impl, const TraceRay& ray, TraceScratch& scratch, std::uint32_t skip) {

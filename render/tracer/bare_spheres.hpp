@@ -62,6 +62,33 @@ namespace kerf::render {
     return bare_sphere_span(st, node, a, b, sp) && std::min(sp.t1, b) - std::max(sp.t0, a) > st.eps;
 }
 
+// The nearest first entry among the units offered, in any order (a cone's
+// list, the grid's cells): ties go by unit index, as take_entry's
+// (first_hit.cpp). `best` starts at the window's end and only shrinks, so
+// the cone loop and the grid walk stop on it.
+struct NearestBare {
+    double best;
+    std::uint32_t best_unit = 0;
+    bool found = false;
+    SpanEnd surface{};
+    [[gnu::always_inline]] void offer(RayState& st, std::uint32_t item, std::uint32_t node, double a) {
+        Span entry;
+        if (!bare_sphere_entry(st, item, node, a, best, entry)) return;
+        if (!(entry.t0 < best || (entry.t0 == best && found && item < best_unit))) return;
+        best = entry.t0;
+        best_unit = item;
+        surface = entry.e0;
+        found = true;
+    }
+    int answer(TraceHit& hit) const {
+        if (found) {
+            hit.t = best;
+            hit.surface = surface;
+        }
+        return found ? 1 : 0;
+    }
+};
+
 // bare_spheres.cpp: CsgTracer::intersect and occluded for a ray of a cone
 // in a bare-sphere crowd (`skip`: the Departure's unit, or kNone); -1 when
 // the ray has no cone (the caller asks the general path), else the answer.

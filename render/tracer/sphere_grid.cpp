@@ -51,36 +51,33 @@ void SphereGrid::build(const csg::Aabb& box, const std::vector<Ball>& balls) {
     mag = std::abs(box.lo.x) + std::abs(box.lo.y) + std::abs(box.lo.z) + std::abs(box.hi.x) + std::abs(box.hi.y) +
           std::abs(box.hi.z);
     margin = 1e-3 * std::min({h.x, h.y, h.z}) + 1e-12 * mag;
-    // Each unit's cells: those its ball's box, grown by the margin, meets.
-    const auto cells = [&](const Ball& b, glm::ivec3& c0, glm::ivec3& c1) {
+    // Each unit's cells: those its ball's box, grown by the margin, meets;
+    // visit(cell) for each, the cell's index in x, then y, then z order.
+    const auto for_cells = [&](const Ball& b, auto&& visit) {
+        glm::ivec3 c0, c1;
         for (int a = 0; a < 3; ++a) {
             const double r = b.r + margin;
             c0[a] = cell_of((b.c[a] - r - lo[a]) * inv_h[a], n[a]);
             c1[a] = cell_of((b.c[a] + r - lo[a]) * inv_h[a], n[a]);
         }
+        for (int z = c0.z; z <= c1.z; ++z)
+            for (int y = c0.y; y <= c1.y; ++y)
+                for (int x = c0.x; x <= c1.x; ++x) visit((std::size_t(z) * n[1] + std::size_t(y)) * n[0] + std::size_t(x));
     };
     const std::size_t ncells = std::size_t(n[0]) * std::size_t(n[1]) * std::size_t(n[2]);
     std::vector<std::uint32_t> fill(ncells + 1, 0);
     std::uint64_t total = 0;
-    glm::ivec3 c0, c1;
-    for (const Ball& b : balls) {
-        cells(b, c0, c1);
-        for (int z = c0.z; z <= c1.z; ++z)
-            for (int y = c0.y; y <= c1.y; ++y)
-                for (int x = c0.x; x <= c1.x; ++x) ++fill[(std::size_t(z) * n[1] + std::size_t(y)) * n[0] + std::size_t(x) + 1];
-        total += std::uint64_t(c1.x - c0.x + 1) * std::uint64_t(c1.y - c0.y + 1) * std::uint64_t(c1.z - c0.z + 1);
-    }
+    for (const Ball& b : balls)
+        for_cells(b, [&](std::size_t cell) {
+            ++fill[cell + 1];
+            ++total;
+        });
     if (total > 64 * std::uint64_t(count) + 4096) return;  // balls far larger than a cell: not this crowd's scheme
     if (total > std::numeric_limits<std::uint32_t>::max()) return;  // (start and fill count in 32 bits)
     for (std::size_t i = 0; i < ncells; ++i) fill[i + 1] += fill[i];
     items.resize(std::size_t(total));
     start = fill;
-    for (std::uint32_t i = 0; i < count; ++i) {
-        cells(balls[i], c0, c1);
-        for (int z = c0.z; z <= c1.z; ++z)
-            for (int y = c0.y; y <= c1.y; ++y)
-                for (int x = c0.x; x <= c1.x; ++x) items[fill[(std::size_t(z) * n[1] + std::size_t(y)) * n[0] + std::size_t(x)]++] = i;
-    }
+    for (std::uint32_t i = 0; i < count; ++i) for_cells(balls[i], [&](std::size_t cell) { items[fill[cell]++] = i; });
 }
 
 namespace {
@@ -135,26 +132,15 @@ int grid_first_hit(RayState& st, const TraceRay& ray, TraceHit& hit) {
     const CsgTracer::Impl& impl = *st.impl;
     const SphereGrid& g = impl.sphere_grid;
     const double t0 = std::max(ray.tnear, st.enter);
-    double best = std::min(ray.tfar, st.leave);
-    if (!(t0 <= best)) return 0;
-    if (!g.fits(st.o, st.d, best)) return -1;
-    best = ray.tfar;
-    std::uint32_t best_unit = 0;
-    bool found = false;
-    Span entry;
-    walk(g, st, t0, g.margin * st.inv_len, best, [&](const std::uint32_t* u, const std::uint32_t* end) {
-        for (; u != end; ++u) {
-            if (!bare_sphere_entry(st, *u, impl.top.items[*u], ray.tnear, best, entry)) continue;
-            if (!(entry.t0 < best || (entry.t0 == best && found && *u < best_unit))) continue;
-            best = entry.t0;
-            best_unit = *u;
-            hit.surface = entry.e0;
-            found = true;
-        }
+    const double t1 = std::min(ray.tfar, st.leave);
+    if (!(t0 <= t1)) return 0;
+    if (!g.fits(st.o, st.d, t1)) return -1;
+    NearestBare near{ray.tfar};
+    walk(g, st, t0, g.margin * st.inv_len, near.best, [&](const std::uint32_t* u, const std::uint32_t* end) {
+        for (; u != end; ++u) near.offer(st, *u, impl.top.items[*u], ray.tnear);
         return false;
     });
-    if (found) hit.t = best;
-    return found ? 1 : 0;
+    return near.answer(hit);
 }
 
 int grid_occluded(RayState& st, const TraceRay& ray, std::uint32_t skip) {
