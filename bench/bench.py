@@ -3,7 +3,7 @@
 Per scene: write the .sdl and .pov twins (scenes.py); render both once as
 silhouettes and compare the object masks (IoU, fails below 0.97); then run
 kerf and POV-Ray alternately, `runs` times each, timing the whole process
-(wall clock) and its peak memory (/usr/bin/time -v). kerf's own --stats give
+(wall clock) and its peak memory (wait4's resource usage). kerf's own --stats give
 the per-ray operation counts, render time and MRay/s. A 1x1 kerf render gives
 the build time (evaluation and lowering excluded: parse + evaluate + lower is
 the `kerf check` time, reported separately). For each reference model the
@@ -18,6 +18,8 @@ import signal
 import statistics
 import subprocess
 import sys
+import tempfile
+import threading
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -30,24 +32,38 @@ KERF_LIMITS = ["--max-primitives", "2000000"]  # the 10^6-sphere control is at t
 
 
 def run(cmd, timeout=None):
-    """(wall s, peak RSS MB, stderr) of one process; raises on failure."""
-    tfile = "/tmp/kerf-bench-time.txt"
-    t0 = time.perf_counter()
-    # Own process group: on a timeout the renderer under /usr/bin/time dies too.
-    p = subprocess.Popen(["/usr/bin/time", "-v", "-o", tfile] + cmd, stdout=subprocess.PIPE,
-                         stderr=subprocess.PIPE, text=True, start_new_session=True)
-    try:
-        _, err = p.communicate(timeout=timeout)
-    except subprocess.TimeoutExpired:
-        os.killpg(p.pid, signal.SIGKILL)
-        p.communicate()
-        raise
-    p.stderr = err
-    wall = time.perf_counter() - t0
+    """(wall s, peak RSS MB, stderr) of one process; raises on failure.
+
+    The process is reaped with wait4(2), whose resource usage gives the
+    peak memory: no /usr/bin/time between us and it, whose own exec (about
+    5 ms) was counted in the wall of both renderers before 2026-12-06.
+    Output goes to files, not pipes: wait4 blocks, so a pipe nobody reads
+    could fill and stall the child."""
+    with tempfile.TemporaryFile() as out, tempfile.TemporaryFile() as err:
+        t0 = time.perf_counter()
+        # Own process group: on a timeout everything the renderer started dies too.
+        p = subprocess.Popen(cmd, stdout=out, stderr=err, start_new_session=True)
+        expired = threading.Event()
+
+        def kill():
+            expired.set()
+            os.killpg(p.pid, signal.SIGKILL)
+
+        timer = threading.Timer(timeout, kill) if timeout else None
+        if timer:
+            timer.start()
+        _, status, usage = os.wait4(p.pid, 0)
+        wall = time.perf_counter() - t0
+        if timer:
+            timer.cancel()
+        p.returncode = os.waitstatus_to_exitcode(status)  # reaped here, not by Popen
+        err.seek(0)
+        text = err.read().decode(errors="replace")
+    if expired.is_set():
+        raise subprocess.TimeoutExpired(cmd, timeout)
     if p.returncode != 0:
-        raise RuntimeError(f"{' '.join(cmd)} exited {p.returncode}:\n{p.stderr[-2000:]}")
-    rss = re.search(r"Maximum resident set size \(kbytes\): (\d+)", open(tfile).read())
-    return wall, int(rss.group(1)) / 1024.0, p.stderr
+        raise RuntimeError(f"{' '.join(cmd)} exited {p.returncode}:\n{text[-2000:]}")
+    return wall, usage.ru_maxrss / 1024.0, text  # ru_maxrss: kilobytes on Linux
 
 
 STATS = re.compile(r"stats: (\d+)x(\d+), (\d+) rays \((\d+) primary, (\d+) shadow, (\d+) reflect(?:, \d+ refract)?\)\s*"
