@@ -83,6 +83,10 @@ public:
         return l;
     }
 
+    // The looks of row y from pixel x on, to be set in place (set_look()
+    // with stand_in false is `row(x, y)[i] = l` for pixel x + i).
+    std::uint64_t* row(int x, int y) { return &looks_[index(x, y)]; }
+
     // set_look(x, y, l, false) for pixels [x0, x1) of row y (a culled
     // block's row, all misses).
     void set_looks(int x0, int x1, int y, std::uint64_t l) {

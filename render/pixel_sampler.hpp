@@ -101,6 +101,16 @@ public:
         hits_ = 0;
     }
 
+    // Whether put_codes() stores the codes as they are (an 8-bit image
+    // without coverage): put_codes_row() then applies.
+    bool codes_kept() const { return !alpha() && store_.bytes(); }
+    // put_codes() of pixels [x, x + n) of row y, where codes_kept(); `skip[i]`:
+    // pixel x + i not stored.
+    void put_codes_row(int x, int y, int n, const std::uint32_t* rgb, const bool* skip) const {
+        store_.codes_row(x, y, n, rgb, skip);
+        hits_ = 0;
+    }
+
     // put(x, y, miss(), 1) for pixels [x0, x1) of row y with nothing
     // covered (a culled block's row): without --alpha, filled as one run.
     void put_misses(int x0, int x1, int y) const {
