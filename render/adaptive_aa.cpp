@@ -787,8 +787,9 @@ bool render_adaptive(const TilePasses& tiles, const PixelSampler& sampler, const
                 }
                 // keep() for a whole image stored as codes: the row's looks
                 // and codes in place (no index per pixel, no crop or coverage
-                // to ask about). A miss (surface 0, not the ground) is the
-                // miss colour itself; the ground's pixels go through keep().
+                // to ask about). A look by keep()'s own rule (the miss
+                // colour keeps its surface in the high bits); the ground's
+                // pixels go through keep().
                 std::uint64_t* looks = centres.row(x0, y);
                 std::uint32_t rgb[kBlock];
                 for (int i = 0; i < x1 - x0; ++i) {
@@ -796,7 +797,9 @@ bool render_adaptive(const TilePasses& tiles, const PixelSampler& sampler, const
                         keep(x0 + i, y, colour[i], surface[i], true);
                         continue;
                     }
-                    const std::uint64_t look = surface[i] == 0 ? miss_look : centres.look(colour[i], surface[i]);
+                    const std::uint64_t look = colour[i] == sampler.miss()
+                                                   ? miss_look | std::uint64_t(surface[i]) << 32
+                                                   : centres.look(colour[i], surface[i]);
                     looks[i] = look;
                     rgb[i] = std::uint32_t(look & 0xFFFFFF);
                 }

@@ -4,6 +4,7 @@
 // its --alpha coverage. Shared by every pass of render.cpp and by adaptive
 // anti-aliasing (adaptive_aa.cpp).
 #pragma once
+#include <cassert>
 #include <cstdint>
 #include <limits>
 
@@ -96,7 +97,7 @@ public:
     // put(x, y, c, 1), where c's 8-bit codes are known (`rgb`, red in the
     // low byte): an 8-bit image without coverage stores them as they are.
     void put_codes(int x, int y, const glm::dvec3& c, std::uint32_t rgb) const {
-        if (alpha() || !store_.bytes()) return put(x, y, c, 1);
+        if (!codes_kept()) return put(x, y, c, 1);
         store_.codes(x, y, rgb);
         hits_ = 0;
     }
@@ -107,6 +108,7 @@ public:
     // put_codes() of pixels [x, x + n) of row y, where codes_kept(); `skip[i]`:
     // pixel x + i not stored.
     void put_codes_row(int x, int y, int n, const std::uint32_t* rgb, const bool* skip) const {
+        assert(codes_kept());
         store_.codes_row(x, y, n, rgb, skip);
         hits_ = 0;
     }

@@ -75,16 +75,16 @@ public:
     bool bytes() const { return bytes_; }
     // An sRGB image's pixel from its codes, red in the low byte: those
     // color() would store for the colour they encode.
-    void codes(int x, int y, std::uint32_t rgb) {
-        std::uint8_t* to = srgb8_ + index(x, y);
-        to[0] = std::uint8_t(rgb), to[1] = std::uint8_t(rgb >> 8), to[2] = std::uint8_t(rgb >> 16);
-    }
+    void codes(int x, int y, std::uint32_t rgb) { store3(srgb8_ + index(x, y), rgb); }
     // codes() for pixels [x, x + n) of row y; `rgb[i]` for pixel x + i,
     // skipped where `skip[i]`.
     void codes_row(int x, int y, int n, const std::uint32_t* rgb, const bool* skip) {
         std::uint8_t* to = srgb8_ + index(x, y);
         for (int i = 0; i < n; ++i, to += channels_)
-            if (!skip[i]) to[0] = std::uint8_t(rgb[i]), to[1] = std::uint8_t(rgb[i] >> 8), to[2] = std::uint8_t(rgb[i] >> 16);
+            if (!skip[i]) store3(to, rgb[i]);
+    }
+    static void store3(std::uint8_t* to, std::uint32_t rgb) {
+        to[0] = std::uint8_t(rgb), to[1] = std::uint8_t(rgb >> 8), to[2] = std::uint8_t(rgb >> 16);
     }
     // Colour and coverage `a` (0..1): `c` is the pixel's mean over all its
     // samples, misses seeing `background`; the hits' own share is

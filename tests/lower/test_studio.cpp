@@ -241,6 +241,43 @@ TEST_CASE("studio ground: adaptive AA refines the silhouette, not the soft shado
     same_for_threads_and_crop(s, o, img);
 }
 
+TEST_CASE("studio ground: adaptive AA straight to 8-bit codes keeps the ground's pixels, as a crop and the float image do") {
+    // A whole 8-bit image stores its first pass's codes a row at a time; the
+    // ground's pixels go the general way. A crop always takes the general
+    // way: the same bytes. The float image encoded by the sRGB formula is
+    // independent but not equal at the edges: an 8-bit image's second pass
+    // decodes the centre's colour from its look (docs/quality.md), which
+    // moves edge pixels by up to 3 codes here (93 bytes of 57,600); the
+    // ground or the background stored in the other's place would move them
+    // by tens.
+    const csg::Scene s = lower("translate([0, 0, 1]) sphere(1);");
+    REQUIRE(s.ground.on);
+    const int W = 160, H = 120;
+    render::RenderOptions o;
+    o.width = W, o.height = H, o.threads = 2, o.adaptive = true;
+    const render::Image floats = render::render(s, o);
+    o.srgb8 = true;
+    const render::Image whole = render::render(s, o);
+    REQUIRE(whole.srgb8.size() == std::size_t(W) * H * 3);
+    std::size_t differ = 0, far = 0;
+    for (std::size_t i = 0; i < floats.pixels.size(); ++i) {
+        const double x = std::clamp(double(floats.pixels[i]), 0.0, 1.0);
+        const double e = 255 * (x <= 0.0031308 ? 12.92 * x : 1.055 * std::pow(x, 1 / 2.4) - 0.055);
+        differ += long(whole.srgb8[i]) != std::lround(e);
+        far += std::abs(double(whole.srgb8[i]) - e) > 3.5;
+    }
+    INFO(differ << " bytes differ from the float image's codes");
+    CHECK(far == 0);
+    CHECK(differ < floats.pixels.size() / 200);
+    o.crop = std::array<int, 4>{13, 7, 141, 101};
+    const render::Image part = render::render(s, o);
+    REQUIRE(part.srgb8.size() == std::size_t(128) * 94 * 3);
+    for (int y = 7; y < 101; ++y)
+        for (int x = 13; x < 141; ++x)
+            for (int ch = 0; ch < 3; ++ch)
+                REQUIRE(part.srgb8[(std::size_t(y - 7) * 128 + (x - 13)) * 3 + ch] == whole.srgb8[(std::size_t(y) * 160 + x) * 3 + ch]);
+}
+
 TEST_CASE("studio ground under the path tracer: the shadow catcher of the Whitted tracer") {
     // The ground is drawn where a camera ray misses the solid, by either
     // integrator: every pixel whose centre ray passes clear of the sphere
