@@ -72,8 +72,13 @@ struct NearestBare {
     bool found = false;
     SpanEnd surface{};
     [[gnu::always_inline]] void offer(RayState& st, std::uint32_t item, std::uint32_t node, double a) {
+        if (!unit_ball_misses(st, item, a, best)) take(st, item, node, a);
+    }
+    // offer() past the unit's ball test (which the caller made).
+    [[gnu::always_inline]] void take(RayState& st, std::uint32_t item, std::uint32_t node, double a) {
+        st.enter_unit(node);
         Span entry;
-        if (!bare_sphere_entry(st, item, node, a, best, entry)) return;
+        if (!(bare_sphere_span(st, node, a, best, entry) && entry.t0 > a)) return;
         if (!(entry.t0 < best || (entry.t0 == best && found && item < best_unit))) return;
         best = entry.t0;
         best_unit = item;

@@ -86,28 +86,35 @@ namespace {
 // gets each cell's units and returns true to stop; the walk also stops at
 // the first cell whose exit, less `slack`, lies past `limit` (which the
 // visits may lower). Each boundary's t is solved from the ray's origin,
-// not accumulated, so its error stays that of one step.
+// not accumulated, so its error stays that of one step. The per-axis
+// numbers sit in local arrays: the step's axis is known only at run time,
+// and a glm vector indexed so is a switch.
 template <class Visit>
 [[gnu::always_inline]] inline void walk(const SphereGrid& g, const RayState& st, double t0, double slack, const double& limit,
                                         Visit&& visit) {
-    const glm::dvec3 p = st.o + t0 * st.d;
     constexpr double kInf = std::numeric_limits<double>::infinity();
     int c[3], step[3], end[3];
     double next[3];  // the t where the ray leaves the cell across each axis
+    double plane[3], h[3], o[3], invd[3];  // the next boundary is plane + c·h (less o, times invd)
     std::ptrdiff_t stride[3] = {1, g.n[0], std::ptrdiff_t(g.n[0]) * g.n[1]};
-    const auto boundary = [&](int a) {
-        return (g.lo[a] + double(c[a] + (step[a] > 0 ? 1 : 0)) * g.h[a] - st.o[a]) * st.invd[a];
-    };
     std::ptrdiff_t cell = 0;
     for (int a = 0; a < 3; ++a) {
-        c[a] = cell_of((p[a] - g.lo[a]) * g.inv_h[a], g.n[a]);
+        o[a] = st.o[a];
+        invd[a] = st.invd[a];
+        h[a] = g.h[a];
+        c[a] = cell_of((o[a] + t0 * st.d[a] - g.lo[a]) * g.inv_h[a], g.n[a]);
         // A component so small its reciprocal overflows (denormal) moves the
         // ray by nothing across the grid: parallel, as a zero one (else a
         // start on a cell plane gives 0 * inf = NaN and ends the walk).
-        step[a] = !std::isfinite(st.invd[a]) ? 0 : st.d[a] > 0 ? 1 : (st.d[a] < 0 ? -1 : 0);
+        step[a] = !(std::abs(invd[a]) < kInf) ? 0 : st.d[a] > 0 ? 1 : (st.d[a] < 0 ? -1 : 0);
         end[a] = step[a] > 0 ? g.n[a] : -1;
-        next[a] = step[a] == 0 ? kInf : boundary(a);
-        cell += c[a] * stride[a];
+        // (g.lo + (c + 1)·h when stepping up, g.lo + c·h down: the same sums.)
+        plane[a] = g.lo[a];
+        const int up = step[a] > 0 ? 1 : 0;
+        next[a] = step[a] == 0 ? kInf : (plane[a] + double(c[a] + up) * h[a] - o[a]) * invd[a];
+        c[a] += up;  // from here c[a] counts the next boundary's plane
+        end[a] += up;
+        cell += (c[a] - up) * stride[a];
         stride[a] *= step[a];
     }
     const std::uint32_t* start = g.start.data();
@@ -116,12 +123,14 @@ template <class Visit>
     for (;;) {
         ++walked;
         if (visit(items + start[cell], items + start[cell + 1])) break;
+        // The smallest next[], ties to the later axis (as the branches
+        // before it did), picked without a branch on the comparisons.
         const int a = next[0] < next[1] ? (next[0] < next[2] ? 0 : 2) : (next[1] < next[2] ? 1 : 2);
         if (!(next[a] - slack <= limit)) break;  // (inf: no boundary left)
         c[a] += step[a];
         if (c[a] == end[a]) break;
         cell += stride[a];
-        next[a] = boundary(a);
+        next[a] = (plane[a] + double(c[a]) * h[a] - o[a]) * invd[a];
     }
     st.scratch->counters.grid_cells += walked;
 }
@@ -136,8 +145,17 @@ int grid_first_hit(RayState& st, const TraceRay& ray, TraceHit& hit) {
     if (!(t0 <= t1)) return 0;
     if (!g.fits(st.o, st.d, t1)) return -1;
     NearestBare near{ray.tfar};
+    // Every unit of a grid crowd has its ball (SphereGrid::build): its test
+    // without unit_ball_misses' checks, the ray's terms found once.
+    const Ball* balls = impl.top.balls.data();
+    const std::uint32_t* nodes = impl.top.items.data();
+    const double inv_len2 = st.inv_len * st.inv_len, slack_abs = 4 * st.eps_ray, slack_rel = impl.ball_slack;
+    // (Copies: take() writes st, so its fields would be loaded again per unit.)
+    const glm::dvec3 o = st.o, d = st.d;
+    const double a = ray.tnear;
     walk(g, st, t0, g.margin * st.inv_len, near.best, [&](const std::uint32_t* u, const std::uint32_t* end) {
-        for (; u != end; ++u) near.offer(st, *u, impl.top.items[*u], ray.tnear);
+        for (; u != end; ++u)
+            if (!ball_misses(balls[*u], o, d, inv_len2, a, near.best, slack_abs, slack_rel)) near.take(st, *u, nodes[*u], a);
         return false;
     });
     return near.answer(hit);
