@@ -16,6 +16,7 @@
 #include <cstdint>
 
 #include "render/primitives/kinds.hpp"
+#include "render/primitives/sphere.hpp"
 #include "render/tracer/analytic_spans.hpp"
 
 namespace kerf::render {
