@@ -17,9 +17,20 @@ int bare_first_hit(const CsgTracer::Impl& impl, const TraceRay& ray, TraceHit& h
     if (!cone) return -1;
     NearestBare near{ray.tfar};
     const double stop = st.len * (1 + 1e-9);
+    // A ray from exactly the camera: each unit's ball test takes the terms
+    // of its origin from the apex (Apex::at_p: w = c - p and the grown
+    // radius squared, the numbers ball_misses finds for it). Every unit
+    // of a cone has its ball (Impl::build_apexes).
+    const Apex& ap = impl.apexes[cone->apex];
+    const Apex::AtP* at = !ap.at_p.empty() && st.o == ap.p ? ap.at_p.data() : nullptr;
+    const double inv_len2 = st.inv_len * st.inv_len;
     for (const ConeUnit& u : cone->units) {
         if (u.key > near.best * stop) break;
-        near.offer(st, u.item, impl.top.items[u.item], ray.tnear);
+        if (!at) {
+            near.offer(st, u.item, impl.top.items[u.item], ray.tnear);
+        } else if (!ball_misses_from(at[u.j].w, at[u.j].rr2, st.d, inv_len2, ray.tnear, near.best)) {
+            near.take(st, u.item, impl.top.items[u.item], ray.tnear);
+        }
     }
     return near.answer(hit);
 }

@@ -204,9 +204,19 @@ inline const RayCone* find_cell_cone(const RayState& st, std::uint32_t a, int le
     const double inv = 1 / (w * g), x = glm::dot(dir, ap.e1) * inv, y = glm::dot(dir, ap.e2) * inv;
     if (!(std::abs(x) < 1e9 && std::abs(y) < 1e9)) return nullptr;
     const std::int64_t u = floor_int(x), v = floor_int(y);
-    RayCone& c = st.scratch->cones.cones[level][cell_slot(a, u, v)];
+    // The cone of the apex's last ray at the rays' level first: the same
+    // slot when its cell is this one (a cell's cone lives only in its own
+    // slot), found by a branch the next rays of a row predict, so that the
+    // loop over its units need not wait for the division and the floors
+    // that name the slot.
+    RayCones& rc = st.scratch->cones;
+    const RayCone* kept = level == Apex::kLevels - 1 && a < RayCones::kApexes ? rc.last_cell[a] : nullptr;
+    if (kept && kept->owner == st.impl->id && kept->apex == a && kept->u == u && kept->v == v)
+        return glm::dot(dir, kept->axis) >= need * len ? kept : nullptr;
+    RayCone& c = rc.cones[level][cell_slot(a, u, v)];
     // A kept cone answers as a new one would (the same direction test), so
     // whether a ray takes a cone never depends on the thread's history.
+    if (level == Apex::kLevels - 1 && a < RayCones::kApexes) rc.last_cell[a] = &c;
     if (c.owner == st.impl->id && c.apex == a && c.u == u && c.v == v)
         return glm::dot(dir, c.axis) >= need * len ? &c : nullptr;
     return build_cell_cone(st, a, level, dir, len, need, u, v, c);

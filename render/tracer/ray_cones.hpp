@@ -101,6 +101,9 @@ struct RayCones {
     static constexpr int kSlots = 512, kScan = 16, kApexes = 8;
     RayCone cones[Apex::kLevels][kSlots];
     int last[Apex::kLevels][kApexes] = {}, next[Apex::kLevels] = {};  // per apex the cone its last ray used
+    // Two levels: per apex, the rays' level's cone its last ray used
+    // (ray_cones.cpp, find_cell_cone).
+    const RayCone* last_cell[kApexes] = {};
     std::uint64_t built = 0;  // cones built (tests, tuning)
     std::vector<ConeUnit> listing;  // a cone's units while it is listed (ray_cones.cpp, build_cone)
 };

@@ -82,46 +82,68 @@ void SphereGrid::build(const csg::Aabb& box, const std::vector<Ball>& balls) {
 
 namespace {
 
+// One axis of a walk: the t where the ray leaves its cell across the axis
+// (`next`), the plane index of that boundary (`c`: plane lo + c·h), the
+// step and the index one past the grid's last plane that way, and the cell
+// index's stride for one step.
+struct WalkAxis {
+    double next, lo, h, o, invd;
+    int c, step, end;
+    std::ptrdiff_t stride;
+};
+
 // The cells a ray crosses from t0 on, in order (3D DDA): visit(first, last)
 // gets each cell's units and returns true to stop; the walk also stops at
 // the first cell whose exit, less `slack`, lies past `limit` (which the
 // visits may lower). Each boundary's t is solved from the ray's origin,
-// not accumulated, so its error stays that of one step.
+// not accumulated, so its error stays that of one step. The three axes are
+// three named locals stepped by their own branch: indexed by an axis
+// found at run time they would live in memory (and a glm vector indexed
+// so is a switch).
 template <class Visit>
 [[gnu::always_inline]] inline void walk(const SphereGrid& g, const RayState& st, double t0, double slack, const double& limit,
                                         Visit&& visit) {
-    const glm::dvec3 p = st.o + t0 * st.d;
     constexpr double kInf = std::numeric_limits<double>::infinity();
-    int c[3], step[3], end[3];
-    double next[3];  // the t where the ray leaves the cell across each axis
-    std::ptrdiff_t stride[3] = {1, g.n[0], std::ptrdiff_t(g.n[0]) * g.n[1]};
-    const auto boundary = [&](int a) {
-        return (g.lo[a] + double(c[a] + (step[a] > 0 ? 1 : 0)) * g.h[a] - st.o[a]) * st.invd[a];
-    };
     std::ptrdiff_t cell = 0;
-    for (int a = 0; a < 3; ++a) {
-        c[a] = cell_of((p[a] - g.lo[a]) * g.inv_h[a], g.n[a]);
+    const auto axis = [&](int a, std::ptrdiff_t stride) {
+        WalkAxis w;
+        w.lo = g.lo[a];
+        w.h = g.h[a];
+        w.o = st.o[a];
+        w.invd = st.invd[a];
+        const int c = cell_of((w.o + t0 * st.d[a] - w.lo) * g.inv_h[a], g.n[a]);
         // A component so small its reciprocal overflows (denormal) moves the
         // ray by nothing across the grid: parallel, as a zero one (else a
         // start on a cell plane gives 0 * inf = NaN and ends the walk).
-        step[a] = !std::isfinite(st.invd[a]) ? 0 : st.d[a] > 0 ? 1 : (st.d[a] < 0 ? -1 : 0);
-        end[a] = step[a] > 0 ? g.n[a] : -1;
-        next[a] = step[a] == 0 ? kInf : boundary(a);
-        cell += c[a] * stride[a];
-        stride[a] *= step[a];
-    }
+        w.step = !(std::abs(w.invd) < kInf) ? 0 : st.d[a] > 0 ? 1 : (st.d[a] < 0 ? -1 : 0);
+        const int up = w.step > 0 ? 1 : 0;  // the exit plane is c + 1 going up, c going down
+        w.c = c + up;
+        w.end = (w.step > 0 ? g.n[a] : -1) + up;
+        w.next = w.step == 0 ? kInf : (w.lo + double(w.c) * w.h - w.o) * w.invd;
+        cell += c * stride;
+        w.stride = stride * w.step;
+        return w;
+    };
+    WalkAxis x = axis(0, 1), y = axis(1, g.n[0]), z = axis(2, std::ptrdiff_t(g.n[0]) * g.n[1]);
+    // Across the axis' boundary into the next cell; false: past the limit
+    // or out of the grid.
+    const auto cross = [&](WalkAxis& w) {
+        if (!(w.next - slack <= limit)) return false;  // (inf: no boundary left)
+        w.c += w.step;
+        if (w.c == w.end) return false;
+        cell += w.stride;
+        w.next = (w.lo + double(w.c) * w.h - w.o) * w.invd;
+        return true;
+    };
     const std::uint32_t* start = g.start.data();
     const std::uint32_t* items = g.items.data();
     std::uint64_t walked = 0;
     for (;;) {
         ++walked;
         if (visit(items + start[cell], items + start[cell + 1])) break;
-        const int a = next[0] < next[1] ? (next[0] < next[2] ? 0 : 2) : (next[1] < next[2] ? 1 : 2);
-        if (!(next[a] - slack <= limit)) break;  // (inf: no boundary left)
-        c[a] += step[a];
-        if (c[a] == end[a]) break;
-        cell += stride[a];
-        next[a] = boundary(a);
+        // The nearest boundary, ties to the later axis.
+        const bool on = x.next < y.next ? (x.next < z.next ? cross(x) : cross(z)) : (y.next < z.next ? cross(y) : cross(z));
+        if (!on) break;
     }
     st.scratch->counters.grid_cells += walked;
 }
@@ -136,8 +158,17 @@ int grid_first_hit(RayState& st, const TraceRay& ray, TraceHit& hit) {
     if (!(t0 <= t1)) return 0;
     if (!g.fits(st.o, st.d, t1)) return -1;
     NearestBare near{ray.tfar};
+    // Every unit of a grid crowd has its ball (SphereGrid::build): its test
+    // without unit_ball_misses' checks, the ray's terms found once.
+    const Ball* balls = impl.top.balls.data();
+    const std::uint32_t* nodes = impl.top.items.data();
+    const double inv_len2 = st.inv_len * st.inv_len, slack_abs = 4 * st.eps_ray, slack_rel = impl.ball_slack;
+    // (Copies: take() writes st, so its fields would be loaded again per unit.)
+    const glm::dvec3 o = st.o, d = st.d;
+    const double a = ray.tnear;
     walk(g, st, t0, g.margin * st.inv_len, near.best, [&](const std::uint32_t* u, const std::uint32_t* end) {
-        for (; u != end; ++u) near.offer(st, *u, impl.top.items[*u], ray.tnear);
+        for (; u != end; ++u)
+            if (!ball_misses(balls[*u], o, d, inv_len2, a, near.best, slack_abs, slack_rel)) near.take(st, *u, nodes[*u], a);
         return false;
     });
     return near.answer(hit);

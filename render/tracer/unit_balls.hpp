@@ -68,6 +68,22 @@ inline double grown_radius(double r, double slack_abs, double slack_rel, double 
     return r + slack_abs + slack_rel * w1;
 }
 
+// ball_misses' test from w = c - o and the grown radius squared (rr2):
+// the terms that depend on the ray's origin alone, which a camera's rays
+// can take from their apex (Apex::at_p; the same numbers).
+inline bool ball_misses_from(const glm::dvec3& w, double rr2, const glm::dvec3& d, double inv_len2, double a, double b) {
+    const double tc = glm::dot(w, d) * inv_len2;
+    const glm::dvec3 c0 = w - tc * d;  // from the line's closest point to the centre
+    const double h2 = (rr2 - glm::dot(c0, c0)) * inv_len2;
+    // The chord [tc - h, tc + h] misses [a, b] when the window's gap to tc
+    // (positive on at most one side) exceeds h: squared, so no square root
+    // (the pad above dwarfs the rounding either form has), and by one
+    // comparison (gap·|gap| is negative when tc lies in the window; NaN
+    // and h² <= 0 miss).
+    const double gap = std::max(a - tc, tc - b);
+    return !(std::min(h2, h2 - gap * std::abs(gap)) > 0);
+}
+
 // True if the segment [a, b] of o + t·d is provably outside `ball`: the
 // line misses it or its chord lies wholly before a or after b. inv_len2 =
 // 1/|d|²; slack_abs: world padding for the ray's origin magnitude; slack_rel:
@@ -76,17 +92,8 @@ inline double grown_radius(double r, double slack_abs, double slack_rel, double 
 inline bool ball_misses(const Ball& ball, const glm::dvec3& o, const glm::dvec3& d, double inv_len2, double a,
                         double b, double slack_abs, double slack_rel) {
     const glm::dvec3 w = ball.c - o;
-    const double tc = glm::dot(w, d) * inv_len2;
-    const glm::dvec3 c0 = w - tc * d;  // from the line's closest point to the centre
     const double r = grown_radius(ball.r, slack_abs, slack_rel, std::abs(w.x) + std::abs(w.y) + std::abs(w.z));
-    const double h2 = (r * r - glm::dot(c0, c0)) * inv_len2;
-    // The chord [tc - h, tc + h] misses [a, b] when the window's gap to tc
-    // (positive on at most one side) exceeds h: squared, so no square root
-    // (the pad above dwarfs the rounding either form has), and by one
-    // comparison (gap·|gap| is negative when tc lies in the window; NaN
-    // and h² <= 0 miss).
-    const double gap = std::max(a - tc, tc - b);
-    return !(std::min(h2, h2 - gap * std::abs(gap)) > 0);
+    return ball_misses_from(w, r * r, d, inv_len2, a, b);
 }
 
 }  // namespace kerf::render
