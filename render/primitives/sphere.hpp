@@ -3,9 +3,12 @@
 // c = |c0|² - r² < 0, and then the discriminant hb² - a·c is a sum of two
 // non-negative terms, so it needs no compensation (unlike the general
 // quadric in quadratic.hpp); the roots still use the cancellation-free pair.
-// In a header so that the bare-sphere crowds' loops (render/tracer/
-// bare_spheres.hpp) solve it inline; sphere.cpp instantiates it for
-// intersect_leaf. The same operations in the same order: the same bits.
+// solve_sphere is in a header so that the bare-sphere crowds' loops
+// (render/tracer/bare_spheres.hpp) solve it inline; sphere.cpp's
+// intersect_sphere (kinds.hpp, for intersect_leaf) calls it. The same
+// operations in the same order give the same bits as long as the compiler
+// contracts no multiply-add (x86-64's default; GCC's -ffp-contract=fast on
+// targets with FMA would need -ffp-contract=off).
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -20,7 +23,7 @@ namespace kerf::csg {
 
 namespace sphere_detail {
 
-// lo, hi = r0, r1 swapped if r0 > r1 (neither NaN). In double by SSE2's
+// lo, hi = r0, r1 swapped if r0 > r1 (for distinct, non-NaN roots). In double by SSE2's
 // minsd and maxsd, which GCC would otherwise turn back into the branch.
 template <typename T>
 inline void ordered(T r0, T r1, T& lo, T& hi) {
@@ -39,7 +42,7 @@ inline void ordered(double r0, double r1, double& lo, double& hi) {
 }  // namespace sphere_detail
 
 template <typename T>
-[[gnu::always_inline]] inline int intersect_sphere(const double* p, const Vec3<T>& o, const Vec3<T>& d, Span<T>* out) {
+[[gnu::always_inline]] inline int solve_sphere(const double* p, const Vec3<T>& o, const Vec3<T>& d, Span<T>* out) {
     const T r = T(p[0]);
     const T a = glm::dot(d, d);
     const T tc = -glm::dot(o, d) / a;
@@ -49,9 +52,10 @@ template <typename T>
     const T hb = glm::dot(c0, d);
     const T q = -(hb + std::copysign(std::sqrt(hb * hb - a * c), hb));
     const T r0 = q / a, r1 = c / q;
-    // The roots in order: min and max are the swap `if (r0 > r1)` made
-    // (equal roots stay as they are; neither is NaN, since a > 0 and q != 0
-    // here), without its branch. hb's sign, which decides the order, is a
+    // The roots in order: min and max are the swap `if (r0 > r1)` made,
+    // without its branch. They differ from it only for equal roots (which
+    // may come back swapped) or a NaN (|d|² overflowing): emit_span's
+    // !(t0 < t1) drops both alike. hb's sign, which decides the order, is a
     // coin toss for rays that hit (c0 is nearly perpendicular to d), and
     // the branch waited on both divisions to find out it had guessed wrong.
     T s0, s1;

@@ -22,7 +22,7 @@ int bare_first_hit(const CsgTracer::Impl& impl, const TraceRay& ray, TraceHit& h
     // radius squared, the numbers ball_misses finds for it). Every unit
     // of a cone has its ball (Impl::build_apexes).
     const Apex& ap = impl.apexes[cone->apex];
-    const Apex::AtP* at = !ap.at_p.empty() && st.o == ap.p ? ap.at_p.data() : nullptr;
+    const Apex::AtP* at = ap.terms_at(st.o);
     const double inv_len2 = st.inv_len * st.inv_len;
     for (const ConeUnit& u : cone->units) {
         if (u.key > near.best * stop) break;

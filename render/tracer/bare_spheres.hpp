@@ -9,7 +9,7 @@
 // walk of what was pushed, about half of a camera ray's work in such a
 // crowd. The numbers are the same calls on the same operands (the box
 // test of analytic_spans.hpp's box_hit, the leaf's object-space ray of
-// Impl::leaf_point/leaf_vector, csg::intersect_sphere<double>), the
+// Impl::leaf_point/leaf_vector, csg::solve_sphere<double>), the
 // window filters those of analytic_spans and the callers: the same bits.
 #pragma once
 #include <algorithm>
@@ -30,7 +30,7 @@ namespace kerf::render {
     const std::uint32_t leaf = impl.scene.nodes[node].first;
     csg::Span<double> sp[csg::kMaxSpans];
     const int count =
-        csg::intersect_sphere<double>(impl.scene.leaves[leaf].p, impl.leaf_point(leaf, st.o), impl.leaf_vector(leaf, st.d), sp);
+        csg::solve_sphere<double>(impl.scene.leaves[leaf].p, impl.leaf_point(leaf, st.o), impl.leaf_vector(leaf, st.d), sp);
     st.scratch->counters.interval_tests++;
     st.scratch->counters.spans_found += std::uint64_t(count);
     if (count == 0 || sp[0].t1 < a || sp[0].t0 > b) return false;

@@ -137,7 +137,7 @@ void visit_cone(TopContext& ctx, const RayCone& cone) {
     const double len = ctx.state->len;
     float tfar = std::numeric_limits<float>::infinity();  // (no Embree ray to shrink)
     const Apex& ap = ctx.state->impl->apexes[cone.apex];
-    const Apex::AtP* at = !ap.at_p.empty() && ctx.state->o == ap.p ? ap.at_p.data() : nullptr;
+    const Apex::AtP* at = ap.terms_at(ctx.state->o);
     for (const ConeUnit& u : cone.units) {
         if (u.key > std::min(ctx.best, ctx.ub) * len * (1 + 1e-9)) break;
         visit_unit(ctx, u.item, tfar, at ? at + u.j : nullptr);

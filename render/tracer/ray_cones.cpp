@@ -210,13 +210,15 @@ inline const RayCone* find_cell_cone(const RayState& st, std::uint32_t a, int le
     // loop over its units need not wait for the division and the floors
     // that name the slot.
     RayCones& rc = st.scratch->cones;
-    const RayCone* kept = level == Apex::kLevels - 1 && a < RayCones::kApexes ? rc.last_cell[a] : nullptr;
+    const bool memo = level == Apex::kLevels - 1 && a < RayCones::kApexes;
+    const RayCone* kept = memo && rc.last_cell[a] ? &rc.cones[level][rc.last_cell[a] - 1] : nullptr;
     if (kept && kept->owner == st.impl->id && kept->apex == a && kept->u == u && kept->v == v)
         return glm::dot(dir, kept->axis) >= need * len ? kept : nullptr;
-    RayCone& c = rc.cones[level][cell_slot(a, u, v)];
+    const int slot = cell_slot(a, u, v);
+    RayCone& c = rc.cones[level][slot];
     // A kept cone answers as a new one would (the same direction test), so
     // whether a ray takes a cone never depends on the thread's history.
-    if (level == Apex::kLevels - 1 && a < RayCones::kApexes) rc.last_cell[a] = &c;
+    if (memo) rc.last_cell[a] = std::uint16_t(slot + 1);
     if (c.owner == st.impl->id && c.apex == a && c.u == u && c.v == v)
         return glm::dot(dir, c.axis) >= need * len ? &c : nullptr;
     return build_cell_cone(st, a, level, dir, len, need, u, v, c);

@@ -65,8 +65,9 @@ struct Apex {
     std::vector<double> cos_beta, sin_beta;
     std::vector<double> dist;  // |centre - p|
     // A camera (from): per unit in that order, what the outer chord's test
-    // (ball_chords.hpp, outer_chord_reaches) finds from the ray's origin
-    // alone, for rays that start exactly at p: the same numbers, once.
+    // (ball_chords.hpp, outer_chord_reaches) and the ball test
+    // (ball_misses_from) find from the ray's origin alone, for rays that
+    // start exactly at p: the same numbers, once.
     struct AtP {
         glm::dvec3 w;  // centre - p
         double w1;     // |w|₁
@@ -74,6 +75,9 @@ struct Apex {
         double round;  // 1e-13·(w1² + rr²)
     };
     std::vector<AtP> at_p;
+    // The units' terms for a ray from o: at_p's when o is exactly p, else
+    // none (the ray finds its own).
+    const AtP* terms_at(const glm::dvec3& o) const { return !at_p.empty() && o == p ? at_p.data() : nullptr; }
 };
 
 struct ConeUnit {
@@ -99,11 +103,13 @@ struct RayCone {
 // per apex stays, and a ray finds its cell's cone without a scan.
 struct RayCones {
     static constexpr int kSlots = 512, kScan = 16, kApexes = 8;
+    static_assert(kSlots < 65535, "last_cell holds a slot + 1 in 16 bits");
     RayCone cones[Apex::kLevels][kSlots];
     int last[Apex::kLevels][kApexes] = {}, next[Apex::kLevels] = {};  // per apex the cone its last ray used
-    // Two levels: per apex, the rays' level's cone its last ray used
-    // (ray_cones.cpp, find_cell_cone).
-    const RayCone* last_cell[kApexes] = {};
+    // Two levels: per apex, the rays' level's cone its last ray used, as
+    // its slot + 1 (0: none; an index, not a pointer, so a copied RayCones
+    // cannot point into its source) (ray_cones.cpp, find_cell_cone).
+    std::uint16_t last_cell[kApexes] = {};
     std::uint64_t built = 0;  // cones built (tests, tuning)
     std::vector<ConeUnit> listing;  // a cone's units while it is listed (ray_cones.cpp, build_cone)
 };

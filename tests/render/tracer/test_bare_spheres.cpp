@@ -200,3 +200,97 @@ TEST_CASE("bare spheres: past the cones' 4,096 units, rays walk the balls' grid 
                  {21, glm::dvec3(0.0), 1, 4913, true, false, 1e-7, 24, 3000}},
                 true);
 }
+
+TEST_CASE("bare spheres: the grid's walk in every octant, along the axes, with denormal components and from cell planes",
+          "[render][oracle]") {
+    // An 18³ lattice (5,832 units: the grid) centred on the origin, so the
+    // planes x, y or z = 0 are cell planes. The rays of the other cases all
+    // run towards -x; here each axis is walked up and down, exactly along
+    // it (the other steps never taken), with a component so small its
+    // reciprocal overflows (walked as parallel), and from a start on a cell
+    // plane. Entries by point membership, shadows to a light on the +x side.
+    RandomCsg g(31);
+    Crowd c = bare_crowd(g, glm::dvec3(0.0), 1, 5832, true);
+    c.scene.lights[0].position = glm::dvec3(6, 5, -4);
+    const csg::Scene& s = c.scene;
+    const render::CsgTracer tracer(s, false);
+    render::TraceScratch kept;
+    std::vector<std::pair<glm::dvec3, glm::dvec3>> rays;  // (origin, direction)
+    for (int k = 0; k < 8; ++k) {
+        const glm::dvec3 sign((k & 1) ? 1 : -1, (k & 2) ? 1 : -1, (k & 4) ? 1 : -1);
+        const glm::dvec3 d = sign * glm::dvec3(g.uni(0.3, 1), g.uni(0.3, 1), g.uni(0.3, 1));
+        rays.push_back({-2.5 * sign + 0.2 * glm::dvec3(g.uni(-1, 1), g.uni(-1, 1), g.uni(-1, 1)), d});
+    }
+    for (int axis = 0; axis < 3; ++axis)
+        for (const double dir : {1.0, -1.0}) {
+            glm::dvec3 o(g.uni(-0.9, 0.9), g.uni(-0.9, 0.9), g.uni(-0.9, 0.9)), d(0.0);
+            o[axis] = -3 * dir;
+            d[axis] = dir;
+            rays.push_back({o, d});
+            d[(axis + 1) % 3] = 1e-310 * dir;  // 1/d overflows
+            rays.push_back({o, d});
+            o[(axis + 1) % 3] = 0;  // and starts on that axis's middle cell plane (0 * inf)
+            rays.push_back({o, d});
+        }
+    for (int axis = 0; axis < 3; ++axis)
+        for (int k = 0; k < 2; ++k) {
+            glm::dvec3 o(g.uni(-0.9, 0.9), g.uni(-0.9, 0.9), g.uni(-0.9, 0.9));
+            o[axis] = 0;  // on a cell plane, between two lattice layers
+            rays.push_back({o, glm::normalize(glm::dvec3(g.uni(-1, 1), g.uni(-1, 1), g.uni(-1, 1)))});
+        }
+    const glm::dvec3 light = s.lights[0].position;
+    int hits = 0, checked = 0;
+    for (const auto& [o, d] : rays) {
+        INFO("ray from " << o.x << ", " << o.y << ", " << o.z << " along " << d.x << ", " << d.y << ", " << d.z);
+        if (csg_contains(s, o)) continue;
+        ++checked;
+        render::TraceHit hit;
+        const double t = tracer.intersect(render::TraceRay{o, d, 0, kInf}, hit, kept) ? hit.t : kInf;
+        hits += t < kInf;
+        CHECK(is_first_entry(s, o, d, t, 8 / glm::length(d), 1e-7));
+        const double dist = glm::length(light - o);
+        const glm::dvec3 l = (light - o) / dist;
+        render::TraceHit e;
+        const double te = tracer.intersect(render::TraceRay{o, l, 0, kInf}, e, kept) ? e.t : kInf;
+        CHECK(is_first_entry(s, o, l, te, dist, 1e-7));
+        CHECK(tracer.occluded(render::TraceRay{o, l, 0, dist}, kept) == (te < dist));
+    }
+    CHECK(checked >= 20);
+    CHECK(hits >= 10);
+    CHECK(kept.counters.grid_cells > 0);
+}
+
+TEST_CASE("bare spheres: a thread's kept cones serve three lights and the camera in turn, as a fresh thread's",
+          "[render][oracle]") {
+    // A two-level crowd (343 units) and lights on both sides: apexes 0-3
+    // share the cones' slots (a and a + 2) and each remembers its last cell.
+    // Shadow rays to each light in turn and camera rays between them, on one
+    // kept scratch, against a fresh one and point membership.
+    RandomCsg g(37);
+    Crowd c = bare_crowd(g, glm::dvec3(0.0), 1, 343, true);
+    c.scene.lights.push_back(c.scene.lights[0]);
+    c.scene.lights.push_back(c.scene.lights[0]);
+    c.scene.lights[1].position = glm::dvec3(6, 5, -4);
+    c.scene.lights[2].position = glm::dvec3(-4, 7, 5);
+    const csg::Scene& s = c.scene;
+    const render::CsgTracer tracer(s, false);
+    render::TraceScratch kept;
+    int shadows = 0;
+    for (int i = 0; i < 90; ++i) {
+        const Ball& b = c.balls[std::size_t(g.pick(int(c.balls.size())))];
+        const glm::dvec3 light = s.lights[std::size_t(i % 3)].position;
+        INFO("ray " << i << " light " << i % 3);
+        ShadowRay sr;
+        render::TraceScratch fresh;
+        if (shadow_ray(g, s, tracer, light, b, 1e-4, i % 2 == 0, 1, 8, 20, 1e-7, fresh, sr)) {
+            const bool blocked = tracer.occluded(render::TraceRay{sr.o, sr.dir, 0, sr.dist}, kept);
+            CHECK(blocked == (sr.te < sr.dist));
+            shadows += blocked;
+        }
+        const render::TraceRay ray{s.camera.position, aim(g, s.camera.position, b, 1e-4, i % 2 == 1), 0, kInf};
+        render::TraceScratch unused;  // (fresh served the shadow ray's oracle entry)
+        camera_ray_agrees(s, tracer, ray, unused, kept, 30, 1e-7);
+    }
+    CHECK(shadows > 5);
+    CHECK(kept.cones.built > 0);
+}
