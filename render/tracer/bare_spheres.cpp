@@ -24,17 +24,53 @@ int bare_first_hit(const CsgTracer::Impl& impl, const TraceRay& ray, TraceHit& h
     return near.answer(hit);
 }
 
+// A shadow ray's answer is whether any unit blocks it, whatever order they
+// are asked in, and every path (cone, grid, the general query) answers it
+// with bare_sphere_blocks' numbers for each unit it keeps, keeping every
+// unit that blocks. So the unit that blocked the thread's last blocked ray
+// is asked first: where it blocks this one too (most shadowed points of a
+// lattice: their neighbours are shadowed by the same sphere), the answer
+// is the same without the cone's lookup or the grid's walk.
 int bare_occluded(const CsgTracer::Impl& impl, const TraceRay& ray, TraceScratch& scratch, std::uint32_t skip) {
+    // A ray from a sphere to a point light: the few units that may block it
+    // (toward_light.hpp), when they are few.
+    std::uint32_t listed[TowardLight::kMaxList];
+    int nlisted = -1;
+    if (skip != csg::kNone && !impl.toward_light.empty())
+        if (const int k = impl.toward_light.light_of(ray.o, ray.d, ray.tfar, skip, impl.top.balls); k >= 0) {
+            nlisted = impl.toward_light.list(k, skip, impl.top.balls, listed);
+            scratch.counters.listed_shadows += nlisted >= 0;
+            if (nlisted == 0) return 0;
+        }
     RayState st;
     if (!make_state(st, &impl, ray, scratch, false)) return 0;
-    if (!impl.sphere_grid.empty()) return grid_occluded(st, ray, skip);
+    if (nlisted > 0) {
+        for (int i = 0; i < nlisted; ++i)
+            if (bare_sphere_blocks(st, listed[i], impl.top.items[listed[i]], ray.tnear, ray.tfar)) return 1;
+        return 0;
+    }
+    std::uint32_t& last = scratch.blocker;
+    if (scratch.blocker_owner == impl.id && last != skip &&
+        bare_sphere_blocks(st, last, impl.top.items[last], ray.tnear, ray.tfar))
+        return 1;
+    const auto blocked = [&](std::uint32_t item) {
+        scratch.blocker_owner = impl.id;
+        last = item;
+        return 1;
+    };
+    if (!impl.sphere_grid.empty()) {
+        std::uint32_t by = csg::kNone;
+        const int r = grid_occluded(st, ray, skip, by);
+        return r == 1 ? blocked(by) : r;
+    }
     const RayCone* cone = ray_cone(st, ray, false);
     if (!cone) return -1;
     // A point of the segment is within (tfar - t)·|d| + rho of the light.
     const double seg = (ray.tfar - ray.tnear) * st.len * (1 + 1e-9);
     for (const ConeUnit& u : cone->units) {
         if (u.key > seg) break;
-        if (u.item != skip && bare_sphere_blocks(st, u.item, impl.top.items[u.item], ray.tnear, ray.tfar)) return 1;
+        if (u.item != skip && bare_sphere_blocks(st, u.item, impl.top.items[u.item], ray.tnear, ray.tfar))
+            return blocked(u.item);
     }
     return 0;
 }
