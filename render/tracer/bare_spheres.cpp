@@ -7,6 +7,8 @@
 // for Embree (the float ray, the Embree context) is left out.
 #include "render/tracer/bare_spheres.hpp"
 
+#include <cmath>
+
 namespace kerf::render {
 
 int bare_first_hit(const CsgTracer::Impl& impl, const TraceRay& ray, TraceHit& hit, TraceScratch& scratch) {
@@ -24,6 +26,32 @@ int bare_first_hit(const CsgTracer::Impl& impl, const TraceRay& ray, TraceHit& h
     return near.answer(hit);
 }
 
+namespace {
+
+// Whether the ray's line passes every one of the units' balls farther than
+// its own ball test grows them (unit_ball_misses: 4·eps_ray, eps_ray at most
+// eps_per_distance·|o|₁, and ball_slack·|c - o|₁), with 1e-6 of that
+// radius and 1e-12 of |c - o|₁ to spare for the rounding of either test:
+// then each rejects the ray by its ball, whatever the window, and none
+// blocks it. No ray state needed (a lit point whose listed neighbour
+// shadows another part of its sphere).
+bool passes_clear(const CsgTracer::Impl& impl, const TraceRay& ray, const std::uint32_t* units, int n) {
+    const glm::dvec3& o = ray.o;
+    const double inv_dd = 1 / glm::dot(ray.d, ray.d);
+    const double slack_abs = 4 * impl.eps_per_distance * (std::abs(o.x) + std::abs(o.y) + std::abs(o.z));
+    for (int i = 0; i < n; ++i) {
+        const Ball& b = impl.top.balls[units[i]];
+        const glm::dvec3 w = b.c - o;
+        const glm::dvec3 q = w - glm::dot(w, ray.d) * inv_dd * ray.d;
+        const double w1 = std::abs(w.x) + std::abs(w.y) + std::abs(w.z);
+        const double r = (b.r + slack_abs + impl.ball_slack * w1) * (1 + 1e-6) + 1e-12 * w1;
+        if (!(glm::dot(q, q) > r * r)) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
 // A shadow ray's answer is whether any unit blocks it, whatever order they
 // are asked in, and every path (cone, grid, the general query) answers it
 // with bare_sphere_blocks' numbers for each unit it keeps, keeping every
@@ -40,7 +68,7 @@ int bare_occluded(const CsgTracer::Impl& impl, const TraceRay& ray, TraceScratch
         if (const int k = impl.toward_light.light_of(ray.o, ray.d, ray.tfar, skip, impl.top.balls); k >= 0) {
             nlisted = impl.toward_light.list(k, skip, impl.top.balls, listed);
             scratch.counters.listed_shadows += nlisted >= 0;
-            if (nlisted == 0) return 0;
+            if (nlisted >= 0 && passes_clear(impl, ray, listed, nlisted)) return 0;
         }
     RayState st;
     if (!make_state(st, &impl, ray, scratch, false)) return 0;
