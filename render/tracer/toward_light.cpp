@@ -44,7 +44,7 @@ void TowardLight::build(const std::vector<Ball>& balls, const std::vector<double
     r_small = std::max(r_small, 1e-300);
     units = balls.size();
     // Zeroed pages, touched only where a lit sphere's slot is written.
-    slots.reset(static_cast<std::uint32_t*>(std::calloc(lights.size() * units * 4, sizeof(std::uint32_t))));
+    slots.reset(static_cast<std::uint32_t*>(std::calloc(lights.size() * units * kSlot, sizeof(std::uint32_t))));
     if (!slots) lights.clear();
 }
 

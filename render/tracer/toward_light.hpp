@@ -35,7 +35,8 @@ namespace kerf::render {
 struct TowardLight {
     static constexpr int kMaxLights = 4;      // point lights with shadows served
     static constexpr std::uint32_t kMaxList = 3;
-    static constexpr std::size_t kMaxUnits = std::size_t(1) << 18;  // 16 B per unit and light, touched where used
+    static constexpr std::size_t kSlot = kMaxList + 1;  // words per unit and light
+    static constexpr std::size_t kMaxUnits = std::size_t(1) << 18;  // kSlot words per unit and light, touched where used
     struct Light {
         glm::dvec3 p;
         double rho;  // a ray ending within rho (L1) of p counts as ending there
@@ -47,8 +48,8 @@ struct TowardLight {
     // its own), for listing.
     SphereGrid own_grid;
     const SphereGrid* grid = nullptr;
-    // Per light, per unit: 4 words, [0] 0 not yet listed, 1 + count when
-    // listed (count <= kMaxList), kFull when more; [1..3] the units.
+    // Per light, per unit: kSlot words, [0] 0 not yet listed, 1 + count
+    // when listed (count <= kMaxList), kFull when more; then the units.
     static constexpr std::uint32_t kFull = 0xFFFFFFFFu;
     struct Free {
         void operator()(std::uint32_t* p) const { std::free(p); }
@@ -77,7 +78,7 @@ struct TowardLight {
     // The units that may block a ray from `unit` to light k: their count
     // (written to `out`), or -1: more than kMaxList.
     int list(int k, std::uint32_t unit, const std::vector<Ball>& balls, std::uint32_t* out) const {
-        std::uint32_t* slot = slots.get() + (std::size_t(k) * units + unit) * 4;
+        std::uint32_t* slot = slots.get() + (std::size_t(k) * units + unit) * kSlot;
         std::uint32_t head = std::atomic_ref<std::uint32_t>(slot[0]).load(std::memory_order_acquire);
         if (head == 0) head = fill(k, unit, balls, slot);
         if (head == kFull) return -1;
