@@ -50,6 +50,34 @@ bool passes_clear(const CsgTracer::Impl& impl, const TraceRay& ray, const std::u
     return true;
 }
 
+// Whether unit `item` (a moved sphere leaf) provably blocks the ray, as
+// bare_sphere_blocks would find: the line passes within 0.9 of the
+// sphere's radius of its centre, and the chord's part in the window is
+// longer than the degenerate rule (here bounded above, |o|₁ for |o|) by
+// 1e-9 of the distances, far beyond the round-off of either computation.
+// Then the ball and box tests pass and the sphere's span overlaps the
+// window by more than the rule: blocked, without the ray's state or the
+// sphere's exact solve (most of a lattice's shadowed points).
+bool proves_blocked(const CsgTracer::Impl& impl, const TraceRay& ray, std::uint32_t item) {
+    const std::uint32_t node = impl.top.items[item];
+    const std::uint32_t leaf = impl.scene.nodes[node].first;
+    if (!impl.leaf_shift_only[leaf]) return false;
+    const double r = impl.scene.leaves[leaf].p[0];
+    const glm::dvec3& o = ray.o;
+    const glm::dvec3 w = -impl.scene.leaves[leaf].object_from_world.offset - o;  // centre - o
+    const double dd = glm::dot(ray.d, ray.d);
+    const double tc = glm::dot(w, ray.d) / dd;
+    const glm::dvec3 q = w - tc * ray.d;
+    const double q2 = glm::dot(q, q);
+    if (!(q2 < 0.81 * r * r)) return false;
+    const double len = std::sqrt(dd), h = std::sqrt((r * r - q2) / dd);
+    const double o1 = std::abs(o.x) + std::abs(o.y) + std::abs(o.z);
+    const double w1 = std::abs(w.x) + std::abs(w.y) + std::abs(w.z);
+    const double rule = (impl.node_eps[node] + impl.eps_per_distance * o1) / len;
+    const double overlap = std::min(tc + h, ray.tfar) - std::max(tc - h, ray.tnear);
+    return overlap > rule + 1e-9 * (w1 + r + o1) / len;
+}
+
 }  // namespace
 
 // A shadow ray's answer is whether any unit blocks it, whatever order they
@@ -59,17 +87,13 @@ bool passes_clear(const CsgTracer::Impl& impl, const TraceRay& ray, const std::u
 // is asked first: where it blocks this one too (most shadowed points of a
 // lattice: their neighbours are shadowed by the same sphere), the answer
 // is the same without the cone's lookup or the grid's walk.
-int bare_occluded(const CsgTracer::Impl& impl, const TraceRay& ray, TraceScratch& scratch, std::uint32_t skip) {
-    // A ray from a sphere to a point light: the few units that may block it
-    // (toward_light.hpp), when they are few.
-    std::uint32_t listed[TowardLight::kMaxList];
-    int nlisted = -1;
-    if (skip != csg::kNone && !impl.toward_light.empty())
-        if (const int k = impl.toward_light.light_of(ray.o, ray.d, ray.tfar, skip, impl.top.balls); k >= 0) {
-            nlisted = impl.toward_light.list(k, skip, impl.top.balls, listed);
-            scratch.counters.listed_shadows += nlisted >= 0;
-            if (nlisted >= 0 && passes_clear(impl, ray, listed, nlisted)) return 0;
-        }
+namespace {
+
+// bare_occluded past the lists: with the ray's state (out of line, so a ray
+// the lists answer pays for no RayState's frame). `listed`: the units a
+// list names (nlisted > 0), else -1.
+[[gnu::noinline]] int bare_occluded_state(const CsgTracer::Impl& impl, const TraceRay& ray, TraceScratch& scratch,
+                                          std::uint32_t skip, const std::uint32_t* listed, int nlisted) {
     RayState st;
     if (!make_state(st, &impl, ray, scratch, false)) return 0;
     if (nlisted > 0) {
@@ -101,6 +125,27 @@ int bare_occluded(const CsgTracer::Impl& impl, const TraceRay& ray, TraceScratch
             return blocked(u.item);
     }
     return 0;
+}
+
+}  // namespace
+
+int bare_occluded(const CsgTracer::Impl& impl, const TraceRay& ray, TraceScratch& scratch, std::uint32_t skip) {
+    // A ray from a sphere to a point light: the few units that may block it
+    // (toward_light.hpp), when they are few.
+    std::uint32_t listed[TowardLight::kMaxList];
+    int nlisted = -1;
+    if (skip != csg::kNone && !impl.toward_light.empty())
+        if (const int k = impl.toward_light.light_of(ray.o, ray.d, ray.tfar, skip, impl.top.balls); k >= 0) {
+            nlisted = impl.toward_light.list(k, skip, impl.top.balls, listed);
+            scratch.counters.listed_shadows += nlisted >= 0;
+            if (nlisted >= 0 && passes_clear(impl, ray, listed, nlisted)) return 0;
+            for (int i = 0; i < nlisted; ++i)
+                if (proves_blocked(impl, ray, listed[i])) return 1;
+        }
+    if (nlisted < 0 && scratch.blocker_owner == impl.id && scratch.blocker != skip &&
+        proves_blocked(impl, ray, scratch.blocker))
+        return 1;
+    return bare_occluded_state(impl, ray, scratch, skip, listed, nlisted);
 }
 
 }  // namespace kerf::render

@@ -165,3 +165,61 @@ TEST_CASE("toward the light: departing shadow rays of bare-sphere crowds answere
         CHECK(c.listed > 0);
     }
 }
+
+TEST_CASE("the last blocker first: a shadow ray that passes just outside it, or ends or starts just short of it, "
+          "is not blocked by it",
+          "[render][oracle]") {
+    // Each trial blocks a ray by sphere X (so X is the thread's last
+    // blocker), then asks rays that pass X at 1.0001 to 1.02 of its radius,
+    // and rays leaving its surface from 1e-5 to 5e-4 of its radius outside:
+    // X is tried first and must not answer them.
+    for (const int n : {512, 4913}) {
+        RandomCsg g(40 + std::uint64_t(n));
+        Tree tree = op(Op::Union, {});
+        std::vector<Ball> balls;
+        const int m = int(std::lround(std::cbrt(double(n))));
+        const double p = 2.0 / m;
+        for (int i = 0; i < m; ++i)
+            for (int j = 0; j < m; ++j)
+                for (int l = 0; l < m; ++l) {
+                    balls.push_back({p * glm::dvec3(i + 0.5 - 0.5 * m, j + 0.5 - 0.5 * m, l + 0.5 - 0.5 * m), 0.35 * p});
+                    tree.kids.push_back(leaf(sphere(balls.back().r, translate(balls.back().c.x, balls.back().c.y, balls.back().c.z))));
+                }
+        const csg::Scene s = make_scene(tree);
+        const render::CsgTracer tracer(s, false);
+        render::TraceScratch kept, fresh;
+        int passed = 0, left = 0, blocked = 0;
+        for (int trial = 0; trial < (n > 1000 ? 60 : 200); ++trial) {
+            const Ball& x = balls[std::size_t(g.pick(int(balls.size())))];
+            const auto unit = [&] { return glm::normalize(glm::dvec3(g.uni(-1, 1), g.uni(-1, 1), g.uni(-1, 1)) + 1e-3); };
+            const auto agrees = [&](const glm::dvec3& o, const glm::dvec3& d, double tfar) {
+                if (csg_contains(s, o)) return -1;
+                render::TraceHit e;
+                const double te = tracer.intersect(render::TraceRay{o, d, 0, kInf}, e, fresh) ? e.t : kInf;
+                INFO("trial " << trial << " entry " << te << " segment " << tfar);
+                CHECK(is_first_entry(s, o, d, te, tfar, 1e-9));
+                CHECK(tracer.occluded(render::TraceRay{o, d, 0, tfar}, kept) == (te < tfar));
+                return te < tfar ? 1 : 0;
+            };
+            // A: through X's centre from 0.2 pitch off its surface.
+            const glm::dvec3 u = unit();
+            const glm::dvec3 oa = x.c + (x.r + 0.2 * p * g.uni(0.2, 1)) * u;
+            blocked += agrees(oa, -u, glm::length(x.c - oa)) == 1;
+            // B: beside X, 1.0001 to 1.02 radii from its centre.
+            const glm::dvec3 e = unit();
+            const glm::dvec3 t = unit();
+            const glm::dvec3 f = glm::normalize(t - glm::dot(t, e) * e);
+            const double off = x.r * (1 + std::pow(10.0, g.uni(-4, std::log10(0.02))));
+            // (Within 1.2 radii of X's centre, so clear of its neighbours.)
+            passed += agrees(x.c + off * f - 0.6 * x.r * e, e, 1.2 * x.r) == 0;
+            // Again through X, then C: leaving X from just outside its surface.
+            agrees(oa, -u, glm::length(x.c - oa));
+            const glm::dvec3 v = unit();
+            left += agrees(x.c + x.r * (1 + std::pow(10.0, g.uni(-5, std::log10(5e-4)))) * v, v, 0.05 * p) == 0;
+        }
+        INFO("lattice " << n << ": blocked " << blocked << ", passed " << passed << ", left " << left);
+        CHECK(blocked > 20);
+        CHECK(passed > 20);
+        CHECK(left > 20);
+    }
+}
