@@ -81,7 +81,7 @@ std::uint32_t TowardLight::fill(int k, std::uint32_t unit, const std::vector<Bal
     }
     const double span = std::sqrt(a2) * std::max(0.0, s1 - s0);
     const double steps = std::ceil(span / step);
-    if (!(steps <= 16.0 * (g.n[0] + g.n[1] + g.n[2]) + 16)) full = true;
+    if (!(steps <= kMaxSteps)) full = true;
     const double inv_a2 = a2 > 0 ? 1 / a2 : 0;
     const auto meets = [&](std::uint32_t j) {
         const Ball& b = balls[j];

@@ -146,7 +146,7 @@ TEST_CASE("toward the light: departing shadow rays of bare-sphere crowds answere
         {34, glm::dvec3(0.0), 1, 300, false, {{-5, -7, 10}, {0.2, -1.6, 0.4}}, 300},
         {35, glm::dvec3(0.0), 1e4, 512, true, {{2, -3, 1.5}}, 200},
         {36, kFar, 1, 512, true, {{-5, -7, 10}}, 200},
-        {37, kFar, 1, 300, false, {{1.2, 1.4, -1.7}}, 200},
+        {37, kFar, 1, 300, false, {{-5, -7, 10}, {1.2, 1.4, -1.7}}, 200},
         {38, glm::dvec3(0.0), 1, 4913, true, {{-5, -7, 10}}, 40},
     };
     // Small lattices under lights from many directions: some neighbour's
