@@ -317,7 +317,9 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
                 impl_->top.sphere_minus.clear();
             }
         }
-        if (impl_->bare_spheres) {
+        // (Past TowardLight::kMaxUnits, not even its per-unit input: 8 MB of
+        // peak at 10⁶ units.)
+        if (impl_->bare_spheres && impl_->top.items.size() <= TowardLight::kMaxUnits) {
             std::vector<double> leaf_eps;
             for (std::uint32_t unit : impl_->top.items) leaf_eps.push_back(impl_->leaf_eps[scene.nodes[unit].first]);
             std::vector<glm::dvec3> lights;
