@@ -102,8 +102,15 @@ private:
     glm::dvec3 through_glass(const TraceRay& ray, ThreadState& ts) const;
     // `c` seen through the fog over `dist` (radiance()).
     [[gnu::noinline]] glm::dvec3 fogged(const glm::dvec3& c, double dist) const;
-    // The colour of the surface `hit` seen along `ray`, before fog.
+    // The colour of the surface `hit` seen along `ray`, before fog: by
+    // shade_point_lit where it applies, else shade_any (out of line: its
+    // frame is not set up for the common case).
     glm::dvec3 shade(const TraceRay& ray, const TraceHit& hit, int depth, ThreadState& ts) const;
+    [[gnu::noinline]] glm::dvec3 shade_any(const TraceRay& ray, const TraceHit& hit, int depth, ThreadState& ts) const;
+    // shade() where it comes to one point light on an opaque surface of
+    // material m that mirrors nothing (or whose depth is spent), without
+    // ambient occlusion (one_point_light_): the same numbers.
+    glm::dvec3 shade_point_lit(const TraceRay& ray, const TraceHit& hit, const csg::Material& m, ThreadState& ts) const;
     const csg::Material& material_of(std::uint32_t leaf) const;
     // Whether the ground is in front of the solid (or of nothing) along the
     // ray, at t.
@@ -141,6 +148,7 @@ private:
     double ground_lift_;   // how far above the ground its shadow rays start
     csg::Aabb ground_shadow_;  // outside it nothing can shadow the ground (ground.hpp)
     bool any_transparent_ = false;  // else shadow rays only ask whether anything is in the way
+    bool one_point_light_ = false;  // one light, a point (no sphere, not distant), and no ambient occlusion
     std::vector<csg::Light> lights_;       // the scene's, directions of unit length
     std::vector<SamplePattern> patterns_;  // per light: where its shadow rays go
     SamplePattern refining_{4};            // a probing light's, in a refined pixel's samples

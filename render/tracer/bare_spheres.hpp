@@ -103,6 +103,7 @@ int bare_occluded(const CsgTracer::Impl& impl, const TraceRay& ray, TraceScratch
 // units), its ray's state made; -1 when the ray rounds beyond the grid's
 // margin (SphereGrid::fits).
 int grid_first_hit(RayState& st, const TraceRay& ray, TraceHit& hit);
-int grid_occluded(RayState& st, const TraceRay& ray, std::uint32_t skip);
+// grid_occluded names the blocking unit in `by`.
+int grid_occluded(RayState& st, const TraceRay& ray, std::uint32_t skip, std::uint32_t& by);
 
 }  // namespace kerf::render

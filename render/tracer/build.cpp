@@ -317,6 +317,17 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
                 impl_->top.sphere_minus.clear();
             }
         }
+        // (Past TowardLight::kMaxUnits, not even its per-unit input: 8 MB of
+        // peak at 10⁶ units.)
+        if (impl_->bare_spheres && impl_->top.items.size() <= TowardLight::kMaxUnits) {
+            std::vector<double> leaf_eps;
+            for (std::uint32_t unit : impl_->top.items) leaf_eps.push_back(impl_->leaf_eps[scene.nodes[unit].first]);
+            std::vector<glm::dvec3> lights;
+            for (const csg::Light& light : scene.lights)
+                if (!light.directional && light.shadows && !(light.radius > 0)) lights.push_back(light.position);
+            impl_->toward_light.build(impl_->top.balls, leaf_eps, impl_->eps_per_distance, impl_->frame_radius, reach,
+                                      impl_->sphere_grid, lights);
+        }
         const std::vector<std::uint32_t>& items = impl_->top.items;
         const csg::Camera& cam = scene.camera;
         const bool pinhole = cam.projection == csg::Projection::Planar && !cam.orthographic && !(cam.aperture > 0);

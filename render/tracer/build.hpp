@@ -19,6 +19,7 @@
 #include "render/primitives/prism_grid.hpp"
 #include "render/tracer/box_grid.hpp"
 #include "render/tracer/sphere_grid.hpp"
+#include "render/tracer/toward_light.hpp"
 #include "render/tracer/tracer.hpp"
 #include "render/tracer/unit_balls.hpp"
 
@@ -181,6 +182,9 @@ struct CsgTracer::Impl {
     // Such a crowd of more than kMaxTwoLevelUnits units: its cells, which
     // its rays walk instead of cones (sphere_grid.hpp).
     SphereGrid sphere_grid;
+    // Such a crowd's units that may block a shadow ray from one of them to
+    // a point light (toward_light.hpp).
+    TowardLight toward_light;
     // One level of cones up to kMaxConeUnits units, two up to
     // kMaxTwoLevelUnits (ray_cones.hpp); beyond, the ball BVH alone (the
     // apexes' per-unit arrays grow with the units, and no scene was measured).

@@ -207,42 +207,27 @@ Departure CsgTracer::departure(const TraceHit& hit, const glm::dvec3& outward) c
     return {impl_->convex_unit[leaf], outward};
 }
 
-bool CsgTracer::occluded(const TraceRay& ray, TraceScratch& scratch, const Departure* from) const {
-    // The unit the ray departs from, when it leaves steeply enough: it lies
-    // behind the convex leaf's tangent plane, the ray starts in front of it
-    // and moves away (t >= tnear >= 0), so that unit has no span here.
-    const bool departs = from && ray.tnear >= 0 && glm::dot(from->outward, ray.d) > kDepartureCos * glm::length(ray.d);
-    const std::uint32_t nitems = std::uint32_t(impl_->top.items.size());
-    // A one-unit scene (a grooved sphere, a lens) whose unit the ray departs
-    // from: nothing is left to block it, so no set-up at all.
-    const bool lone = impl_->lone_unit != csg::kNone;
-    if (departs && lone && from->unit == 0) return false;
-    // A one-unit scene whose hole the ray departs into (a holed plate's
-    // wall): stays_inside before any set-up, with a margin from a bound on
-    // |o| (its 1-norm) instead of the unit's degenerate rule per unit of t.
-    if (from && lone && from->hollow == impl_->lone_unit && ray.tnear >= 0) {
-        const std::uint32_t node = from->hollow;
-        const double margin =
-            16 * (impl_->node_eps[node] + impl_->eps_per_distance * (std::abs(ray.o.x) + std::abs(ray.o.y) + std::abs(ray.o.z)));
-        if (stays_inside(*impl_, ray.o, ray.d, 1.0 / ray.d, margin, from->into, node, ray.tnear, ray.tfar)) return false;
-    }
-    // A crowd of bare spheres (no unit is a hollow): its cones' own loop
-    // (bare_spheres.hpp).
-    if (impl_->bare_spheres && !(from && from->hollow != csg::kNone))
-        if (const int r = bare_occluded(*impl_, ray, scratch, departs ? from->unit : csg::kNone); r >= 0) return r == 1;
+namespace {
+
+// occluded() past its early answers: out of line, so that a bare crowd's
+// rays (most of a lattice's), answered by its own query, do not pay for
+// this one's frame.
+[[gnu::noinline]] bool occluded_general(const CsgTracer::Impl& impl, const TraceRay& ray, TraceScratch& scratch,
+                                        const Departure* from, bool departs) {
+    const std::uint32_t nitems = std::uint32_t(impl.top.items.size());
     RayState st;
-    if (!make_state(st, impl_.get(), ray, scratch)) return false;
+    if (!make_state(st, &impl, ray, scratch)) return false;
     TopContext ctx(st, ray);
     if (departs) ctx.skip = from->unit;
     if (from) {
         ctx.hollow = from->hollow;
         ctx.into = from->into;
     }
-    for (std::uint32_t i = 0; i < impl_->top.always.size(); ++i)
-        if (nitems + i != ctx.skip && unit_blocks(ctx, csg::kNone, impl_->top.always[i])) return true;
-    if (!impl_->top.bvh) {
+    for (std::uint32_t i = 0; i < impl.top.always.size(); ++i)
+        if (nitems + i != ctx.skip && unit_blocks(ctx, csg::kNone, impl.top.always[i])) return true;
+    if (!impl.top.bvh) {
         for (std::uint32_t i = 0; i < nitems; ++i)
-            if (i != ctx.skip && unit_blocks(ctx, i, impl_->top.items[i])) return true;
+            if (i != ctx.skip && unit_blocks(ctx, i, impl.top.items[i])) return true;
         return false;
     }
     // A shadow ray to a point light in a ray cone (ray_cones.hpp): its units,
@@ -261,9 +246,36 @@ bool CsgTracer::occluded(const TraceRay& ray, TraceScratch& scratch, const Depar
     // boxes.
     const bool balls = ball_slack_fits(st) && st.leave + ball_margin(st) <= ray.tfar;
     RTCRay r = make_rayhit(st, ray.tnear, ray.tfar).ray;
-    if (!balls) impl_->top.ready();  // (a bare crowd's grid defers it: build.cpp)
-    rtcOccluded1(balls ? impl_->ball_bvh : impl_->top.bvh, &ctx.rtc, &r);
+    if (!balls) impl.top.ready();  // (a bare crowd's grid defers it: build.cpp)
+    rtcOccluded1(balls ? impl.ball_bvh : impl.top.bvh, &ctx.rtc, &r);
     return ctx.found;
+}
+
+}  // namespace
+
+bool CsgTracer::occluded(const TraceRay& ray, TraceScratch& scratch, const Departure* from) const {
+    // The unit the ray departs from, when it leaves steeply enough: it lies
+    // behind the convex leaf's tangent plane, the ray starts in front of it
+    // and moves away (t >= tnear >= 0), so that unit has no span here.
+    const bool departs = from && ray.tnear >= 0 && glm::dot(from->outward, ray.d) > kDepartureCos * glm::length(ray.d);
+    // A one-unit scene (a grooved sphere, a lens) whose unit the ray departs
+    // from: nothing is left to block it, so no set-up at all.
+    const bool lone = impl_->lone_unit != csg::kNone;
+    if (departs && lone && from->unit == 0) return false;
+    // A one-unit scene whose hole the ray departs into (a holed plate's
+    // wall): stays_inside before any set-up, with a margin from a bound on
+    // |o| (its 1-norm) instead of the unit's degenerate rule per unit of t.
+    if (from && lone && from->hollow == impl_->lone_unit && ray.tnear >= 0) {
+        const std::uint32_t node = from->hollow;
+        const double margin =
+            16 * (impl_->node_eps[node] + impl_->eps_per_distance * (std::abs(ray.o.x) + std::abs(ray.o.y) + std::abs(ray.o.z)));
+        if (stays_inside(*impl_, ray.o, ray.d, 1.0 / ray.d, margin, from->into, node, ray.tnear, ray.tfar)) return false;
+    }
+    // A crowd of bare spheres (no unit is a hollow): its own queries
+    // (bare_spheres.hpp).
+    if (impl_->bare_spheres && !(from && from->hollow != csg::kNone))
+        if (const int r = bare_occluded(*impl_, ray, scratch, departs ? from->unit : csg::kNone); r >= 0) return r == 1;
+    return occluded_general(*impl_, ray, scratch, from, departs);
 }
 
 }  // namespace kerf::render

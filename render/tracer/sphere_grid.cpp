@@ -174,7 +174,7 @@ int grid_first_hit(RayState& st, const TraceRay& ray, TraceHit& hit) {
     return near.answer(hit);
 }
 
-int grid_occluded(RayState& st, const TraceRay& ray, std::uint32_t skip) {
+int grid_occluded(RayState& st, const TraceRay& ray, std::uint32_t skip, std::uint32_t& by) {
     const CsgTracer::Impl& impl = *st.impl;
     const SphereGrid& g = impl.sphere_grid;
     const double t0 = std::max(ray.tnear, st.enter);
@@ -184,7 +184,10 @@ int grid_occluded(RayState& st, const TraceRay& ray, std::uint32_t skip) {
     bool blocked = false;
     walk(g, st, t0, g.margin * st.inv_len, ray.tfar, [&](const std::uint32_t* u, const std::uint32_t* end) {
         for (; u != end; ++u)
-            if (*u != skip && bare_sphere_blocks(st, *u, impl.top.items[*u], ray.tnear, ray.tfar)) return blocked = true;
+            if (*u != skip && bare_sphere_blocks(st, *u, impl.top.items[*u], ray.tnear, ray.tfar)) {
+                by = *u;
+                return blocked = true;
+            }
         return false;
     });
     return blocked ? 1 : 0;

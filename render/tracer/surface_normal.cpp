@@ -25,6 +25,14 @@ glm::dvec3 CsgTracer::normal(const TraceHit& hit, const glm::dvec3& world_point)
         return hit.surface.flip ? -n : n;
     }
     const glm::dvec3 q = impl_->leaf_point(hit.surface.leaf, world_point);
+    // A moved sphere's normal (a lattice's): the object normal is q itself
+    // (csg::normal_sphere), here without object_normal's two calls and
+    // switch; the same length and divisions below.
+    if (shift && leaf.kind == csg::PrimKind::Sphere) {
+        const double len = glm::length(q);
+        const glm::dvec3 n = len > 0 ? q / len : glm::dvec3(0, 0, 1);
+        return hit.surface.flip ? -n : n;
+    }
     // A moved straight cylinder's side (a drilled hole's wall): the
     // general path's (x, y, -0·ρ) / sqrt(x² + y² + 0) with one square root
     // instead of two (ρ and the length are the same number).

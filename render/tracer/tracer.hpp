@@ -21,6 +21,7 @@ struct TraceCounters {
     std::uint64_t interval_tests = 0;  // intersect_leaf calls
     std::uint64_t spans_found = 0;     // primitive intervals those calls returned
     std::uint64_t grid_cells = 0;      // cells a big bare crowd's rays walked (sphere_grid.hpp)
+    std::uint64_t listed_shadows = 0;  // shadow rays answered by the units toward their light (toward_light.hpp)
 };
 
 // A leaf's spans along one ray, solved ahead of the query that needs them
@@ -39,6 +40,12 @@ struct TraceScratch {
     // Set by the caller round one query: that leaf's spans along the
     // query's ray, which the query takes instead of solving it again.
     const AheadSpans* ahead = nullptr;
+    // A bare-sphere crowd's shadow rays (bare_spheres.cpp): the unit that
+    // blocked this thread's last blocked one, tried first by the next (a
+    // shadow's neighbouring points are blocked by the same sphere), and
+    // the tracer it belongs to (CsgTracer::Impl::id; 0: none).
+    std::uint64_t blocker_owner = 0;
+    std::uint32_t blocker = 0;
 };
 
 // d need not be unit length; t is measured in units of d.
