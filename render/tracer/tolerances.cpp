@@ -15,6 +15,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include "render/tracer/build.hpp"
 
 namespace kerf::render {
@@ -60,14 +63,44 @@ void CsgTracer::Impl::local_tolerances(const std::vector<std::uint32_t>& units) 
     node_eps.assign(scene.nodes.size(), 0);
     leaf_eps.assign(scene.leaves.size(), 0);
     double widest = 0;
-    std::vector<std::uint32_t> stack, members;
-    for (std::uint32_t unit : units) {
-        // The unit's subtree, iteratively (trees may be deep).
+    const auto unit_eps = [&](const Extent& ext) {
+        return use_float ? f.size * std::max(ext.size, ext.magnitude) : f.size * ext.size + f.position * ext.magnitude;
+    };
+    const auto unit_extent = [&](std::uint32_t unit) {
         Extent ext;
         if (finite_box(scene.nodes[unit].bounds)) {
             const csg::Aabb& b = scene.nodes[unit].bounds;
             ext.size = 0.5 * glm::length(b.hi - b.lo);
         }
+        return ext;
+    };
+    // A unit that is one leaf (every unit of a crowd of bare spheres) needs
+    // no walk: its rule is found for all such units at once, on the render's
+    // threads (each from its own leaf: the same bits in any order), and
+    // applied below in unit order as the walk applies its.
+    std::vector<double> leaf_unit_eps(units.size(), -1.0);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, units.size(), 4096), [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t i = r.begin(); i != r.end(); ++i) {
+            const csg::Node& n = scene.nodes[units[i]];
+            if (n.op != csg::Op::Leaf) continue;
+            Extent ext = unit_extent(units[i]);
+            ext.add(leaf_extent(scene.leaves[n.first]));
+            leaf_unit_eps[i] = unit_eps(ext);
+        }
+    });
+    std::vector<std::uint32_t> stack, members;
+    for (std::size_t i = 0; i < units.size(); ++i) {
+        const std::uint32_t unit = units[i];
+        if (scene.nodes[unit].op == csg::Op::Leaf) {
+            const double eps = leaf_unit_eps[i];
+            widest = std::max(widest, eps);
+            node_eps[unit] = std::max(node_eps[unit], eps);
+            const std::uint32_t leaf = scene.nodes[unit].first;
+            leaf_eps[leaf] = std::max(leaf_eps[leaf], eps);
+            continue;
+        }
+        // The unit's subtree, iteratively (trees may be deep).
+        Extent ext = unit_extent(unit);
         members.clear();
         stack.assign(1, unit);
         while (!stack.empty()) {
@@ -81,8 +114,7 @@ void CsgTracer::Impl::local_tolerances(const std::vector<std::uint32_t>& units) 
             }
             for (std::uint32_t k = 0; k < n.count; ++k) stack.push_back(scene.children[n.first + k]);
         }
-        const double eps = use_float ? f.size * std::max(ext.size, ext.magnitude)
-                                     : f.size * ext.size + f.position * ext.magnitude;
+        const double eps = unit_eps(ext);
         widest = std::max(widest, eps);
         for (std::uint32_t id : members) {
             node_eps[id] = std::max(node_eps[id], eps);
