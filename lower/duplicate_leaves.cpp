@@ -56,13 +56,12 @@ std::uint32_t leaf_hash(const csg::Leaf& l) {
 
 std::uint32_t drop_duplicate_leaves(std::vector<TNode>& nodes, const std::vector<csg::Leaf>& leaves,
                                     std::uint32_t& head, std::uint32_t& tail, std::uint32_t count) {
-    std::uint32_t leaf_count = 0;
-    for (std::uint32_t c = head; c != csg::kNone; c = nodes[c].next) leaf_count += nodes[c].op == csg::Op::Leaf;
-    if (leaf_count < 2) return count;
+    if (count < 2) return count;
     // Open addressing over the list's leaves (a node-based set doubled the
-    // cost of lowering a million-leaf union).
+    // cost of lowering a million-leaf union), sized by the whole list: a
+    // walk to count its leaves first was a fifth of this.
     std::size_t size = 4;
-    while (size < 2 * std::size_t(leaf_count)) size *= 2;
+    while (size < 2 * std::size_t(count)) size *= 2;
     // A slot holds the hash beside the node, so a probe reads no node (they
     // lie anywhere in the tree's array: a cache miss a probe at 10^5 leaves).
     // (node + 1: an empty slot is 0, so the table is zeroed memory.)
