@@ -249,8 +249,9 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
             impl_->node_accels.push_back(std::make_unique<Accel>());
             Accel& accel = *impl_->node_accels.back();
             // A difference's BVH waits for its first query (Accel::ready), but
-            // not a huge one's: its boxes would stay resident until then. So
-            // does a big root union's, whose children are the units: the
+            // not a huge one's (chosen when each item's box was stored until
+            // the build; now the bounds callback makes them, so only the
+            // build's timing would move, unmeasured). So does a big root union's, whose children are the units: the
             // top-level queries visit them, and nothing may ever ask the
             // root's own spans (the spheres_* lattices: 50 ms of build at 10⁵).
             const bool root_union = n.op == Op::Union && id == scene.root && kids.size() > Impl::kMaxTwoLevelUnits;
