@@ -47,6 +47,11 @@ bool identity_linear(const glm::dmat3& m) {
     return std::memcmp(&m, &id, sizeof m) == 0;
 }
 
+[[noreturn, gnu::noinline, gnu::cold]] void out_of_range(double far, const SourceLoc& loc) {
+    throw SourceError(loc, "this solid reaches " + format_range(far) + " from the origin; kerf renders solids within " +
+                               format_range(csg::kRenderableRange));
+}
+
 }  // namespace
 
 csg::Affine invert(const csg::Affine& a) {
@@ -136,15 +141,17 @@ std::vector<glm::dvec3> prism_corners(const csg::Polygon2& poly, const double* p
 }
 
 void check_range(const csg::Aabb& box, const SourceLoc& loc) {
+    // (`far` in a register, the message out of line: the string building
+    // kept it on the stack, a store and a load per side, 1.6 % of a
+    // 10^5-sphere front end.)
     double far = 0;
     for (int i = 0; i < 3; ++i) {
         // Unbounded sides (half-spaces) are fine; what is finite must fit.
-        if (std::isfinite(box.lo[i])) far = std::max(far, std::abs(box.lo[i]));
-        if (std::isfinite(box.hi[i])) far = std::max(far, std::abs(box.hi[i]));
+        const double lo = std::abs(box.lo[i]), hi = std::abs(box.hi[i]);
+        if (std::isfinite(lo) && lo > far) far = lo;
+        if (std::isfinite(hi) && hi > far) far = hi;
     }
-    if (far > csg::kRenderableRange)
-        throw SourceError(loc, "this solid reaches " + format_range(far) + " from the origin; kerf renders solids within " +
-                                   format_range(csg::kRenderableRange));
+    if (far > csg::kRenderableRange) out_of_range(far, loc);
 }
 
 }  // namespace kerf
