@@ -11,9 +11,6 @@
 #include <stdexcept>
 #include <string>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include "render/tracer/float_round.hpp"
 #include "render/tracer/build.hpp"
 
@@ -55,16 +52,6 @@ RTCBounds embree_box(const csg::Aabb& b, const glm::dvec3& frame, double frame_r
 void bounds_callback(const RTCBoundsFunctionArguments* args) {
     const Accel* accel = static_cast<const Accel*>(args->geometryUserPtr);
     *args->bounds_o = embree_box(accel->nodes[accel->items[args->primID]].bounds, accel->frame, accel->frame_radius);
-}
-
-// f(i) for i < n on the render's threads (an arena's, when the tracer is
-// built in one): for tables whose entries depend on the scene alone, so
-// their bits are the same for any thread count.
-template <class F>
-void each_index(std::size_t n, const F& f) {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096), [&](const tbb::blocked_range<std::size_t>& r) {
-        for (std::size_t i = r.begin(); i != r.end(); ++i) f(i);
-    });
 }
 
 // Operands of the root's union chain, in order: the units.
@@ -220,23 +207,22 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
     // Every per-leaf and per-node table reserved at its size: grown by
     // doubling, each copy faulted in fresh pages (a third of the page
     // faults of building 10^5 spheres' tracer).
-    // Entry by entry from the scene alone: filled on the render's threads.
     impl_->leaf_stretch.resize(scene.leaves.size());
     impl_->leaf_shift_only.resize(scene.leaves.size());
-    each_index(scene.leaves.size(), [&](std::size_t i) {
+    for (std::size_t i = 0; i < scene.leaves.size(); ++i) {
         const glm::dmat3& m = scene.leaves[i].object_from_world.linear;
         impl_->leaf_stretch[i] = std::sqrt(glm::dot(m[0], m[0]) + glm::dot(m[1], m[1]) + glm::dot(m[2], m[2]));
         impl_->leaf_shift_only[i] = m == glm::dmat3(1.0) ? 1 : 0;
-    });
+    }
     const std::vector<std::uint32_t> units =
         scene.root == csg::kNone ? std::vector<std::uint32_t>{} : root_units(scene);
     impl_->local_tolerances(units);
     impl_->padded.resize(scene.nodes.size());
-    each_index(scene.nodes.size(), [&](std::size_t id) {
+    for (std::size_t id = 0; id < scene.nodes.size(); ++id) {
         const csg::Aabb& b = scene.nodes[id].bounds;
         const glm::dvec3 e(impl_->node_eps[id]);
         impl_->padded[id] = {b.lo - e, b.hi + e};
-    });
+    }
     if (scene.root == csg::kNone) return;
     impl_->build_meshes();
     impl_->build_prism_grids();

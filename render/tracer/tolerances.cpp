@@ -15,9 +15,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include "render/tracer/build.hpp"
 
 namespace kerf::render {
@@ -75,24 +72,14 @@ void CsgTracer::Impl::local_tolerances(const std::vector<std::uint32_t>& units) 
         return ext;
     };
     // A unit that is one leaf (every unit of a crowd of bare spheres) needs
-    // no walk: its rule is found for all such units at once, on the render's
-    // threads (each from its own leaf: the same bits in any order), and
-    // applied below in unit order as the walk applies its.
-    std::vector<double> leaf_unit_eps(units.size(), -1.0);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, units.size(), 4096), [&](const tbb::blocked_range<std::size_t>& r) {
-        for (std::size_t i = r.begin(); i != r.end(); ++i) {
-            const csg::Node& n = scene.nodes[units[i]];
-            if (n.op != csg::Op::Leaf) continue;
-            Extent ext = unit_extent(units[i]);
-            ext.add(leaf_extent(scene.leaves[n.first]));
-            leaf_unit_eps[i] = unit_eps(ext);
-        }
-    });
+    // no walk: its rule from its own box and leaf, applied as the walk
+    // applies its (the same max over the same values).
     std::vector<std::uint32_t> stack, members;
-    for (std::size_t i = 0; i < units.size(); ++i) {
-        const std::uint32_t unit = units[i];
+    for (std::uint32_t unit : units) {
         if (scene.nodes[unit].op == csg::Op::Leaf) {
-            const double eps = leaf_unit_eps[i];
+            Extent ext = unit_extent(unit);
+            ext.add(leaf_extent(scene.leaves[scene.nodes[unit].first]));
+            const double eps = unit_eps(ext);
             widest = std::max(widest, eps);
             node_eps[unit] = std::max(node_eps[unit], eps);
             const std::uint32_t leaf = scene.nodes[unit].first;

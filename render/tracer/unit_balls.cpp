@@ -3,9 +3,6 @@
 
 #include <algorithm>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 namespace kerf::render {
 
 namespace {
@@ -93,22 +90,18 @@ Ball node_ball(const csg::Scene& scene, std::uint32_t id, int depth) {
 std::vector<Ball> unit_balls(const csg::Scene& scene, const std::vector<std::uint32_t>& units,
                              const std::vector<double>& pad, bool leaves) {
     std::vector<Ball> out(units.size());
-    // Each ball from its unit alone: found on the render's threads (the
-    // same bits for any thread count), 10^5 of them for a crowd.
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, units.size(), 4096), [&](const tbb::blocked_range<std::size_t>& r) {
-        for (std::size_t i = r.begin(); i != r.end(); ++i) {
-            if (scene.nodes[units[i]].op == csg::Op::Leaf && !leaves) continue;
-            out[i] = node_ball(scene, units[i], 0);
-            if (out[i].r < 0 || !std::isfinite(out[i].r) || !std::isfinite(glm::dot(out[i].c, out[i].c))) {
-                out[i] = {};
-                continue;
-            }
-            // 1e-9 relative: far above the double round-off of the stretch and
-            // of the leaf's own sphere test; 4 degenerate rules: beyond every
-            // window slack of the unit's evaluation.
-            out[i].r = out[i].r * (1 + 1e-9) + 4 * pad[units[i]];
+    for (std::size_t i = 0; i < units.size(); ++i) {
+        if (scene.nodes[units[i]].op == csg::Op::Leaf && !leaves) continue;
+        out[i] = node_ball(scene, units[i], 0);
+        if (out[i].r < 0 || !std::isfinite(out[i].r) || !std::isfinite(glm::dot(out[i].c, out[i].c))) {
+            out[i] = {};
+            continue;
         }
-    });
+        // 1e-9 relative: far above the double round-off of the stretch and
+        // of the leaf's own sphere test; 4 degenerate rules: beyond every
+        // window slack of the unit's evaluation.
+        out[i].r = out[i].r * (1 + 1e-9) + 4 * pad[units[i]];
+    }
     if (std::none_of(out.begin(), out.end(), [](const Ball& b) { return b.r >= 0; })) out.clear();
     return out;
 }
