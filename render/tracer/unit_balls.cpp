@@ -90,6 +90,7 @@ Ball node_ball(const csg::Scene& scene, std::uint32_t id, int depth) {
 std::vector<Ball> unit_balls(const csg::Scene& scene, const std::vector<std::uint32_t>& units,
                              const std::vector<double>& pad, bool leaves) {
     std::vector<Ball> out(units.size());
+    bool any = false;
     for (std::size_t i = 0; i < units.size(); ++i) {
         if (scene.nodes[units[i]].op == csg::Op::Leaf && !leaves) continue;
         out[i] = node_ball(scene, units[i], 0);
@@ -101,8 +102,9 @@ std::vector<Ball> unit_balls(const csg::Scene& scene, const std::vector<std::uin
         // of the leaf's own sphere test; 4 degenerate rules: beyond every
         // window slack of the unit's evaluation.
         out[i].r = out[i].r * (1 + 1e-9) + 4 * pad[units[i]];
+        any = true;
     }
-    if (std::none_of(out.begin(), out.end(), [](const Ball& b) { return b.r >= 0; })) out.clear();
+    if (!any) out.clear();
     return out;
 }
 
