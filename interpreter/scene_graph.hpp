@@ -89,6 +89,13 @@ public:
         m[3] = glm::dvec4(offsets_[s], 1.0);
         return m;
     }
+    // Transform i's offset when it is a translation (its matrix the
+    // identity's but for the offset), else null: lowering composes those
+    // without the matrix product.
+    const glm::dvec3* translation_offset(std::size_t i) const {
+        const std::uint32_t s = slots_[i];
+        return (s & kGeneral) ? nullptr : &offsets_[s];
+    }
     glm::dmat4 at(std::size_t i) const {
         if (i >= size()) throw std::out_of_range("Transforms::at");
         return (*this)[i];

@@ -2,6 +2,7 @@
 // stack of frames. Each frame gathers its operands as it goes (merging
 // nested unions/intersections/subtrahend unions by list splicing, dropping
 // what its box rules out), and turns them into one flat node when done.
+#include <cmath>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -27,6 +28,7 @@ struct Frame {
     NodeKind kind = NodeKind::Union;
     std::uint32_t next_child = 0;
     csg::Affine xf;                     // world_from_object for the children
+    bool plain = true;                  // xf.linear finite and without -0: times the identity, itself (plain_linear)
     std::uint32_t material = kNone;     // graph material index, kNone = default
     csg::Affine material_xf;            // world_from_object at that material's call (its pattern space)
     bool empty = false;                 // already known to be the empty solid
@@ -39,6 +41,16 @@ csg::Affine compose(const csg::Affine& parent, const glm::dmat4& child) {
     const glm::dmat3 l(child);
     const glm::dvec3 t(child[3]);
     return {parent.linear * l, parent.linear * t + parent.offset};
+}
+
+// A matrix that the identity's product leaves bit for bit as it is: each
+// entry is itself plus two products with 0, which are ±0 and change
+// nothing but the sign of a -0 entry (and make NaN of an infinite one).
+bool plain_linear(const glm::dmat3& m) {
+    for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r)
+            if (!std::isfinite(m[c][r]) || (m[c][r] == 0 && std::signbit(m[c][r]))) return false;
+    return true;
 }
 
 bool same_pattern_space(const csg::Material& a, const csg::Material& b) {
@@ -142,11 +154,21 @@ private:
         f.xf = parent.xf;
         f.material = parent.material;
         f.material_xf = parent.material_xf;
+        f.plain = parent.plain;
         const csg::Affine& xf = parent.xf;
         if (gn.kind == NodeKind::Transform) {
             if (gn.index >= g_.matrices.size())
                 throw std::invalid_argument("lower_to_csg: malformed scene graph (bad matrix index)");
-            f.xf = compose(xf, g_.matrices[gn.index]);
+            // A translation (a loop's translate() per leaf) under a plain
+            // frame: compose's product of the linear parts is the frame's
+            // own, so only the offset is computed, by compose's formula.
+            const glm::dvec3* t = g_.matrices.translation_offset(gn.index);
+            if (t && parent.plain) {
+                f.xf.offset = xf.linear * *t + xf.offset;
+            } else {
+                f.xf = compose(xf, g_.matrices[gn.index]);
+                f.plain = plain_linear(f.xf.linear);
+            }
         } else if (gn.kind == NodeKind::Appearance) {
             if (gn.index >= g_.materials.size())
                 throw std::invalid_argument("lower_to_csg: malformed scene graph (bad material index)");

@@ -45,51 +45,63 @@ private:
         std::vector<csg::Leaf>& leaves = s_.leaves;
         bool increasing = true;
         for (std::size_t k = 0; k < order_.size(); ++k) increasing = increasing && order_[k] >= k && (k == 0 || order_[k] > order_[k - 1]);
+        source_of_loc_.assign(t_.locs.size(), kUnresolved);
         if (increasing) {
-            for (std::size_t k = 0; k < order_.size(); ++k)
+            for (std::size_t k = 0; k < order_.size(); ++k) {
                 if (order_[k] != k) leaves[k] = leaves[order_[k]];
+                resolve(leaves[k]);
+            }
             leaves.resize(order_.size());
         } else {  // not expected; kept so a future merge rule cannot corrupt leaves
             std::vector<csg::Leaf> out;
             out.reserve(order_.size());
             for (std::uint32_t t : order_) out.push_back(leaves[t]);
             leaves = std::move(out);
+            for (csg::Leaf& leaf : leaves) resolve(leaf);
         }
-        for (csg::Leaf& leaf : leaves) resolve(leaf);
     }
 
+    // Pre-order by a stack of cursors into the child lists: a node's
+    // children are numbered as they are reached, the first first, so a
+    // union of 10^5 leaves is walked in place, not pushed as 10^5 items.
     void emit_tree(std::uint32_t root) {
         s_.root = 0;
-        struct Item { std::uint32_t tnode, parent, slot, depth; };
-        std::vector<Item> stack{{root, kNone, kNone, 1}};
-        std::vector<std::uint32_t> kids;
-        while (!stack.empty()) {
-            const Item it = stack.back();
-            stack.pop_back();
-            const TNode& tn = t_.nodes[it.tnode];
-            if (it.depth > csg::kMaxDepth) too_deep(tn);
+        struct Cursor { std::uint32_t next, parent, slot, depth; };
+        std::vector<Cursor> stack;
+        const auto visit = [&](std::uint32_t t, std::uint32_t parent, std::uint32_t slot, std::uint32_t depth) {
+            const TNode& tn = t_.nodes[t];
+            if (depth > csg::kMaxDepth) too_deep(tn);
             const auto index = static_cast<std::uint32_t>(s_.nodes.size());
             csg::Node node;
             node.op = tn.op;
-            node.parent = it.parent;
+            node.parent = parent;
             node.bounds = box(tn, s_.leaves, t_.boxes);
-            if (it.slot != kNone) s_.children[it.slot] = index;
+            if (slot != kNone) s_.children[slot] = index;
             if (tn.op == csg::Op::Leaf) {
                 node.first = static_cast<std::uint32_t>(order_.size());
                 node.count = 0;
                 order_.push_back(tn.leaf);
                 s_.nodes.push_back(node);
-                continue;
+                return;
             }
             node.first = static_cast<std::uint32_t>(s_.children.size());
             node.count = tn.count;
             s_.nodes.push_back(node);
             s_.children.resize(s_.children.size() + tn.count, kNone);
-            kids.clear();
-            for (std::uint32_t c = tn.head; c != kNone; c = t_.nodes[c].next) kids.push_back(c);
-            // Reverse push so the first child is emitted (and numbered) first.
-            for (std::size_t k = kids.size(); k-- > 0;)
-                stack.push_back({kids[k], index, node.first + static_cast<std::uint32_t>(k), it.depth + 1});
+            stack.push_back({tn.head, index, node.first, depth + 1});
+        };
+        visit(root, kNone, kNone, 1);
+        while (!stack.empty()) {
+            Cursor& c = stack.back();
+            if (c.next == kNone) {
+                stack.pop_back();
+                continue;
+            }
+            const std::uint32_t t = c.next;
+            c.next = t_.nodes[t].next;
+            const Cursor at = c;
+            ++c.slot;
+            visit(t, at.parent, at.slot, at.depth);  // may grow the stack: `c` is not used after
         }
     }
 
@@ -126,8 +138,13 @@ private:
         leaf.material_frame = frame(leaf.material_frame);
         if (leaf.mesh != kNone) leaf.mesh = mesh(leaf.mesh);
         if (leaf.polygon != kNone) leaf.polygon = polygon(leaf.polygon);
-        leaf.source = source(t_.locs[leaf.source]);
+        // FlatTree::locs are distinct: one scene source per entry, found once.
+        std::uint32_t& src = source_of_loc_[leaf.source];
+        if (src == kUnresolved) src = source(t_.locs[leaf.source]);
+        leaf.source = src;
     }
+    static constexpr std::uint32_t kUnresolved = kNone - 1;
+    std::vector<std::uint32_t> source_of_loc_;
 
     std::uint32_t material(std::uint32_t gm) {
         if (gm == kNone) return 0;

@@ -29,7 +29,13 @@ namespace kerf::render {
 struct Accel {
     RTCScene bvh = nullptr;            // null: few items, tested one by one
     std::vector<std::uint32_t> items;  // node per Embree primID
-    mutable std::vector<RTCBounds> boxes;  // for Embree's bounds callback; freed once built (commit_now: mutable)
+    // For Embree's bounds callback, which boxes each item from its node
+    // when the BVH is built (embree_box in build.cpp): a stored box per
+    // item was 32 bytes a unit, kept until a lazy build that the bare-sphere
+    // crowds never ask for (docs/performance.md, "The front end, again").
+    const csg::Node* nodes = nullptr;
+    glm::dvec3 frame{0.0};
+    double frame_radius = 1;
     std::vector<std::uint32_t> always;  // unbounded nodes (half-spaces): tested for every ray
     std::vector<Ball> balls;            // top only: per item, or empty (unit_balls.hpp)
     std::vector<SphereMinus> sphere_minus;  // top only: per item, or empty (ball_chords.hpp)
@@ -40,7 +46,7 @@ struct Accel {
     // needs it, not with the tracer: its grid answers nearly every query
     // (holes_40 makes none of Embree), and the build was ~1 ms of serial
     // start-up (docs/performance.md, "Holes, the process around the
-    // render"). Until then `boxes` stay for Embree's bounds callback.
+    // render").
     // Thread-safe: the first caller builds under the lock, the others wait.
     void ready() const {
         if (committed.load(std::memory_order_acquire)) return;

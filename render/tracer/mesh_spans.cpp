@@ -214,6 +214,7 @@ std::uint32_t solid_spans(Span* h, std::uint32_t hits, double eps, double a, dou
 void CsgTracer::Impl::build_meshes() {
     mesh_bvhs.assign(scene.meshes.size(), nullptr);
     mesh_boxes.assign(scene.meshes.size(), csg::Aabb{});
+    if (scene.meshes.empty()) return;  // (no pass over 10^5 leaves for nothing)
     for (const csg::Leaf& leaf : scene.leaves) {
         if (leaf.kind != csg::PrimKind::Mesh || leaf.mesh >= scene.meshes.size() || mesh_bvhs[leaf.mesh]) continue;
         const csg::Mesh& mesh = scene.meshes[leaf.mesh];

@@ -54,6 +54,7 @@ int prism_in(const csg::Polygon2& poly, const csg::PrismGrid* grid, const csg::L
 // One grid per section that a straight or tapered prism leaf extrudes,
 // however many leaves share it (lathes and swept prisms test every edge).
 void CsgTracer::Impl::build_prism_grids() {
+    if (scene.polygons.empty()) return;  // (no pass over 10^5 leaves for nothing)
     std::vector<char> wanted(scene.polygons.size(), 0);
     for (const csg::Leaf& leaf : scene.leaves)
         if (leaf.kind == csg::PrimKind::Prism && leaf.polygon < wanted.size() && !csg::is_swept(leaf.p))

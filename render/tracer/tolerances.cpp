@@ -60,14 +60,34 @@ void CsgTracer::Impl::local_tolerances(const std::vector<std::uint32_t>& units) 
     node_eps.assign(scene.nodes.size(), 0);
     leaf_eps.assign(scene.leaves.size(), 0);
     double widest = 0;
-    std::vector<std::uint32_t> stack, members;
-    for (std::uint32_t unit : units) {
-        // The unit's subtree, iteratively (trees may be deep).
+    const auto unit_eps = [&](const Extent& ext) {
+        return use_float ? f.size * std::max(ext.size, ext.magnitude) : f.size * ext.size + f.position * ext.magnitude;
+    };
+    const auto unit_extent = [&](std::uint32_t unit) {
         Extent ext;
         if (finite_box(scene.nodes[unit].bounds)) {
             const csg::Aabb& b = scene.nodes[unit].bounds;
             ext.size = 0.5 * glm::length(b.hi - b.lo);
         }
+        return ext;
+    };
+    // A unit that is one leaf (every unit of a crowd of bare spheres) needs
+    // no walk: its rule from its own box and leaf, applied as the walk
+    // applies its (the same max over the same values).
+    std::vector<std::uint32_t> stack, members;
+    for (std::uint32_t unit : units) {
+        if (scene.nodes[unit].op == csg::Op::Leaf) {
+            Extent ext = unit_extent(unit);
+            ext.add(leaf_extent(scene.leaves[scene.nodes[unit].first]));
+            const double eps = unit_eps(ext);
+            widest = std::max(widest, eps);
+            node_eps[unit] = std::max(node_eps[unit], eps);
+            const std::uint32_t leaf = scene.nodes[unit].first;
+            leaf_eps[leaf] = std::max(leaf_eps[leaf], eps);
+            continue;
+        }
+        // The unit's subtree, iteratively (trees may be deep).
+        Extent ext = unit_extent(unit);
         members.clear();
         stack.assign(1, unit);
         while (!stack.empty()) {
@@ -81,8 +101,7 @@ void CsgTracer::Impl::local_tolerances(const std::vector<std::uint32_t>& units) 
             }
             for (std::uint32_t k = 0; k < n.count; ++k) stack.push_back(scene.children[n.first + k]);
         }
-        const double eps = use_float ? f.size * std::max(ext.size, ext.magnitude)
-                                     : f.size * ext.size + f.position * ext.magnitude;
+        const double eps = unit_eps(ext);
         widest = std::max(widest, eps);
         for (std::uint32_t id : members) {
             node_eps[id] = std::max(node_eps[id], eps);

@@ -110,6 +110,9 @@ std::vector<Ball> unit_balls(const csg::Scene& scene, const std::vector<std::uin
 
 std::vector<SphereMinus> sphere_minus_units(const csg::Scene& scene, const std::vector<std::uint32_t>& units,
                                             const std::vector<double>& pad, std::vector<SubBound>& subs) {
+    // Most crowds have no difference unit: no per-unit table to fill and drop.
+    if (std::none_of(units.begin(), units.end(), [&](std::uint32_t u) { return scene.nodes[u].op == csg::Op::Difference; }))
+        return {};
     std::vector<SphereMinus> out(units.size());
     bool any = false;
     for (std::size_t i = 0; i < units.size(); ++i) {
