@@ -1,9 +1,10 @@
 // Storage for whole images (a 2048² RGB float image is 50 MB): a
 // std::vector allocator that leaves elements uninitialised (the renderer
 // writes every one, so zero-filling first was a serial pass over all of it)
-// and asks for transparent huge pages on big blocks, so first touch costs
-// one page fault per 2 MiB instead of per 4 KiB. Page faults and the
-// zero-fill were ~8 % of a simple 2048² render's CPU time.
+// and aligns big blocks to huge pages, advised as such with
+// KERF_HUGE_PAGES=1 (csg/huge_pages.hpp: off by default, slower on virtual
+// machines). Page faults and the zero-fill were ~8 % of a simple 2048²
+// render's CPU time.
 #pragma once
 #include <cstddef>
 #include <cstdlib>
