@@ -1,6 +1,7 @@
 #include "lower/duplicate_leaves.hpp"
 
 #include <bit>
+#include <cassert>
 #include <cstring>
 
 namespace kerf::lowering {
@@ -68,6 +69,7 @@ std::uint32_t drop_duplicate_leaves(std::vector<TNode>& nodes, const std::vector
     constexpr std::uint64_t kEmpty = 0;
     std::vector<std::uint64_t> slots(size, kEmpty);
     std::uint32_t prev = csg::kNone;
+    [[maybe_unused]] std::uint32_t kept = 0;
     for (std::uint32_t c = head; c != csg::kNone;) {
         const std::uint32_t next = nodes[c].next;
         bool duplicate = false;
@@ -82,7 +84,12 @@ std::uint32_t drop_duplicate_leaves(std::vector<TNode>& nodes, const std::vector
                     break;
                 }
             }
-            if (!duplicate) slots[i] = std::uint64_t(hash) << 32 | (c + 1);
+            if (!duplicate) {
+                // count bounds the list's length (the header's contract),
+                // so the table stays at most half full and a probe ends.
+                assert(++kept <= count && 2 * std::size_t(kept) <= size);
+                slots[i] = std::uint64_t(hash) << 32 | (c + 1);
+            }
         }
         if (duplicate) {
             if (prev == csg::kNone) head = next; else nodes[prev].next = next;

@@ -20,6 +20,8 @@ std::uint32_t leaf_hash(const csg::Leaf& leaf);
 
 // Unlinks every leaf of the list head..tail (linked through TNode::next)
 // equal to an earlier one; returns the new count and updates head/tail.
+// `count` must be at least the list's length: it sizes the table (a
+// smaller one would fill, and a probe would never end).
 std::uint32_t drop_duplicate_leaves(std::vector<TNode>& nodes, const std::vector<csg::Leaf>& leaves,
                                     std::uint32_t& head, std::uint32_t& tail, std::uint32_t count);
 

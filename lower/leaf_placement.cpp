@@ -72,7 +72,7 @@ csg::Affine invert(const csg::Affine& a) {
 // bits), and a sphere's support along the unit rows is its radius times
 // sqrt(1) = 1. Everything else is what the general path computes, in its
 // order, so the leaf's bits are the same (tests/lower/test_leaf_placement.cpp).
-void place_translated_leaf(csg::Leaf& leaf, const csg::Affine& wfo, const SourceLoc& loc) {
+static void place_translated_leaf(csg::Leaf& leaf, const csg::Affine& wfo, const SourceLoc& loc) {
     static const glm::dmat3 inverse_of_identity = glm::inverse(glm::dmat3(1.0) / 1.0) / 1.0;
     if (!(std::isfinite(wfo.offset.x) && std::isfinite(wfo.offset.y) && std::isfinite(wfo.offset.z)))
         throw SourceError(loc, "the transforms around this primitive are not finite");

@@ -116,3 +116,36 @@ TEST_CASE("one point light on opaque surfaces: its own shading path gives the ge
         CHECK(moved > 20);
     }
 }
+
+TEST_CASE("one point light: glass, a light with a radius and ambient occlusion leave the point-lit path as the general one",
+          "[render][shading]") {
+    // What the point-lit path must not take (Shader::shade's gate and
+    // one_point_light_): a transparent surface, a soft light, occlusion of
+    // the ambient term. Each scene against its twin with a dark second light
+    // (the general path throughout): the same bits.
+    for (int variant = 0; variant < 3; ++variant) {
+        csg::Light l{false, {-4, -6, 7}, {0, 0, -1}, {1, 1, 1}, 1};
+        if (variant == 1) l.radius = 0.5, l.samples = 8;
+        csg::Scene one = scene_with(l, false), two = scene_with(l, true);
+        for (csg::Scene* s : {&one, &two}) {
+            if (variant == 0) s->materials[3].reflect = 0, s->materials[3].transparency = 0.6, s->materials[3].ior = 1.5;
+            if (variant == 2) s->ambient_occlusion.samples = 4, s->ambient_occlusion.distance = 1;
+        }
+        const render::CsgTracer t1(one, false), t2(two, false);
+        const render::Shader s1(one, t1, 4), s2(two, t2, 4);
+        render::ThreadState ts1, ts2;
+        RandomCsg g(11);
+        int hits = 0;
+        for (int i = 0; i < 400; ++i) {
+            const glm::dvec3 o = glm::dvec3(g.uni(-1, 1), -6, g.uni(1, 3));
+            const glm::dvec3 target(g.uni(-1.8, 1.8), g.uni(-1.5, 1.5), g.uni(-1.1, 1.2));
+            const render::TraceRay ray{o, target - o, 0, kInf};
+            std::uint32_t id1 = 0, id2 = 0;
+            const glm::dvec3 c1 = s1.radiance(ray, 0, ts1, &id1), c2 = s2.radiance(ray, 0, ts2, &id2);
+            INFO("variant " << variant << " ray " << i);
+            CHECK(same_bits(c1, c2));
+            hits += id1 != 0;
+        }
+        CHECK(hits > 100);
+    }
+}
