@@ -54,6 +54,13 @@ csg::Scene scene_with(const csg::Light& light, bool second) {
     return s;
 }
 
+// A ray from in front of scene_with's solids to a random point among them.
+render::TraceRay toward_scene(RandomCsg& g) {
+    const glm::dvec3 o = glm::dvec3(g.uni(-1, 1), -6, g.uni(1, 3));
+    const glm::dvec3 target(g.uni(-1.8, 1.8), g.uni(-1.5, 1.5), g.uni(-1.1, 1.2));
+    return render::TraceRay{o, target - o, 0, kInf};
+}
+
 bool same_bits(const glm::dvec3& a, const glm::dvec3& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 }  // namespace
@@ -87,9 +94,7 @@ TEST_CASE("one point light on opaque surfaces: its own shading path gives the ge
         render::ThreadState ts1, ts2;
         int hits = 0, lit = 0, moved = 0;
         for (int i = 0; i < 600; ++i) {
-            const glm::dvec3 o = glm::dvec3(g.uni(-1, 1), -6, g.uni(1, 3));
-            const glm::dvec3 target(g.uni(-1.8, 1.8), g.uni(-1.5, 1.5), g.uni(-1.1, 1.2));
-            const render::TraceRay ray{o, target - o, 0, kInf};
+            const render::TraceRay ray = toward_scene(g);
             std::uint32_t id1 = 0, id2 = 0;
             const glm::dvec3 c1 = s1.radiance(ray, 0, ts1, &id1), c2 = s2.radiance(ray, 0, ts2, &id2);
             INFO("light " << li << " ray " << i << ": " << c1.x << " " << c1.y << " " << c1.z << " against " << c2.x
@@ -137,9 +142,7 @@ TEST_CASE("one point light: glass, a light with a radius and ambient occlusion l
         RandomCsg g(11);
         int hits = 0;
         for (int i = 0; i < 400; ++i) {
-            const glm::dvec3 o = glm::dvec3(g.uni(-1, 1), -6, g.uni(1, 3));
-            const glm::dvec3 target(g.uni(-1.8, 1.8), g.uni(-1.5, 1.5), g.uni(-1.1, 1.2));
-            const render::TraceRay ray{o, target - o, 0, kInf};
+            const render::TraceRay ray = toward_scene(g);
             std::uint32_t id1 = 0, id2 = 0;
             const glm::dvec3 c1 = s1.radiance(ray, 0, ts1, &id1), c2 = s2.radiance(ray, 0, ts2, &id2);
             INFO("variant " << variant << " ray " << i);
