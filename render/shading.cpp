@@ -276,6 +276,23 @@ glm::dvec3 Shader::ground(const glm::dvec3& p, ThreadState& ts) const {
     return miss_ * (1 - scene_.ground.shadow * std::min(1.0, blocked / all));
 }
 
+namespace {
+
+// The surface's response to light of colour `k` arriving from unit
+// direction l, with h = |d|·l − d the half vector (not normalised), added
+// to the diffuse and highlight sums: one copy for both shading paths, so
+// shade_point_lit keeps shade_any's bits. Inlined: a call per light per
+// shading point spilled its arguments and returned through memory.
+[[gnu::always_inline]] inline void respond(const csg::Material& m, const glm::dvec3& n, const glm::dvec3& albedo,
+                                           const glm::dvec3& h, double ndl, const glm::dvec3& k,
+                                           glm::dvec3& diffuse, glm::dvec3& highlights) {
+    const double nh = glm::dot(n, h);
+    diffuse += k * (m.diffuse * ndl) * albedo;
+    highlights += k * (m.specular * highlight(nh > 0 ? nh * nh / glm::dot(h, h) : 0.0, m.shininess));
+}
+
+}  // namespace
+
 // Most scenes' case (the bench's: one point light, opaque materials): the
 // general path's numbers in its order, without its loop over lights and
 // its lambdas' captures, the ambient occlusion and mirror branches, and
@@ -299,14 +316,9 @@ glm::dvec3 Shader::shade_point_lit(const TraceRay& ray, const TraceHit& hit, con
             const Departure from = facing ? tracer_.departure(hit, n) : Departure{};
             const glm::dvec3 through =
                 light.shadows ? transmitted(TraceRay{origin, view.l, 0, view.dist}, ts, &from) : glm::dvec3(1.0);
-            if (through != glm::dvec3(0.0)) {
-                // (shade's respond, with k = light.color·view.k·through.)
-                const glm::dvec3 k = light.color * view.k * through;
-                const glm::dvec3 h = glm::length(ray.d) * view.l - ray.d;
-                const double nh = glm::dot(n, h);
-                diffuse += k * (m.diffuse * ndl) * albedo;
-                highlights += k * (m.specular * highlight(nh > 0 ? nh * nh / glm::dot(h, h) : 0.0, m.shininess));
-            }
+            if (through != glm::dvec3(0.0))
+                respond(m, n, albedo, glm::length(ray.d) * view.l - ray.d, ndl, light.color * view.k * through, diffuse,
+                        highlights);
         }
     }
     // (kAmbient·open with open = 1 is kAmbient.)
@@ -336,19 +348,11 @@ glm::dvec3 Shader::shade_any(const TraceRay& ray, const TraceHit& hit, int depth
     const double dlen = glm::length(ray.d);
 
     glm::dvec3 diffuse(0.0), highlights(0.0);
-    // The surface's response to light of colour `k` arriving from unit direction l.
-    // Inlined: a call per light per shading point spilled the lambda's
-    // captures and returned through memory.
-    auto respond = [&](const glm::dvec3& l, double ndl, const glm::dvec3& k) __attribute__((always_inline)) {
-        const glm::dvec3 h = dlen * l - ray.d;  // the half vector, not normalised
-        const double nh = glm::dot(n, h);
-        diffuse += k * (m.diffuse * ndl) * albedo;
-        highlights += k * (m.specular * highlight(nh > 0 ? nh * nh / glm::dot(h, h) : 0.0, m.shininess));
-    };
     // Shadow rays leave the surface outwards only where n was not turned.
     const Departure from = facing ? tracer_.departure(hit, n) : Departure{};
     light_rays(origin, n, &from, ts, [&](const csg::Light&, const glm::dvec3& l, double ndl, const glm::dvec3& k, const glm::dvec3& through) __attribute__((always_inline)) {
-        if (through != glm::dvec3(0.0)) respond(l, ndl, k * through);
+        if (through != glm::dvec3(0.0))
+            respond(m, n, albedo, dlen * l - ray.d, ndl, k * through, diffuse, highlights);
     });
     double open = 1;  // ambient occlusion: the ambient light's share that reaches p
     if (const csg::AmbientOcclusion& ao = scene_.ambient_occlusion; ao.samples > 0)

@@ -55,7 +55,7 @@ bool passes_clear(const CsgTracer::Impl& impl, const TraceRay& ray, const std::u
         const glm::dvec3 w = b.c - o;
         const glm::dvec3 q = w - glm::dot(w, ray.d) * inv_dd * ray.d;
         const double w1 = std::abs(w.x) + std::abs(w.y) + std::abs(w.z);
-        const double r = (b.r + slack_abs + impl.ball_slack * w1) * (1 + 1e-6) + 1e-12 * w1;
+        const double r = grown_radius(b.r, slack_abs, impl.ball_slack, w1) * (1 + 1e-6) + 1e-12 * w1;
         if (!(glm::dot(q, q) > r * r)) return false;
     }
     return true;

@@ -71,9 +71,15 @@ void CsgTracer::Impl::local_tolerances(const std::vector<std::uint32_t>& units) 
         }
         return ext;
     };
+    // A unit's rule, on one of its nodes (and the node's leaf).
+    const auto apply = [&](std::uint32_t id, double eps) {
+        node_eps[id] = std::max(node_eps[id], eps);
+        const csg::Node& n = scene.nodes[id];
+        if (n.op == csg::Op::Leaf) leaf_eps[n.first] = std::max(leaf_eps[n.first], eps);
+    };
     // A unit that is one leaf (every unit of a crowd of bare spheres) needs
-    // no walk: its rule from its own box and leaf, applied as the walk
-    // applies its (the same max over the same values).
+    // no walk: its rule from its own box and leaf (the same max over the
+    // same values).
     std::vector<std::uint32_t> stack, members;
     for (std::uint32_t unit : units) {
         if (scene.nodes[unit].op == csg::Op::Leaf) {
@@ -81,9 +87,7 @@ void CsgTracer::Impl::local_tolerances(const std::vector<std::uint32_t>& units) 
             ext.add(leaf_extent(scene.leaves[scene.nodes[unit].first]));
             const double eps = unit_eps(ext);
             widest = std::max(widest, eps);
-            node_eps[unit] = std::max(node_eps[unit], eps);
-            const std::uint32_t leaf = scene.nodes[unit].first;
-            leaf_eps[leaf] = std::max(leaf_eps[leaf], eps);
+            apply(unit, eps);
             continue;
         }
         // The unit's subtree, iteratively (trees may be deep).
@@ -103,11 +107,7 @@ void CsgTracer::Impl::local_tolerances(const std::vector<std::uint32_t>& units) 
         }
         const double eps = unit_eps(ext);
         widest = std::max(widest, eps);
-        for (std::uint32_t id : members) {
-            node_eps[id] = std::max(node_eps[id], eps);
-            const csg::Node& n = scene.nodes[id];
-            if (n.op == csg::Op::Leaf) leaf_eps[n.first] = std::max(leaf_eps[n.first], eps);
-        }
+        for (std::uint32_t id : members) apply(id, eps);
     }
     // Nodes above the units (the root's union chain) are never spanned;
     // give them the widest so their padded boxes stay conservative.
