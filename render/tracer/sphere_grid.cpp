@@ -148,25 +148,6 @@ template <class Visit>
     st.scratch->counters.grid_cells += walked;
 }
 
-// Asks for the cache lines a cell's units' sphere tests read past their
-// balls (bare_sphere_span: the node's tolerance and padded box, its leaf's
-// radius and offset in the 312-byte leaf), before their ball tests: a unit
-// whose ball passes then finds them loaded (a chain of four loads, each
-// indexed by the one before, otherwise waited for in turn). At 10^5 units
-// those arrays outgrow the core's caches, and other processes on the core
-// evict them between a row's rays. Only a hint: no value changes.
-[[gnu::always_inline]] inline void prefetch_units(const CsgTracer::Impl& impl, const std::uint32_t* u,
-                                                   const std::uint32_t* end) {
-    for (; u != end; ++u) {
-        const std::uint32_t node = impl.top.items[*u];
-        __builtin_prefetch(&impl.padded[node]);
-        __builtin_prefetch(&impl.node_eps[node]);
-        const csg::Leaf& leaf = impl.scene.leaves[impl.scene.nodes[node].first];
-        __builtin_prefetch(&leaf.p[0]);
-        __builtin_prefetch(&leaf.object_from_world.offset);
-    }
-}
-
 }  // namespace
 
 int grid_first_hit(RayState& st, const TraceRay& ray, TraceHit& hit) {
@@ -186,7 +167,6 @@ int grid_first_hit(RayState& st, const TraceRay& ray, TraceHit& hit) {
     const glm::dvec3 o = st.o, d = st.d;
     const double a = ray.tnear;
     walk(g, st, t0, g.margin * st.inv_len, near.best, [&](const std::uint32_t* u, const std::uint32_t* end) {
-        prefetch_units(impl, u, end);
         for (; u != end; ++u)
             if (!ball_misses(balls[*u], o, d, inv_len2, a, near.best, slack_abs, slack_rel)) near.take(st, *u, nodes[*u], a);
         return false;
@@ -203,7 +183,6 @@ int grid_occluded(RayState& st, const TraceRay& ray, std::uint32_t skip, std::ui
     if (!g.fits(st.o, st.d, t1)) return -1;
     bool blocked = false;
     walk(g, st, t0, g.margin * st.inv_len, ray.tfar, [&](const std::uint32_t* u, const std::uint32_t* end) {
-        prefetch_units(impl, u, end);
         for (; u != end; ++u)
             if (*u != skip && bare_sphere_blocks(st, *u, impl.top.items[*u], ray.tnear, ray.tfar)) {
                 by = *u;
