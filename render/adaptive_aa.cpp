@@ -567,8 +567,13 @@ int Refinement::face_model(const glm::dvec3& o, const glm::dvec3& d, glm::dvec2 
     // tolerance, the other leaf's distance, Lipschitz 1, keeps its sign
     // there too — also on a curved face seen at a grazing angle.
     const double cos = std::abs(along) / (glm::length(n) * glm::length(d));
-    const double own = leaf_distance(f.hit, w), across = leaf_distance(g.hit, w), at_face = leaf_distance(g.hit, at_f);
-    if (!(std::abs(own) <= tolerance * cos) || !(std::abs(across) > tolerance) || at_face == 0) return 0;
+    // (Each distance asked only once the one before has passed: the
+    // second or third is not needed where an earlier test fails.)
+    if (!(std::abs(leaf_distance(f.hit, w)) <= tolerance * cos)) return 0;
+    const double across = leaf_distance(g.hit, w);
+    if (!(std::abs(across) > tolerance)) return 0;
+    const double at_face = leaf_distance(g.hit, at_f);
+    if (at_face == 0) return 0;
     if ((across > 0) == (at_face > 0)) return 1;
     return cuts_away(g.hit.surface.leaf, f.hit.surface.leaf) ? -1 : 0;
 }
