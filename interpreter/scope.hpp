@@ -59,13 +59,18 @@ struct Scope {
             auto it = index_->find(name);
             return it == index_->end() ? nullptr : &vars[it->second];
         }
-        // The first byte compared inline: a loop's scopes are searched
-        // name by name on every lookup, and most names differ there (a
-        // memcmp call for each: 425.6 -> 421.7 M instructions evaluating
-        // 10^5 spheres in a triple loop).
         for (VarSlot& v : vars)
-            if (v.name.size() == name.size() && (name.empty() || v.name[0] == name[0]) && v.name == name) return &v;
+            if (same_name(v.name, name)) return &v;
         return nullptr;
+    }
+    // Names are short (`i`, `r`, `size`): compared byte by byte inline, a
+    // memcmp call only past 8 bytes.
+    static bool same_name(std::string_view a, std::string_view b) {
+        if (a.size() != b.size()) return false;
+        if (a.size() > 8) return a == b;
+        for (std::size_t i = 0; i < a.size(); ++i)
+            if (a[i] != b[i]) return false;
+        return true;
     }
     void add(VarSlot v) {
         vars.push_back(std::move(v));
