@@ -127,7 +127,7 @@ public:
     // Expressions (eval_expr.cpp). A number literal or a name, the leaves
     // of most expressions, inline: no call through the dispatch of every
     // kind for them (docs/performance.md, "The interpreter's per-call costs").
-    Value eval(const ast::Expr& e, Scope& s) {
+    [[gnu::always_inline]] Value eval(const ast::Expr& e, Scope& s) {
         if (e.kind == ast::ExprKind::Number) return Value(e.number);
         if (e.kind == ast::ExprKind::Ident) return lookup(e, s);
         return eval_node(e, s);
@@ -255,6 +255,11 @@ private:
     std::uint64_t depth_ = 0, steps_ = 0, iterations_ = 0, echo_bytes_ = 0;
 
     std::unordered_map<const void*, BlockInfo> blocks_;
+    // prepare()'s last answer: a loop evaluates the same block (a
+    // translate()'s child) on every pass. Entries of blocks_ are never
+    // erased and stay where they are, so the pointer stays valid.
+    const void* last_block_ = nullptr;
+    const BlockInfo* last_info_ = nullptr;
     // Per function literal: the names its body reads or calls (what a closure copies).
     std::unordered_map<const ast::Expr*, std::vector<std::string_view>> free_names_;
     bool function_values_ = false;  // a literal was evaluated: calls look at variables first

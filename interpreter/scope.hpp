@@ -120,7 +120,9 @@ struct DynRestore {
     std::vector<DynVar>& dyn;
     std::size_t size;
     explicit DynRestore(std::vector<DynVar>& d) : dyn(d), size(d.size()) {}
-    ~DynRestore() { dyn.resize(size); }
+    ~DynRestore() {
+        if (dyn.size() != size) dyn.resize(size);  // most scopes push nothing
+    }
 };
 
 // "line 4", or "lib.sdl:4" when `there` is in another file than `here`: how

@@ -66,11 +66,11 @@ public:
     // destroying a number (most values a loop makes) is a tag test and a
     // few stores, inline, where the variant visited a table of functions
     // for each (docs/performance.md, "The interpreter's per-call costs").
-    Value(const Value& o) : tag_(o.tag_) {
+    [[gnu::always_inline]] Value(const Value& o) : tag_(o.tag_) {
         if (o.shared()) copy_shared(o);
         else copy_plain(o);
     }
-    Value(Value&& o) noexcept : tag_(o.tag_) {
+    [[gnu::always_inline]] Value(Value&& o) noexcept : tag_(o.tag_) {
         if (!o.shared()) {
             copy_plain(o);
             return;
@@ -96,7 +96,7 @@ public:
         }
         return *this;
     }
-    ~Value() { reset(); }
+    [[gnu::always_inline]] ~Value() { reset(); }
 
     static Value undef() { return Value(); }
     static Value number(double n) { return Value(n); }
@@ -147,8 +147,10 @@ private:
     using StrPtr = std::shared_ptr<const std::string>;
     using ListPtr = std::shared_ptr<const ValueList>;
     explicit Value(Range r) noexcept : tag_(ValueType::Range) { u_.range = r; }
-    bool shared() const {
-        return tag_ == ValueType::String || tag_ == ValueType::List || tag_ == ValueType::Function;
+    bool shared() const {  // string, list or function: one test of a bit mask
+        constexpr unsigned kShared = 1u << unsigned(ValueType::String) | 1u << unsigned(ValueType::List) |
+                                     1u << unsigned(ValueType::Function);
+        return (kShared >> unsigned(tag_)) & 1u;
     }
     void copy_shared(const Value& o);  // value.cpp: o holds a string, list or function
     // Bool, number and range (undef: whatever bytes): trivially copyable, so as bytes.
