@@ -55,10 +55,7 @@ struct Scope {
     // names (a file of thousands of top-level bindings) gets a hash index,
     // so binding and looking up n names stays linear in n, not quadratic.
     VarSlot* find_local(std::string_view name) {
-        if (index_) {
-            auto it = index_->find(name);
-            return it == index_->end() ? nullptr : &vars[it->second];
-        }
+        if (index_) [[unlikely]] return find_indexed(name);
         for (VarSlot& v : vars)
             if (same_name(v.name, name)) return &v;
         return nullptr;
@@ -88,6 +85,12 @@ struct Scope {
 
 private:
     static constexpr std::size_t kIndexFrom = 32;
+    // Out of line: the hash lookup's registers would crowd every name
+    // search's loop (a lookup in a loop's scope).
+    [[gnu::noinline]] VarSlot* find_indexed(std::string_view name) {
+        auto it = index_->find(name);
+        return it == index_->end() ? nullptr : &vars[it->second];
+    }
     std::unique_ptr<std::unordered_map<std::string_view, std::uint32_t>> index_;
     void build_index() {
         index_ = std::make_unique<std::unordered_map<std::string_view, std::uint32_t>>();
