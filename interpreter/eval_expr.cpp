@@ -611,9 +611,10 @@ Value Evaluator::eval_list(const ast::Expr& e, Scope& s) {
             expand_element(*item, s, out);
             continue;
         }
+        Value v = eval(*item, s);  // evaluated before the limit is checked, as push_element's argument was
         if (out.size() >= opt_.limits.list_elements) [[unlikely]]
-            push_element(out, Value(), item->loc);  // throws the list size limit
-        out.push_back(eval(*item, s));
+            push_element(out, std::move(v), item->loc);  // throws the list size limit
+        out.push_back(std::move(v));
     }
     return Value::list(std::move(out));
 }

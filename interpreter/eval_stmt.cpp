@@ -209,6 +209,7 @@ const BlockInfo& Evaluator::prepare(const std::vector<ast::StmtPtr>& stmts) {
         }
     }
     info.needs_scope = !info.assigns.empty() || !info.functions.empty() || !info.modules.empty() || !info.used.empty();
+    user_modules_ = user_modules_ || !info.modules.empty();
     return blocks_.emplace(&stmts, std::move(info)).first->second;
 }
 
@@ -596,7 +597,7 @@ void Evaluator::instantiate(const ast::Stmt& st, Scope& s, bool top_level) {
         stmt_children(st, s);
         return;
     }
-    for (Scope* sc = &s; sc; sc = sc->parent) {
+    for (Scope* sc = user_modules_ ? &s : nullptr; sc; sc = sc->parent) {
         auto find = [&](Scope* where) -> const ast::Stmt* {
             for (const ast::Stmt* m : where->modules)
                 if (m->name == name) return m;

@@ -260,6 +260,10 @@ private:
     // erased and stay where they are, so the pointer stays valid.
     const void* last_block_ = nullptr;
     const BlockInfo* last_info_ = nullptr;
+    // Whether any block prepared so far defines a module: only those put
+    // modules in scopes (bind_block), so until one does, a call's search
+    // of the scopes for a user module would find none (instantiate).
+    bool user_modules_ = false;
     // Per function literal: the names its body reads or calls (what a closure copies).
     std::unordered_map<const ast::Expr*, std::vector<std::string_view>> free_names_;
     bool function_values_ = false;  // a literal was evaluated: calls look at variables first

@@ -109,6 +109,8 @@ TEST_CASE("the list size limit in a literal's plain elements", "[limits]") {
     CHECK(error_of("x = [1, 2, 3];", opt) == "test.sdl:1:12: error: list size limit 2 exceeded");
     CHECK(error_of("x = [for (i = [0:0]) i, 2, 3];", opt) == "test.sdl:1:28: error: list size limit 2 exceeded");
     CHECK(error_of("x = [1, for (i = [0:1]) i];", opt) == "test.sdl:1:25: error: list size limit 2 exceeded");
+    // The element past the limit is evaluated first: its own error is the one reported.
+    CHECK(error_of("x = [1, 2, [0, 0, 0]];", opt) == "test.sdl:1:19: error: list size limit 2 exceeded");
     CHECK(kerf::test::value_of("[1, 2]") == "[1, 2]");
 }
 
