@@ -94,10 +94,10 @@ public:
     // A new node at loc, its other fields the defaults, built in place (not
     // built aside and moved in: 88 bytes each, a loop of a million leaves).
     graph::Node& emplace(const SourceLoc& loc) {
-        grow(graph.nodes, max_nodes);
-        if (graph.nodes.size() == graph.nodes.capacity()) {  // loc may be a node's: copied before the arena moves
+        if (graph.nodes.size() == graph.nodes.capacity()) {  // the arena moves: loc may be a node's, so copied first
             graph::Node n;
             n.loc = loc;
+            grow(graph.nodes, max_nodes);
             return graph.nodes.emplace_back(std::move(n));
         }
         graph::Node& n = graph.nodes.emplace_back();
