@@ -72,7 +72,20 @@ void Evaluator::push_element(ValueList& out, Value v, const SourceLoc& loc) {
     out.push_back(std::move(v));
 }
 
+// A name bound and ready in the nearest scope that has it: the loop in
+// line, every other answer (a `$` name, one not ready, none) out of line.
 Value Evaluator::lookup(const ast::Expr& e, Scope& s) {
+    std::string_view name = e.text;
+    if (!is_dollar(name))
+        for (Scope* sc = &s; sc; sc = sc->parent)
+            if (VarSlot* v = sc->find_local(name)) {
+                if (v->ready) [[likely]] return v->value;
+                break;
+            }
+    return lookup_slow(e, s);
+}
+
+Value Evaluator::lookup_slow(const ast::Expr& e, Scope& s) {
     std::string_view name = e.text;
     if (is_dollar(name)) {
         if (name == "$children") return Value(static_cast<double>(s.module ? s.module->child_count : 0));
@@ -539,7 +552,19 @@ void Evaluator::expand_element(const ast::Expr& e, Scope& s, ValueList& out) {
 
 thread_local const char* stack_floor = nullptr;
 
-Value Evaluator::eval(const ast::Expr& e, Scope& s) {
+namespace {
+bool is_generator(ast::ExprKind k) {
+    using K = ast::ExprKind;
+    return k == K::ListFor || k == K::ListForC || k == K::ListIf || k == K::ListLet || k == K::ListEach;
+}
+}  // namespace
+
+// The dispatch alone, its cases that need a frame of their own out of line:
+// one function for every kind made each call, a number literal or a name,
+// pay the prologue and epilogue of the largest case (callee-saved
+// registers, a budget, handlers): a third of evaluating `(i + 0.5) * 0.2`
+// (docs/performance.md, "The interpreter's per-call costs").
+Value Evaluator::eval_node(const ast::Expr& e, Scope& s) {
     using K = ast::ExprKind;
     char probe;
     if (stack_floor && &probe < stack_floor)
@@ -550,130 +575,17 @@ Value Evaluator::eval(const ast::Expr& e, Scope& s) {
         case K::Bool: return Value(e.number != 0);
         case K::Undef: return Value();
         case K::Ident: return lookup(e, s);
-        case K::List: {
-            ValueList out;
-            out.reserve(e.items.size());
-            for (const ast::ExprPtr& item : e.items) expand_element(*item, s, out);
-            return Value::list(std::move(out));
-        }
-        case K::Range: {
-            double v[3];
-            bool finite = true;
-            for (std::size_t i = 0; i < e.items.size() && i < 3; ++i) {
-                Value x = eval(*e.items[i], s);
-                if (lenient_ && !x.is_number()) return Value();  // OpenSCAD: undef
-                if (!x.is_number()) throw SourceError(e.items[i]->loc, std::string("range bound must be a number, got ") + x.type_name());
-                if (!lenient_ && !std::isfinite(x.as_number())) throw SourceError(e.items[i]->loc, "range bound must be finite, got " + format_number(x.as_number()));
-                v[i] = x.as_number();
-                finite = finite && std::isfinite(v[i]);
-            }
-            // OpenSCAD makes a range of any numbers: `[0 : 1 : inf]` echoes as
-            // such, a loop over it runs no pass with its "too many elements"
-            // warning, one of NaN none, `[inf : 1 : inf]` one (Range::size,
-            // openscad_range_count; docs/openscad.md, "Ranges").
-            if (e.items.size() == 2) {
-                // OpenSCAD 2021 counts [5:1] down as [1:1:5] (docs/openscad.md, "Ranges").
-                if (lenient_ && v[0] > v[1]) {
-                    warn(e.loc, "Using ranges of the form [begin:end] with begin value greater than the end value is deprecated");
-                    std::swap(v[0], v[1]);
-                }
-                return Value::range(v[0], 1, v[1]);
-            }
-            // OpenSCAD makes [a : 0 : b]; its loops then run no pass (iteration_count).
-            if (v[1] == 0 && !lenient_) throw SourceError(e.items[1]->loc, "range step must not be 0");
-            // A step pointing away from the end: empty in both dialects, and
-            // OpenSCAD says so where the range is made.
-            // (Not for a field that is not finite: OpenSCAD is silent there.)
-            if (lenient_ && finite && v[0] < v[2] && v[1] < 0) warn(e.loc, "begin is smaller than the end, but step is negative");
-            if (lenient_ && finite && v[0] > v[2] && v[1] > 0) warn(e.loc, "begin is greater than the end, but step is positive");
-            return Value::range(v[0], v[1], v[2]);
-        }
-        case K::Unary: {
-            Value a = eval(*e.items[0], s);
-            const std::string_view op = e.text;
-            if (op == "!") return Value(!a.truthy());
-            if (a.is_number()) return Value(op == "-" ? -a.as_number() : a.as_number());  // unary_op's first answer
-            OpBudget budget{opt_.limits.list_elements};
-            // OpenSCAD's undef operand (the usual warning in a loop) goes
-            // straight to its answer: the strict refusal costs a throw.
-            if (lenient_ && a.is_undef()) return lenient_operator(e, a, nullptr, budget);
-            Value v;
-            try {
-                v = unary_op(e.text, a, e.loc, &budget);
-            } catch (const SoftError&) {
-                if (!lenient_) throw;
-                return lenient_operator(e, a, nullptr, budget);
-            }
-            count_work(budget.used + budget.walked, e.loc);
-            return v;
-        }
-        case K::Binary: {
-            const std::string_view op = e.text;  // compared inline: no strlen, no call
-            if (op == "&&") return Value(eval(*e.items[0], s).truthy() && eval(*e.items[1], s).truthy());
-            if (op == "||") return Value(eval(*e.items[0], s).truthy() || eval(*e.items[1], s).truthy());
-            Value a = eval(*e.items[0], s);
-            Value b = eval(*e.items[1], s);
-            // Arithmetic on two numbers, as binary_op answers it first (it
-            // charges nothing for numbers): a loop's `(i + 0.5) * 0.2`
-            // without a budget or a dispatch on the operator's text.
-            if (op.size() == 1 && a.is_number() && b.is_number() && op[0] != '<' && op[0] != '>')
-                return Value(number_op(op[0], a.as_number(), b.as_number()));
-            OpBudget budget{opt_.limits.list_elements};
-            if (lenient_ && (a.is_undef() || b.is_undef()) && !a.is_list() && !b.is_list() && e.text != "==" &&
-                e.text != "!=")
-                return lenient_operator(e, a, &b, budget);
-            budget.work_cap = work_cap();
-            Value v;
-            try {
-                v = binary_op(e.text, a, b, e.loc, &budget);
-            } catch (const SoftError&) {
-                if (!lenient_) throw;
-                return lenient_operator(e, a, &b, budget);
-            } catch (const WorkCapReached&) {
-                count_work(budget.used + budget.walked, e.loc);  // past the limit: throws
-                throw;
-            }
-            // Lists made, or only read (compared, multiplied in a dot product).
-            count_work(budget.used + budget.walked, e.loc);
-            return v;
-        }
+        case K::List: return eval_list(e, s);
+        case K::Range: return eval_range(e, s);
+        case K::Unary: return eval_unary(e, s);
+        case K::Binary: return eval_binary(e, s);
         case K::Ternary: return eval(*e.items[eval(*e.items[0], s).truthy() ? 1 : 2], s);
-        case K::Index: {
-            Value obj = eval(*e.items[0], s);
-            Value idx = eval(*e.items[1], s);
-            // A string's i-th character is found walking it (UTF-8) up to
-            // there: charged i + 1 bytes, a lower bound (the walk takes up
-            // to 4 bytes a character where they are not ASCII), the whole
-            // string for an index past its end.
-            if (obj.is_string() && idx.is_number() && !(idx.as_number() < 0)) {
-                const double i = idx.as_number();
-                const std::uint64_t n = obj.as_string().size();
-                count_work((i + 1 < double(n) ? std::uint64_t(i) + 1 : n) / 16, e.loc);
-            }
-            if (lenient_) return openscad_index(obj, idx);
-            return index_value(obj, idx, e.loc);
-        }
-        case K::Member: {
-            Value obj = eval(*e.items[0], s);
-            int i = e.text == "x" ? 0 : e.text == "y" ? 1 : e.text == "z" ? 2 : -1;
-            if (i < 0 && lenient_) {  // OpenSCAD 2021: undef, silently
-                warn(e.loc, "unknown member '." + e.text + "' is undef (OpenSCAD 2021 knows .x, .y and .z)");
-                return Value();
-            }
-            if (i < 0) throw SourceError(e.loc, "unknown member '." + e.text + "'");
-            if (lenient_) return openscad_index(obj.is_list() ? obj : Value(), Value(i));
-            if (!obj.is_list()) throw SourceError(e.loc, "'." + e.text + "' needs a list, got " + obj.type_name());
-            return index_value(obj, Value(i), e.loc);
-        }
+        case K::Index: return eval_index(e, s);
+        case K::Member: return eval_member(e, s);
         case K::Call: return call_function(e, s);
         case K::Function: return make_closure(e, s);
         case K::Apply: return apply(e, s);
-        case K::Let: {
-            DynRestore restore(dyn_);
-            Scope ls(&s);
-            bind_sequential(e.bindings, ls, "let");
-            return e.items.empty() ? Value() : eval(*e.items[0], ls);
-        }
+        case K::Let: return eval_let(e, s);
         case K::Echo:
             do_echo(e.args, s, e.loc);
             return e.items.empty() || !e.items[0] ? Value() : eval(*e.items[0], s);
@@ -687,6 +599,161 @@ Value Evaluator::eval(const ast::Expr& e, Scope& s) {
         case K::ListLet: throw SourceError(e.loc, "a list generator is only allowed inside [ ]");
     }
     throw SourceError(e.loc, "unknown expression");
+}
+
+Value Evaluator::eval_list(const ast::Expr& e, Scope& s) {
+    ValueList out;
+    out.reserve(e.items.size());
+    for (const ast::ExprPtr& item : e.items) {
+        // A plain element (most are: `[x, y, z]`) is evaluated into place,
+        // as expand_element's default case does, without its calls and moves.
+        if (is_generator(item->kind)) {
+            expand_element(*item, s, out);
+            continue;
+        }
+        Value v = eval(*item, s);  // evaluated before the limit is checked, as push_element's argument was
+        if (out.size() >= opt_.limits.list_elements) [[unlikely]]
+            push_element(out, std::move(v), item->loc);  // throws the list size limit
+        out.push_back(std::move(v));
+    }
+    return Value::list(std::move(out));
+}
+
+Value Evaluator::eval_range(const ast::Expr& e, Scope& s) {
+    double v[3];
+    bool finite = true;
+    for (std::size_t i = 0; i < e.items.size() && i < 3; ++i) {
+        Value x = eval(*e.items[i], s);
+        if (lenient_ && !x.is_number()) return Value();  // OpenSCAD: undef
+        if (!x.is_number()) throw SourceError(e.items[i]->loc, std::string("range bound must be a number, got ") + x.type_name());
+        if (!lenient_ && !std::isfinite(x.as_number())) throw SourceError(e.items[i]->loc, "range bound must be finite, got " + format_number(x.as_number()));
+        v[i] = x.as_number();
+        finite = finite && std::isfinite(v[i]);
+    }
+    // OpenSCAD makes a range of any numbers: `[0 : 1 : inf]` echoes as
+    // such, a loop over it runs no pass with its "too many elements"
+    // warning, one of NaN none, `[inf : 1 : inf]` one (Range::size,
+    // openscad_range_count; docs/openscad.md, "Ranges").
+    if (e.items.size() == 2) {
+        // OpenSCAD 2021 counts [5:1] down as [1:1:5] (docs/openscad.md, "Ranges").
+        if (lenient_ && v[0] > v[1]) {
+            warn(e.loc, "Using ranges of the form [begin:end] with begin value greater than the end value is deprecated");
+            std::swap(v[0], v[1]);
+        }
+        return Value::range(v[0], 1, v[1]);
+    }
+    // OpenSCAD makes [a : 0 : b]; its loops then run no pass (iteration_count).
+    if (v[1] == 0 && !lenient_) throw SourceError(e.items[1]->loc, "range step must not be 0");
+    // A step pointing away from the end: empty in both dialects, and
+    // OpenSCAD says so where the range is made.
+    // (Not for a field that is not finite: OpenSCAD is silent there.)
+    if (lenient_ && finite && v[0] < v[2] && v[1] < 0) warn(e.loc, "begin is smaller than the end, but step is negative");
+    if (lenient_ && finite && v[0] > v[2] && v[1] > 0) warn(e.loc, "begin is greater than the end, but step is positive");
+    return Value::range(v[0], v[1], v[2]);
+}
+
+Value Evaluator::eval_unary(const ast::Expr& e, Scope& s) {
+    Value a = eval(*e.items[0], s);
+    const std::string_view op = e.text;
+    if (op == "!") return Value(!a.truthy());
+    if (a.is_number()) return Value(op == "-" ? -a.as_number() : a.as_number());  // unary_op's first answer
+    OpBudget budget{opt_.limits.list_elements};
+    // OpenSCAD's undef operand (the usual warning in a loop) goes
+    // straight to its answer: the strict refusal costs a throw.
+    if (lenient_ && a.is_undef()) return lenient_operator(e, a, nullptr, budget);
+    Value v;
+    try {
+        v = unary_op(e.text, a, e.loc, &budget);
+    } catch (const SoftError&) {
+        if (!lenient_) throw;
+        return lenient_operator(e, a, nullptr, budget);
+    }
+    count_work(budget.used + budget.walked, e.loc);
+    return v;
+}
+
+Value Evaluator::eval_binary(const ast::Expr& e, Scope& s) {
+    const std::string& op = e.text;  // compared by its characters: no call
+    if (op.size() == 2 && op[0] == op[1] && (op[0] == '&' || op[0] == '|')) {
+        const bool first = eval(*e.items[0], s).truthy();
+        if (op[0] == '&') return Value(first && eval(*e.items[1], s).truthy());
+        return Value(first || eval(*e.items[1], s).truthy());
+    }
+    Value a = eval(*e.items[0], s);
+    Value b = eval(*e.items[1], s);
+    // Arithmetic on two numbers, as binary_op answers it first (it
+    // charges nothing for numbers): a loop's `(i + 0.5) * 0.2`
+    // without a budget or a dispatch on the operator's text.
+    if (op.size() == 1 && a.is_number() && b.is_number() && op[0] != '<' && op[0] != '>') {
+        const double x = a.as_number(), y = b.as_number();
+        switch (op[0]) {  // number_op's common cases, inline
+            case '+': return Value(x + y);
+            case '-': return Value(x - y);
+            case '*': return Value(x * y);
+            case '/': return Value(x / y);
+            default: return Value(number_op(op[0], x, y));
+        }
+    }
+    return binary_values(e, a, b);
+}
+
+// A binary operator on values that are not two numbers: the budget of the
+// lists it makes or reads, and OpenSCAD's answers where the strict one fails.
+Value Evaluator::binary_values(const ast::Expr& e, const Value& a, const Value& b) {
+    OpBudget budget{opt_.limits.list_elements};
+    if (lenient_ && (a.is_undef() || b.is_undef()) && !a.is_list() && !b.is_list() && e.text != "==" &&
+        e.text != "!=")
+        return lenient_operator(e, a, &b, budget);
+    budget.work_cap = work_cap();
+    Value v;
+    try {
+        v = binary_op(e.text, a, b, e.loc, &budget);
+    } catch (const SoftError&) {
+        if (!lenient_) throw;
+        return lenient_operator(e, a, &b, budget);
+    } catch (const WorkCapReached&) {
+        count_work(budget.used + budget.walked, e.loc);  // past the limit: throws
+        throw;
+    }
+    // Lists made, or only read (compared, multiplied in a dot product).
+    count_work(budget.used + budget.walked, e.loc);
+    return v;
+}
+
+Value Evaluator::eval_index(const ast::Expr& e, Scope& s) {
+    Value obj = eval(*e.items[0], s);
+    Value idx = eval(*e.items[1], s);
+    // A string's i-th character is found walking it (UTF-8) up to
+    // there: charged i + 1 bytes, a lower bound (the walk takes up
+    // to 4 bytes a character where they are not ASCII), the whole
+    // string for an index past its end.
+    if (obj.is_string() && idx.is_number() && !(idx.as_number() < 0)) {
+        const double i = idx.as_number();
+        const std::uint64_t n = obj.as_string().size();
+        count_work((i + 1 < double(n) ? std::uint64_t(i) + 1 : n) / 16, e.loc);
+    }
+    if (lenient_) return openscad_index(obj, idx);
+    return index_value(obj, idx, e.loc);
+}
+
+Value Evaluator::eval_member(const ast::Expr& e, Scope& s) {
+    Value obj = eval(*e.items[0], s);
+    int i = e.text == "x" ? 0 : e.text == "y" ? 1 : e.text == "z" ? 2 : -1;
+    if (i < 0 && lenient_) {  // OpenSCAD 2021: undef, silently
+        warn(e.loc, "unknown member '." + e.text + "' is undef (OpenSCAD 2021 knows .x, .y and .z)");
+        return Value();
+    }
+    if (i < 0) throw SourceError(e.loc, "unknown member '." + e.text + "'");
+    if (lenient_) return openscad_index(obj.is_list() ? obj : Value(), Value(i));
+    if (!obj.is_list()) throw SourceError(e.loc, "'." + e.text + "' needs a list, got " + obj.type_name());
+    return index_value(obj, Value(i), e.loc);
+}
+
+Value Evaluator::eval_let(const ast::Expr& e, Scope& s) {
+    DynRestore restore(dyn_);
+    Scope ls(&s);
+    bind_sequential(e.bindings, ls, "let");
+    return e.items.empty() ? Value() : eval(*e.items[0], ls);
 }
 
 }  // namespace kerf::eval

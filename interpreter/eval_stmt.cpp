@@ -174,8 +174,13 @@ Scope* Evaluator::load_use(const ast::Stmt& st) {
 // ---------------------------------------------------------------- blocks
 
 const BlockInfo& Evaluator::prepare(const std::vector<ast::StmtPtr>& stmts) {
+    if (&stmts == last_block_) return *last_info_;
     auto it = blocks_.find(&stmts);
-    if (it != blocks_.end()) return it->second;
+    if (it != blocks_.end()) {
+        last_block_ = &stmts;
+        last_info_ = &it->second;
+        return it->second;
+    }
     // The main file is the first link of its include chain.
     std::optional<ChainGuard> main_file;
     if (files_.includes.empty() && !stmts.empty() && stmts[0]->loc.file)
@@ -204,6 +209,7 @@ const BlockInfo& Evaluator::prepare(const std::vector<ast::StmtPtr>& stmts) {
         }
     }
     info.needs_scope = !info.assigns.empty() || !info.functions.empty() || !info.modules.empty() || !info.used.empty();
+    user_modules_ = user_modules_ || !info.modules.empty();
     return blocks_.emplace(&stmts, std::move(info)).first->second;
 }
 
@@ -591,7 +597,7 @@ void Evaluator::instantiate(const ast::Stmt& st, Scope& s, bool top_level) {
         stmt_children(st, s);
         return;
     }
-    for (Scope* sc = &s; sc; sc = sc->parent) {
+    for (Scope* sc = user_modules_ ? &s : nullptr; sc; sc = sc->parent) {
         auto find = [&](Scope* where) -> const ast::Stmt* {
             for (const ast::Stmt* m : where->modules)
                 if (m->name == name) return m;
@@ -655,7 +661,10 @@ void Evaluator::eval_stmt(const ast::Stmt& st, Scope& s, bool top_level) {
             }
             return;
         }
-        default: eval_plain(st, s, top_level); return;
+        default:
+            if (st.kind == ast::StmtKind::Instantiate) return instantiate(st, s, top_level);  // eval_plain's first case
+            eval_plain(st, s, top_level);
+            return;
     }
 }
 

@@ -124,12 +124,28 @@ public:
     static constexpr std::size_t kMaxErrors = 20;
     bool lenient() const { return lenient_; }  // the OpenSCAD dialect
 
-    // Expressions (eval_expr.cpp).
-    Value eval(const ast::Expr& e, Scope& s);
+    // Expressions (eval_expr.cpp). A number literal or a name, the leaves
+    // of most expressions, inline: no call through the dispatch of every
+    // kind for them (docs/performance.md, "The interpreter's per-call costs").
+    [[gnu::always_inline]] Value eval(const ast::Expr& e, Scope& s) {
+        if (e.kind == ast::ExprKind::Number) return Value(e.number);
+        if (e.kind == ast::ExprKind::Ident) return lookup(e, s);
+        return eval_node(e, s);
+    }
 
 private:
     // eval_expr.cpp
+    Value eval_node(const ast::Expr& e, Scope& s);  // any kind
+    Value eval_list(const ast::Expr& e, Scope& s);
+    Value eval_range(const ast::Expr& e, Scope& s);
+    Value eval_unary(const ast::Expr& e, Scope& s);
+    Value eval_binary(const ast::Expr& e, Scope& s);
+    Value binary_values(const ast::Expr& e, const Value& a, const Value& b);
+    Value eval_index(const ast::Expr& e, Scope& s);
+    Value eval_member(const ast::Expr& e, Scope& s);
+    Value eval_let(const ast::Expr& e, Scope& s);
     Value lookup(const ast::Expr& e, Scope& s);
+    Value lookup_slow(const ast::Expr& e, Scope& s);  // lookup's other answers, and its errors
     Value unknown_variable(const ast::Expr& e);  // the OpenSCAD dialect: undef and a warning
     Value call_function(const ast::Expr& e, Scope& s);
     // The user function `name` seen from s (and the scope it is defined in), or null.
@@ -239,6 +255,15 @@ private:
     std::uint64_t depth_ = 0, steps_ = 0, iterations_ = 0, echo_bytes_ = 0;
 
     std::unordered_map<const void*, BlockInfo> blocks_;
+    // prepare()'s last answer: a loop evaluates the same block (a
+    // translate()'s child) on every pass. Entries of blocks_ are never
+    // erased and stay where they are, so the pointer stays valid.
+    const void* last_block_ = nullptr;
+    const BlockInfo* last_info_ = nullptr;
+    // Whether any block prepared so far defines a module: only those put
+    // modules in scopes (bind_block), so until one does, a call's search
+    // of the scopes for a user module would find none (instantiate).
+    bool user_modules_ = false;
     // Per function literal: the names its body reads or calls (what a closure copies).
     std::unordered_map<const ast::Expr*, std::vector<std::string_view>> free_names_;
     bool function_values_ = false;  // a literal was evaluated: calls look at variables first

@@ -67,36 +67,62 @@ public:
     // It is 2D when its first child is; a child of the other kind is an
     // error at it (docs/spec.md §10), or dropped by warn_mixed.
     std::uint32_t make_node(std::size_t mark, graph::NodeKind kind, const SourceLoc& loc, std::uint32_t index = 0) {
-        graph::Node n;
+        bool flat = false;
+        if (pending.size() > mark) {
+            flat = graph.nodes[pending[mark]].flat;
+            if (pending.size() > mark + 1) drop_mixed(mark, flat);
+        }
+        const auto first_child = static_cast<std::uint32_t>(graph.child_refs.size());
+        const auto child_count = static_cast<std::uint32_t>(pending.size() - mark);
+        grow(graph.child_refs, max_nodes);
+        if (child_count == 1) graph.child_refs.push_back(pending[mark]);  // a transform's one child: no range insert
+        else
+            graph.child_refs.insert(graph.child_refs.end(), pending.begin() + static_cast<std::ptrdiff_t>(mark),
+                                    pending.end());
+        pending.resize(mark);
+        graph::Node& n = emplace(loc);
         n.kind = kind;
         n.index = index;
-        if (pending.size() > mark) {
-            n.flat = graph.nodes[pending[mark]].flat;
-            std::size_t kept = mark + 1;
-            for (std::size_t i = mark + 1; i < pending.size(); ++i) {
-                const graph::Node& c = graph.nodes[pending[i]];
-                if (c.flat == n.flat) {
-                    pending[kept++] = pending[i];
-                    continue;
-                }
-                if (!warn_mixed)
-                    throw SourceError(c.loc, c.flat ? "a 2D shape cannot be combined with 3D solids in one operation"
-                                                    : "a 3D solid cannot be combined with 2D shapes in one operation");
-                warn_mixed(c.loc, c.flat ? "mixing 2D and 3D objects is not supported: this 2D shape is ignored"
-                                         : "mixing 2D and 3D objects is not supported: this 3D solid is ignored");
-            }
-            pending.resize(kept);
-        }
-        n.first_child = static_cast<std::uint32_t>(graph.child_refs.size());
-        n.child_count = static_cast<std::uint32_t>(pending.size() - mark);
-        n.loc = loc;
-        grow(graph.child_refs, max_nodes);
-        graph.child_refs.insert(graph.child_refs.end(), pending.begin() + static_cast<std::ptrdiff_t>(mark),
-                                pending.end());
-        pending.resize(mark);
-        std::uint32_t id = add(std::move(n));
+        n.flat = flat;
+        n.first_child = first_child;
+        n.child_count = child_count;
+        const auto id = static_cast<std::uint32_t>(graph.nodes.size() - 1);
         pending.push_back(id);
         return id;
+    }
+
+    // A new node at loc, its other fields the defaults, built in place (not
+    // built aside and moved in: 88 bytes each, a loop of a million leaves).
+    graph::Node& emplace(const SourceLoc& loc) {
+        if (graph.nodes.size() == graph.nodes.capacity()) {  // the arena moves: loc may be a node's, so copied first
+            graph::Node n;
+            n.loc = loc;
+            grow(graph.nodes, max_nodes);
+            return graph.nodes.emplace_back(std::move(n));
+        }
+        graph::Node& n = graph.nodes.emplace_back();
+        n.loc = loc;
+        return n;
+    }
+
+    // Children pending[mark + 1..] of the other kind than the first (flat
+    // or not): an error at the first such (docs/spec.md §10), or dropped by
+    // warn_mixed.
+    void drop_mixed(std::size_t mark, bool flat) {
+        std::size_t kept = mark + 1;
+        for (std::size_t i = mark + 1; i < pending.size(); ++i) {
+            const graph::Node& c = graph.nodes[pending[i]];
+            if (c.flat == flat) {
+                pending[kept++] = pending[i];
+                continue;
+            }
+            if (!warn_mixed)
+                throw SourceError(c.loc, c.flat ? "a 2D shape cannot be combined with 3D solids in one operation"
+                                                : "a 3D solid cannot be combined with 2D shapes in one operation");
+            warn_mixed(c.loc, c.flat ? "mixing 2D and 3D objects is not supported: this 2D shape is ignored"
+                                     : "mixing 2D and 3D objects is not supported: this 3D solid is ignored");
+        }
+        pending.resize(kept);
     }
 
     // What a statement that groups its children contributes (a module call,

@@ -52,27 +52,49 @@ const char* type_name(ValueType t) {
 
 Value Value::string(std::string s) {
     Value v;
-    v.v_ = std::make_shared<const std::string>(std::move(s));
+    new (&v.u_.str) StrPtr(std::make_shared<const std::string>(std::move(s)));
+    v.tag_ = ValueType::String;
     return v;
 }
 
 Value Value::list(ValueList items) {
     Value v;
-    v.v_ = std::make_shared<const ValueList>(std::move(items));
+    new (&v.u_.list) ListPtr(std::make_shared<const ValueList>(std::move(items)));
+    v.tag_ = ValueType::List;
     return v;
 }
 
 Value Value::function(ClosurePtr f) {
     Value v;
-    v.v_ = std::move(f);
+    new (&v.u_.fn) ClosurePtr(std::move(f));
+    v.tag_ = ValueType::Function;
     return v;
 }
 
 Value Value::list_shared(std::shared_ptr<const ValueList> items) {
     Value v;
-    v.v_ = items ? std::move(items) : std::make_shared<const ValueList>();
+    new (&v.u_.list) ListPtr(items ? std::move(items) : std::make_shared<const ValueList>());
+    v.tag_ = ValueType::List;
     return v;
 }
+
+void Value::copy_shared(const Value& o) {
+    switch (o.tag_) {
+        case ValueType::String: new (&u_.str) StrPtr(o.u_.str); break;
+        case ValueType::List: new (&u_.list) ListPtr(o.u_.list); break;
+        default: new (&u_.fn) ClosurePtr(o.u_.fn); break;
+    }
+}
+
+void Value::release() noexcept {
+    switch (tag_) {
+        case ValueType::String: u_.str.~StrPtr(); break;
+        case ValueType::List: u_.list.~ListPtr(); break;
+        default: u_.fn.~ClosurePtr(); break;
+    }
+}
+
+void Value::bad_access() { throw std::bad_variant_access(); }
 
 bool Value::truthy() const {
     switch (type()) {

@@ -4,11 +4,12 @@
 // (three doubles) so `[0:1e12]` costs nothing until someone iterates it.
 #pragma once
 #include <cstdint>
+#include <cstring>
 #include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
-#include <variant>
+#include <variant>  // std::bad_variant_access
 #include <vector>
 
 #include "grammar/source.hpp"
@@ -55,11 +56,47 @@ const char* type_name(ValueType t);
 
 class Value {
 public:
-    Value() = default;  // undef
-    Value(double n) : v_(n) {}
-    Value(int n) : v_(static_cast<double>(n)) {}
-    Value(bool b) : v_(b) {}
+    Value() noexcept : tag_(ValueType::Undef) {}  // undef
+    Value(double n) noexcept : tag_(ValueType::Number) { u_.number = n; }
+    Value(int n) noexcept : tag_(ValueType::Number) { u_.number = static_cast<double>(n); }
+    Value(bool b) noexcept : tag_(ValueType::Bool) { u_.boolean = b; }
     Value(const char*) = delete;  // would silently become bool: use Value::string
+
+    // A tagged union rather than std::variant: copying, moving and
+    // destroying a number (most values a loop makes) is a tag test and a
+    // few stores, inline, where the variant visited a table of functions
+    // for each (docs/performance.md, "The interpreter's per-call costs").
+    [[gnu::always_inline]] Value(const Value& o) : tag_(o.tag_) {
+        if (o.shared()) copy_shared(o);
+        else copy_plain(o);
+    }
+    [[gnu::always_inline]] Value(Value&& o) noexcept : tag_(o.tag_) {
+        if (!o.shared()) {
+            copy_plain(o);
+            return;
+        }
+        switch (tag_) {
+            case ValueType::String: new (&u_.str) StrPtr(std::move(o.u_.str)); break;
+            case ValueType::List: new (&u_.list) ListPtr(std::move(o.u_.list)); break;
+            default: new (&u_.fn) ClosurePtr(std::move(o.u_.fn)); break;
+        }
+        o.tag_ = ValueType::Undef;  // moved from: undef (its pointer is null: nothing to release)
+    }
+    Value& operator=(const Value& o) {
+        if (this != &o) {
+            Value copy(o);
+            *this = std::move(copy);
+        }
+        return *this;
+    }
+    Value& operator=(Value&& o) noexcept {
+        if (this != &o) {
+            reset();
+            new (this) Value(std::move(o));
+        }
+        return *this;
+    }
+    [[gnu::always_inline]] ~Value() { reset(); }
 
     static Value undef() { return Value(); }
     static Value number(double n) { return Value(n); }
@@ -71,7 +108,7 @@ public:
     static Value range(const Range& r) { return Value(r); }
     static Value function(ClosurePtr f);
 
-    ValueType type() const { return static_cast<ValueType>(v_.index()); }
+    ValueType type() const { return tag_; }
     const char* type_name() const { return kerf::type_name(type()); }
     bool is_undef() const { return type() == ValueType::Undef; }
     bool is_bool() const { return type() == ValueType::Bool; }
@@ -81,14 +118,15 @@ public:
     bool is_range() const { return type() == ValueType::Range; }
     bool is_function() const { return type() == ValueType::Function; }
 
-    // Accessors: precondition is the matching is_*() (checked by std::get).
-    double as_number() const { return std::get<double>(v_); }
-    bool as_bool() const { return std::get<bool>(v_); }
-    const std::string& as_string() const { return *std::get<StrPtr>(v_); }
-    const ValueList& as_list() const { return *std::get<ListPtr>(v_); }
-    const std::shared_ptr<const ValueList>& list_ptr() const { return std::get<ListPtr>(v_); }
-    const Range& as_range() const { return std::get<Range>(v_); }
-    const eval::Closure& as_function() const { return *std::get<ClosurePtr>(v_); }
+    // Accessors: precondition is the matching is_*(); a mismatch throws
+    // std::bad_variant_access, as std::get did.
+    double as_number() const { return expect(ValueType::Number), u_.number; }
+    bool as_bool() const { return expect(ValueType::Bool), u_.boolean; }
+    const std::string& as_string() const { return expect(ValueType::String), *u_.str; }
+    const ValueList& as_list() const { return expect(ValueType::List), *u_.list; }
+    const std::shared_ptr<const ValueList>& list_ptr() const { return expect(ValueType::List), u_.list; }
+    const Range& as_range() const { return expect(ValueType::Range), u_.range; }
+    const eval::Closure& as_function() const { return expect(ValueType::Function), *u_.fn; }
 
     // docs/spec.md §2: false, 0, "", [], undef are false; everything else is true
     // (any range, and NaN, as in OpenSCAD where a number is true if != 0).
@@ -108,9 +146,35 @@ public:
 private:
     using StrPtr = std::shared_ptr<const std::string>;
     using ListPtr = std::shared_ptr<const ValueList>;
-    explicit Value(Range r) : v_(r) {}
-    // Order matches ValueType.
-    std::variant<std::monostate, bool, double, StrPtr, ListPtr, Range, ClosurePtr> v_;
+    explicit Value(Range r) noexcept : tag_(ValueType::Range) { u_.range = r; }
+    bool shared() const {  // string, list or function: one test of a bit mask
+        constexpr unsigned kShared = 1u << unsigned(ValueType::String) | 1u << unsigned(ValueType::List) |
+                                     1u << unsigned(ValueType::Function);
+        return (kShared >> unsigned(tag_)) & 1u;
+    }
+    void copy_shared(const Value& o);  // value.cpp: o holds a string, list or function
+    // Bool, number and range (undef: whatever bytes): trivially copyable, so as bytes.
+    void copy_plain(const Value& o) noexcept { std::memcpy(static_cast<void*>(&u_), static_cast<const void*>(&o.u_), sizeof(Range)); }
+    void release() noexcept;           // value.cpp: this holds one
+    [[gnu::always_inline]] void reset() noexcept {  // GCC kept it out of line, a call per value destroyed
+        if (shared()) release();
+        tag_ = ValueType::Undef;
+    }
+    void expect(ValueType t) const {
+        if (tag_ != t) [[unlikely]] bad_access();
+    }
+    [[noreturn]] static void bad_access();
+    union Storage {
+        Storage() noexcept {}
+        ~Storage() {}
+        bool boolean;
+        double number;
+        Range range;
+        StrPtr str;
+        ListPtr list;
+        ClosurePtr fn;
+    } u_;
+    ValueType tag_;
 };
 
 // OpenSCAD 2021's number text, byte for byte: 6 significant digits

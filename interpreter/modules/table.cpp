@@ -174,14 +174,14 @@ void ModuleCall::add_primitive(csg::PrimKind kind, std::initializer_list<double>
     const std::uint64_t limit = ev_.opt_.limits.primitives;
     if (++state().primitives > limit)
         throw RunLimitError(st.loc, "primitive limit " + std::to_string(limit) + " exceeded");
-    graph::Node n;
+    GraphBuilder& g = graph();
+    graph::Node& n = g.emplace(st.loc);
     n.kind = graph::NodeKind::Primitive;
     n.prim = kind;
     n.index = index;
     std::size_t i = 0;
     for (double x : p) n.p[i++] = x;
-    n.loc = st.loc;
-    graph().push(graph().add(std::move(n)));
+    g.push(static_cast<std::uint32_t>(g.graph.nodes.size() - 1));
 }
 
 std::vector<std::uint32_t> ModuleCall::flat_children(std::size_t mark, const char* verb) {

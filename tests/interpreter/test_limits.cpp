@@ -100,6 +100,20 @@ TEST_CASE("exponential recursion ends by the step limit", "[limits]") {
     CHECK(cpu_seconds_since(t0) < 5);
 }
 
+// A literal's plain elements are evaluated straight into the list (not
+// through expand_element): the limit still stops at the first element past
+// it, located there, with generators among them counted alike.
+TEST_CASE("the list size limit in a literal's plain elements", "[limits]") {
+    kerf::EvalOptions opt;
+    opt.limits.list_elements = 2;
+    CHECK(error_of("x = [1, 2, 3];", opt) == "test.sdl:1:12: error: list size limit 2 exceeded");
+    CHECK(error_of("x = [for (i = [0:0]) i, 2, 3];", opt) == "test.sdl:1:28: error: list size limit 2 exceeded");
+    CHECK(error_of("x = [1, for (i = [0:1]) i];", opt) == "test.sdl:1:25: error: list size limit 2 exceeded");
+    // The element past the limit is evaluated first: its own error is the one reported.
+    CHECK(error_of("x = [1, 2, [0, 0, 0]];", opt) == "test.sdl:1:19: error: list size limit 2 exceeded");
+    CHECK(kerf::test::value_of("[1, 2]") == "[1, 2]");
+}
+
 TEST_CASE("list size and primitive limits", "[limits]") {
     kerf::EvalOptions opt;
     opt.limits.list_elements = 1000;

@@ -75,3 +75,40 @@ TEST_CASE("ranges are lazy and count inclusively", "[value]") {
     CHECK(kerf::Range{0, 1, 0}.size() == 1);
     CHECK(kerf::Range{1, 0.5, 2}.at(2) == 2.0);
 }
+
+// Value is a tagged union (value.hpp): its copies share a string, list or
+// function, its moves leave undef behind, and an accessor of the wrong
+// type throws as std::get did.
+TEST_CASE("copies share, moves empty, assignments change the alternative", "[value]") {
+    const Value list = Value::list({Value(1), Value::string("a")});
+    REQUIRE(list.list_ptr().use_count() == 1);
+    {
+        Value copy = list;
+        CHECK(list.list_ptr().use_count() == 2);
+        CHECK(&copy.as_list() == &list.as_list());
+        Value moved = std::move(copy);
+        CHECK(copy.is_undef());  // NOLINT(bugprone-use-after-move): the moved-from state is specified
+        CHECK(list.list_ptr().use_count() == 2);
+        moved = Value(2.5);  // a list replaced by a number releases it
+        CHECK(list.list_ptr().use_count() == 1);
+        CHECK(moved.as_number() == 2.5);
+        moved = list;
+        CHECK(list.list_ptr().use_count() == 2);
+        const Value& alias = moved;
+        moved = alias;  // self-assignment keeps it
+        CHECK(list.list_ptr().use_count() == 2);
+        CHECK(moved == list);
+    }
+    CHECK(list.list_ptr().use_count() == 1);
+    Value s = Value::string("text");
+    Value t = s;
+    t = Value::range(0, 2, 6);
+    CHECK(t.as_range() == kerf::Range{0, 2, 6});
+    CHECK(s.as_string() == "text");
+    Value b(true);
+    Value c = std::move(b);
+    CHECK(c.as_bool());
+    CHECK_THROWS_AS(list.as_number(), std::bad_variant_access);
+    CHECK_THROWS_AS(Value().as_list(), std::bad_variant_access);
+    CHECK_THROWS_AS(Value(1).as_string(), std::bad_variant_access);
+}
