@@ -67,7 +67,7 @@ csg::Scene evaluate_and_lower(const Options& o, const EvalOptions& eval, Progres
 render::Image render_and_write(const csg::Scene& scene, const render::RenderOptions& ro, const std::string& path,
                                ProgressBar& bar, render::RenderStats* stats,
                                const std::vector<std::pair<std::string, std::string>>& text, int band_row,
-                               bool progressive) {
+                               bool progressive, const std::function<void()>& rendered) {
     bar.phase("build");
     render::RenderOptions options = ro;
     if (progressive && ro.integrator == render::Integrator::Path) {
@@ -81,7 +81,7 @@ render::Image render_and_write(const csg::Scene& scene, const render::RenderOpti
     if (!stats) stats = &own;
     render::Image image = render::render(scene, options, stats, [&bar](double f) { bar.update(f); });
     bar.phase("write");
-    render::write_image(image, path, text, band_row);
+    render::write_image(image, path, text, band_row, rendered);
     if (ro.integrator == render::Integrator::Path && stats->paths_per_pixel < ro.spp && !ro.preview)
         bar.print_above([&] {
             std::fprintf(stderr, "kerf: note: --time-limit %g s reached: %s has %d of %d paths per pixel\n", ro.time_limit,

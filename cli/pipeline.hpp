@@ -2,6 +2,7 @@
 // render` and `kerf watch`; each names its phase on the progress bar.
 #pragma once
 #include <array>
+#include <functional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -40,10 +41,13 @@ csg::Scene evaluate_and_lower(const Options& o, const EvalOptions& eval, Progres
 // `text` (the farm's metadata); `band_row` as write_image()'s (a band).
 // `progressive`: the path integrator's image is also written after each
 // pass but the last (--progressive). A render that --time-limit stopped
-// early says how many paths it has.
+// early says how many paths it has. `rendered`, if given, is called once
+// the image is rendered and encoded (write_image()'s `on_encoded`): `scene`
+// is not read after it (kerf render frees the scene then, while the file's
+// fsyncs wait for the device).
 render::Image render_and_write(const csg::Scene& scene, const render::RenderOptions& ro, const std::string& path,
                                ProgressBar& bar, render::RenderStats* stats = nullptr,
                                const std::vector<std::pair<std::string, std::string>>& text = {}, int band_row = -1,
-                               bool progressive = false);
+                               bool progressive = false, const std::function<void()>& rendered = {});
 
 }  // namespace kerf::cli

@@ -2,6 +2,7 @@
 // header (render.hpp produces Images, the CLI writes them).
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -52,8 +53,13 @@ void check_output_path(const std::string& path, int width = 0, int height = 0,
 // chunks (keyword, value) for a PNG file; other formats do not store it.
 // `band_row`: for a band of a larger render written as PNG, the full
 // image's row of the band's first row (png_file.hpp); -1 for an image.
+// `on_encoded`, if given, is called once: for a PNG when its bytes are in
+// memory, before the file is written and synced (the caller can free what
+// it no longer needs while that waits for the device); otherwise after
+// the file is written.
 void write_image(const Image& image, const std::string& path,
-                 const std::vector<std::pair<std::string, std::string>>& text = {}, int band_row = -1);
+                 const std::vector<std::pair<std::string, std::string>>& text = {}, int band_row = -1,
+                 const std::function<void()>& on_encoded = {});
 
 // Writes a file already encoded (a PNG joined from bands) as write_image()
 // writes what it encodes: atomically, or to standard output for "-".

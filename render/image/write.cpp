@@ -179,7 +179,8 @@ void write_encoded(const std::vector<unsigned char>& file, const std::string& pa
                                       : replace_file(path, file.data(), file.size()));
 }
 
-void write_image(const Image& given, const std::string& path, const PngText& text, int band_row) {
+void write_image(const Image& given, const std::string& path, const PngText& text, int band_row,
+                 const std::function<void()>& on_encoded) {
     const bool to_stdout = path == "-";
     const std::string ext = to_stdout ? ".png" : lower_extension(fs::path(path));
     // A PGM is grey by its name: a colour image becomes its luminance.
@@ -211,7 +212,10 @@ void write_image(const Image& given, const std::string& path, const PngText& tex
     } else if (ext == ".png") {
         std::vector<unsigned char> file;
         message = encode_png(file, bytes, image.width, image.height, image.channels, srgb, text, band_row);
-        if (message.empty()) return write_encoded(file, path);
+        if (message.empty()) {
+            if (on_encoded) on_encoded();
+            return write_encoded(file, path);
+        }
     } else {
         const ImageModule& module = image_module(ext);
         char error[512] = "";
@@ -224,6 +228,7 @@ void write_image(const Image& given, const std::string& path, const PngText& tex
             message = sink.called ? sink.message : "the encoder produced no file";
     }
     throw_if_failed(path, message);
+    if (on_encoded) on_encoded();
 }
 
 }  // namespace kerf::render

@@ -362,3 +362,25 @@ TEST_CASE("formats whose writer opens the file itself are encoded in memory too"
     CHECK(files == 1);
     fs::remove_all(dir);
 }
+
+// The CLI frees the scene from write_image's `on_encoded`, meant to run
+// while the file is written and synced: for a PNG once, before the file
+// exists; for other formats once, after it is written.
+TEST_CASE("write_image calls on_encoded once: before a PNG is written, after other formats", "[image_io]") {
+    const fs::path dir = fresh_dir("on_encoded");
+    const render::Image im = gradient(3, render::ImageContent::Color);
+    for (const char* name : {"a.png", "a.pfm", "a.ppm"}) {
+        const fs::path target = dir / name;
+        const bool png = std::string(name) == "a.png";
+        int calls = 0;
+        bool existed = false;
+        render::write_image(im, target.string(), {}, -1, [&] {
+            ++calls;
+            existed = fs::exists(target);
+        });
+        CAPTURE(name);
+        CHECK(calls == 1);
+        CHECK(existed == !png);
+        CHECK(fs::exists(target));
+    }
+}
