@@ -1,7 +1,5 @@
 #include "render/image/png_pieces.hpp"
 
-#include "render/image/adler32.hpp"
-
 #include <algorithm>
 #include <charconv>
 #include <cstdio>
@@ -85,7 +83,7 @@ bool deflate_piece(const std::uint8_t* rows, int width, int channels, int count,
         f += stride;
     }
     piece.length = length;
-    piece.adler = adler32_fast(1, filtered, length);  // zlib's value, 16 bytes at a time
+    piece.adler = std::uint32_t(adler32(1, filtered, uInt(length)));
     if (!deflater.reset()) return false;
     z_stream& zs = deflater.zs;
     std::vector<unsigned char>& compressed = deflater.compressed;
