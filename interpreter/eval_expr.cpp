@@ -66,9 +66,12 @@ std::uint64_t Evaluator::iteration_count(Value& v, const SourceLoc& loc) {
     return n;
 }
 
+void Evaluator::list_limit(const SourceLoc& loc) const {
+    throw SourceError(loc, "list size limit " + std::to_string(opt_.limits.list_elements) + " exceeded");
+}
+
 void Evaluator::push_element(ValueList& out, Value v, const SourceLoc& loc) {
-    if (out.size() >= opt_.limits.list_elements)
-        throw SourceError(loc, "list size limit " + std::to_string(opt_.limits.list_elements) + " exceeded");
+    if (out.size() >= opt_.limits.list_elements) list_limit(loc);
     out.push_back(std::move(v));
 }
 
@@ -613,7 +616,7 @@ Value Evaluator::eval_list(const ast::Expr& e, Scope& s) {
         }
         Value v = eval(*item, s);  // evaluated before the limit is checked, as push_element's argument was
         if (out.size() >= opt_.limits.list_elements) [[unlikely]]
-            push_element(out, std::move(v), item->loc);  // throws the list size limit
+            list_limit(item->loc);
         out.push_back(std::move(v));
     }
     return Value::list(std::move(out));

@@ -156,6 +156,7 @@ private:
     void expand_for(const ast::Expr& e, std::size_t k, Scope& s, ValueList& out);
     void expand_for_c(const ast::Expr& e, Scope& s, ValueList& out);
     void push_element(ValueList& out, Value v, const SourceLoc& loc);
+    [[noreturn]] void list_limit(const SourceLoc& loc) const;  // the list size limit's error, at loc
     void do_echo(const std::vector<ast::Binding>& args, Scope& s, const SourceLoc& loc);
     Value call_builtin(const ast::Expr& e, Scope& s);
     Value call_dxf_function(const ast::Expr& e, Scope& s);  // dxf_functions.cpp: dxf_dim, dxf_cross

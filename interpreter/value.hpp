@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <variant>  // std::bad_variant_access
 #include <vector>
 
@@ -66,6 +67,8 @@ public:
     // destroying a number (most values a loop makes) is a tag test and a
     // few stores, inline, where the variant visited a table of functions
     // for each (docs/performance.md, "The interpreter's per-call costs").
+    // Moved from, a string, list or function is undef; a bool, number or
+    // range keeps its value (a copy).
     [[gnu::always_inline]] Value(const Value& o) : tag_(o.tag_) {
         if (o.shared()) copy_shared(o);
         else copy_plain(o);
@@ -154,6 +157,8 @@ private:
     }
     void copy_shared(const Value& o);  // value.cpp: o holds a string, list or function
     // Bool, number and range (undef: whatever bytes): trivially copyable, so as bytes.
+    static_assert(std::is_trivially_copyable_v<Range> && sizeof(Range) >= sizeof(double),
+                  "copy_plain copies a Range's bytes: the widest plain member");
     void copy_plain(const Value& o) noexcept { std::memcpy(static_cast<void*>(&u_), static_cast<const void*>(&o.u_), sizeof(Range)); }
     void release() noexcept;           // value.cpp: this holds one
     [[gnu::always_inline]] void reset() noexcept {  // GCC kept it out of line, a call per value destroyed

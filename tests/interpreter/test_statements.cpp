@@ -87,6 +87,25 @@ TEST_CASE("a statement run many times calls what its name means on every pass", 
     CHECK(error_of("for (i = [0:1]) nosuch();") == "test.sdl:1:17: error: unknown module 'nosuch'");
 }
 
+// A call searches the scopes for a user module only once some block has
+// defined one (eval_stmt.cpp): every place a definition can come from
+// must set that, before the first call that needs it.
+TEST_CASE("a built-in's name defined by a user module wherever it is defined", "[statements]") {
+    // Inside another module's body, the only definition in the script.
+    CHECK(shape_of("module m() { module translate(v) sphere(); translate([1, 0, 0]) cube(); }\nm();") == "U(sphere)");
+    // The only definition in an if block, called before it in that block.
+    CHECK(shape_of("if (true) { cube(); module cube() sphere(); }") == "U(sphere)");
+    // The only definitions in a used file.
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / "kerf_interp_use_override";
+    fs::create_directories(dir);
+    std::ofstream(dir / "lib.sdl") << "module cube(s) sphere(s);\n";
+    std::ofstream(dir / "main.sdl") << "use <lib.sdl>\ncube(2);\n";
+    auto r = kerf::evaluate_file((dir / "main.sdl").string());
+    CHECK(kerf::test::shape(r.graph, r.graph.root) == "U(sphere)");
+    fs::remove_all(dir);
+}
+
 // Built-in modules' arguments are matched into values held in the call's
 // frame (modules/table.cpp, ArgValues): every parameter slot, the last of
 // the module with the most parameters included.
