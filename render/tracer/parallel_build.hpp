@@ -1,0 +1,33 @@
+// parallel_for_build: the tracer's per-leaf, per-node and per-unit tables of a
+// big scene filled by the threads of the TBB arena it is built in (the
+// render's: --threads, their stacks sized for the tree, stack_depth.cpp).
+// Each index writes only its own slots, so the tables are the same bits
+// whatever the thread count; a small scene's loops stay plain, where waking
+// the workers would cost more than they save.
+#pragma once
+#include <cstddef>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+namespace kerf::render {
+
+constexpr std::size_t kParallelBuild = 8192;  // fewer: one thread (~1 ms of work at most)
+
+template <class Body>
+void parallel_for_build(std::size_t n, Body&& body) {
+    if (n < kParallelBuild) {
+        for (std::size_t i = 0; i < n; ++i) body(i);
+        return;
+    }
+    // Chunks of 2048: a worker descheduled mid-chunk holds the build up by
+    // ~0.1 ms at most.
+    tbb::parallel_for(
+        tbb::blocked_range<std::size_t>(0, n, 2048),
+        [&](const tbb::blocked_range<std::size_t>& r) {
+            for (std::size_t i = r.begin(); i != r.end(); ++i) body(i);
+        },
+        tbb::simple_partitioner());
+}
+
+}  // namespace kerf::render
