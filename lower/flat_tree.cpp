@@ -261,15 +261,6 @@ private:
         return g_.nodes[p].kind == NodeKind::Primitive ? p : kNone;
     }
 
-    // Has the threads fault [data, data + bytes) in, a slice at a time.
-    void populate(void* data, std::size_t bytes) const {
-        constexpr std::size_t kSlice = std::size_t(64) << 10;
-        char* const p = static_cast<char*>(data);
-        for_each_index((bytes + kSlice - 1) / kSlice, 4, threads_, [&](std::size_t i) {
-            csg::populate_pages(p + i * kSlice, std::min(kSlice, bytes - i * kSlice));
-        });
-    }
-
     // A union-like frame's next children when at least kParallelRun of them
     // in a row are leaves (run_leaf): their leaves and nodes are placed by
     // several threads into slots sized first, then delivered in order on
@@ -294,8 +285,8 @@ private:
         nodes.reserve(node0 + run);
         // The run's slots are fresh memory (31 MB of leaves at 10^5): their
         // first touch, most of a serial run's time, is shared too.
-        populate(leaves.data() + leaf0, run * sizeof(csg::Leaf));
-        populate(nodes.data() + node0, run * sizeof(TNode));
+        populate_in_parallel(leaves.data() + leaf0, run * sizeof(csg::Leaf), threads_);
+        populate_in_parallel(nodes.data() + node0, run * sizeof(TNode), threads_);
         leaves.resize(leaf0 + run);
         nodes.resize(node0 + run);
         for_each_index(run, kLeafChunk, threads_, [&](std::size_t k) {

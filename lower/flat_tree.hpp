@@ -59,6 +59,7 @@ FlatTree build_flat_tree(const graph::SceneGraph& graph, std::vector<csg::Leaf>&
 // resolves materials, material frames, meshes and sources into the scene's
 // tables. Reads only the graph's materials, meshes and polygons (its nodes
 // may be gone). Throws SourceError at the first node deeper than csg::kMaxDepth.
-void emit_flat_tree(const graph::SceneGraph& graph, const FlatTree& tree, csg::Scene& scene);
+// `threads`: how many may fault the node array in first (0: one per hardware thread).
+void emit_flat_tree(const graph::SceneGraph& graph, const FlatTree& tree, csg::Scene& scene, unsigned threads = 1);
 
 }  // namespace kerf::lowering

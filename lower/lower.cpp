@@ -89,9 +89,9 @@ csg::Scene lower(const graph::SceneGraph& input, graph::SceneGraph* owned, const
         }
     if (ops) release_nodes(resolved);
     else if (owned) release_nodes(*owned);
-    lowering::emit_flat_tree(graph, tree, scene);
+    lowering::emit_flat_tree(graph, tree, scene, options.threads);
     for (auto& [kind, ghost, ghost_tree] : ghosts) {
-        lowering::emit_flat_tree(graph, ghost_tree, ghost);
+        lowering::emit_flat_tree(graph, ghost_tree, ghost, options.threads);
         if (ghost.root == csg::kNone) continue;
         ghost.ghost_kind = kind;
         // A `#` part is the highlight colour whatever colours it has inside.

@@ -58,6 +58,8 @@ Extent leaf_extent(const csg::Leaf& leaf) {
 void CsgTracer::Impl::local_tolerances(const std::vector<std::uint32_t>& units) {
     const Factors f = use_float ? kFloat : kDouble;
     eps_per_distance = f.per_distance;
+    reserve_populated(node_eps, scene.nodes.size());
+    reserve_populated(leaf_eps, scene.leaves.size());
     node_eps.assign(scene.nodes.size(), 0);
     leaf_eps.assign(scene.leaves.size(), 0);
     double widest = 0;

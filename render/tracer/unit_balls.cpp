@@ -91,7 +91,9 @@ Ball node_ball(const csg::Scene& scene, std::uint32_t id, int depth) {
 
 std::vector<Ball> unit_balls(const csg::Scene& scene, const std::vector<std::uint32_t>& units,
                              const std::vector<double>& pad, bool leaves) {
-    std::vector<Ball> out(units.size());
+    std::vector<Ball> out;
+    reserve_populated(out, units.size());
+    out.resize(units.size());
     parallel_for_build(units.size(), [&](std::size_t i) {
         if (scene.nodes[units[i]].op == csg::Op::Leaf && !leaves) return;
         out[i] = node_ball(scene, units[i], 0);
