@@ -417,7 +417,7 @@ private:
             case NodeKind::Intersection: return finish_intersection(f);
             case NodeKind::Difference: return finish_difference(f);
             default:
-                f.count = drop_duplicate_leaves(nodes, leaves, f.head, f.tail, f.count);
+                f.count = drop_duplicate_leaves(nodes, leaves, f.head, f.tail, f.count, threads_);
                 if (f.count == 0) return kNone;
                 if (f.count == 1) return single(f.head);
                 return make_op(f, csg::Op::Union, f.head, f.tail, f.count, f.bounds);
@@ -426,7 +426,7 @@ private:
 
     std::uint32_t finish_intersection(Frame& f) {
         if (f.empty || f.count == 0) return kNone;
-        f.count = drop_duplicate_leaves(nodes, leaves, f.head, f.tail, f.count);
+        f.count = drop_duplicate_leaves(nodes, leaves, f.head, f.tail, f.count, threads_);
         Aabb box = Aabb::everything();
         for (std::uint32_t c = f.head; c != kNone; c = nodes[c].next) box = Aabb::overlap(box, bounds(c));
         for (std::uint32_t c = f.head; c != kNone && !box.empty(); c = nodes[c].next)
@@ -526,7 +526,7 @@ private:
                 c = next;
             }
         }
-        f.count = drop_duplicate_leaves(nodes, leaves, f.head, f.tail, f.count);
+        f.count = drop_duplicate_leaves(nodes, leaves, f.head, f.tail, f.count, threads_);
         if (f.count == 0) return single(f.minuend);
         nodes[f.minuend].next = f.head;
         return make_op(f, csg::Op::Difference, f.minuend, f.tail, f.count + 1, f.bounds);
