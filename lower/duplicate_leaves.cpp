@@ -1,6 +1,8 @@
 #include "lower/duplicate_leaves.hpp"
 
+#include <algorithm>
 #include <bit>
+#include <iterator>
 #include <cassert>
 #include <cstring>
 
@@ -110,21 +112,28 @@ std::uint32_t drop_in_halves(std::vector<TNode>& nodes, const std::vector<csg::L
     std::uint32_t in_half[2] = {0, 0};
     for (std::uint32_t c = head; c != csg::kNone; c = nodes[c].next)
         if (nodes[c].op == csg::Op::Leaf) ++in_half[nodes[c].hash >> 31];
-    std::vector<std::uint8_t> duplicate(count, 0);  // by list position (count bounds the length)
+    // The list positions of each half's duplicates (a list per half, not a
+    // flag per leaf: most unions have none, and 10^6 flags were 1 MB of peak).
+    std::vector<std::uint32_t> duplicates[2];
     for_each_index(2, 1, threads, [&](std::size_t half) {
         LeafTable table(in_half[half]);
-        std::size_t at = 0;
+        std::uint32_t at = 0;
         for (std::uint32_t c = head; c != csg::kNone; c = nodes[c].next, ++at)
-            if (nodes[c].op == csg::Op::Leaf && nodes[c].hash >> 31 == half)
-                duplicate[at] = table.seen_or_insert(nodes, leaves, c);
+            if (nodes[c].op == csg::Op::Leaf && nodes[c].hash >> 31 == half && table.seen_or_insert(nodes, leaves, c))
+                duplicates[half].push_back(at);
     });
-    std::uint32_t prev = csg::kNone;
-    std::size_t at = 0;
+    if (duplicates[0].empty() && duplicates[1].empty()) return count;
+    std::vector<std::uint32_t> drop;
+    std::merge(duplicates[0].begin(), duplicates[0].end(), duplicates[1].begin(), duplicates[1].end(), std::back_inserter(drop));
+    drop.push_back(csg::kNone);  // (a position never reached)
+    std::uint32_t prev = csg::kNone, at = 0;
+    auto next_drop = drop.begin();
     for (std::uint32_t c = head; c != csg::kNone; ++at) {
         const std::uint32_t next = nodes[c].next;
-        if (duplicate[at]) {
+        if (at == *next_drop) {
             unlink(nodes, head, tail, prev, c);
             --count;
+            ++next_drop;
         } else {
             prev = c;
         }
