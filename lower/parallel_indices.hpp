@@ -24,13 +24,16 @@
 namespace kerf::lowering {
 
 // `chunk`: how many indices a thread takes at a time. `threads`: how many
-// threads may work (the caller's among them; 0: one per hardware thread). When bodies throw, the exception of the lowest index is
-// rethrown after all threads are done: the one a serial loop would have
-// thrown, so the message never depends on the thread count.
+// threads may work (the caller's among them; 0, or more than the hardware
+// has: one per hardware thread). When bodies throw, the exception of the
+// lowest index is rethrown after all threads are done: the one a serial
+// loop would have thrown, so the message never depends on the thread count.
 template <class Body>
 void for_each_index(std::size_t n, std::size_t chunk, unsigned threads, Body&& body) {
     const std::size_t kChunk = std::max<std::size_t>(chunk, 1);
-    if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+    // No more than the hardware runs at once (--threads may ask for 1,024).
+    const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
+    threads = threads == 0 ? hardware : std::min(threads, hardware);
     threads = unsigned(std::min<std::size_t>(threads, (n + kChunk - 1) / kChunk));
     std::atomic<std::size_t> next{0};
     std::mutex error_lock;  // taken only when a body throws
