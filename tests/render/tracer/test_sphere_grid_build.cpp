@@ -71,7 +71,7 @@ void check_grid(const std::vector<Ball>& balls, const csg::Aabb& box) {
 TEST_CASE("a big crowd's sphere grid lists each cell's units in order, the same on 1 and 2 threads", "[render][grid]") {
     std::mt19937_64 rng(7);
     std::uniform_real_distribution<double> u(-10, 10), r(0.05, 0.4);
-    for (const std::size_t n : {std::size_t(render::kParallelBuild) + 1, std::size_t(30011)}) {
+    for (const std::size_t n : {std::size_t(render::kParallelBuild) + 1, 3 * std::size_t(render::kParallelBuild) + 11}) {
         INFO(n << " balls");
         std::vector<Ball> balls;
         csg::Aabb box;
