@@ -42,7 +42,8 @@ csg::Scene evaluate_and_lower(const Options& o, const EvalOptions& eval, Progres
     // the ghosts are not lowered at all.
     csg::Scene scene = lower_to_csg(std::move(evaluated.graph),
                                     LowerOptions{o.look, double(o.render.width) / o.render.height,
-                                                 o.ghosts && o.command != Command::Measure});
+                                                 o.ghosts && o.command != Command::Measure,
+                                                 unsigned(o.render.threads)});
     const bool renders = o.command == Command::Render || o.command == Command::Watch || o.command == Command::View;
     if (scene.root == csg::kNone && renders) {
         // Nothing to draw: the image is the background. OpenSCAD 2021.01

@@ -22,7 +22,11 @@ std::uint32_t leaf_hash(const csg::Leaf& leaf);
 // equal to an earlier one; returns the new count and updates head/tail.
 // `count` must be at least the list's length: it sizes the table (a
 // smaller one would fill, and a probe would never end).
+// From kParallelDuplicates leaves on, `threads` (0: one per hardware
+// thread) take half of them each; the same leaves go.
+constexpr std::uint32_t kParallelDuplicates = 8192;
 std::uint32_t drop_duplicate_leaves(std::vector<TNode>& nodes, const std::vector<csg::Leaf>& leaves,
-                                    std::uint32_t& head, std::uint32_t& tail, std::uint32_t count);
+                                    std::uint32_t& head, std::uint32_t& tail, std::uint32_t count,
+                                    unsigned threads = 1);
 
 }  // namespace kerf::lowering

@@ -48,15 +48,18 @@ struct FlatTree {
 // material_frame (into FlatTree::material_frames) and source still hold the
 // builder's indices (material kNone = default, source: into FlatTree::locs).
 // Throws SourceError for singular transforms. `root`: the tree to flatten
-// (kNone: graph.root; a ghost tree, csg/ghosts.hpp).
+// (kNone: graph.root; a ghost tree, csg/ghosts.hpp). `threads`: how many
+// may place the leaves of a wide union (0: one per hardware thread); the
+// tree is the same bits whatever the count.
 FlatTree build_flat_tree(const graph::SceneGraph& graph, std::vector<csg::Leaf>& leaves,
-                         std::uint32_t root = csg::kNone);
+                         std::uint32_t root = csg::kNone, unsigned threads = 1);
 
 // Writes nodes/children in pre-order into `scene` (whose `leaves` are the
 // ones build_flat_tree filled), keeps only the leaves the tree uses, and
 // resolves materials, material frames, meshes and sources into the scene's
 // tables. Reads only the graph's materials, meshes and polygons (its nodes
 // may be gone). Throws SourceError at the first node deeper than csg::kMaxDepth.
-void emit_flat_tree(const graph::SceneGraph& graph, const FlatTree& tree, csg::Scene& scene);
+// `threads`: how many may fault the node array in first (0: one per hardware thread).
+void emit_flat_tree(const graph::SceneGraph& graph, const FlatTree& tree, csg::Scene& scene, unsigned threads = 1);
 
 }  // namespace kerf::lowering

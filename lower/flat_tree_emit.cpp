@@ -7,6 +7,7 @@
 #include "lower/flat_tree.hpp"
 #include "csg/huge_pages.hpp"
 #include "lower/mesh_lowering.hpp"
+#include "lower/parallel_indices.hpp"
 
 namespace kerf::lowering {
 
@@ -14,11 +15,14 @@ namespace {
 
 using csg::kNone;
 
+constexpr std::size_t kPopulateNodes = 16384;  // 1 MB of nodes: below, a thread's start costs what it saves
+
 // Writes the flattened tree into the scene in pre-order, remapping leaves,
 // materials, meshes and sources to only those the surviving leaves use.
 class Emitter {
 public:
-    Emitter(const graph::SceneGraph& g, const FlatTree& t, csg::Scene& s) : g_(g), t_(t), s_(s) {}
+    Emitter(const graph::SceneGraph& g, const FlatTree& t, csg::Scene& s, unsigned threads)
+        : g_(g), t_(t), s_(s), threads_(threads) {}
 
     void emit(std::uint32_t root) {
         s_.materials.push_back(csg::Material{});  // 0: the default light grey
@@ -30,6 +34,10 @@ public:
         if (root != kNone) {
             csg::reserve_huge(s_.nodes, t_.nodes.size());
             csg::reserve_huge(s_.children, t_.nodes.size());
+            // A big tree's node array (6 MB at 10^5 leaves) faulted in by
+            // the threads first: the walk below fills it on one.
+            if (threads_ != 1 && t_.nodes.size() >= kPopulateNodes)
+                populate_in_parallel(s_.nodes.data(), t_.nodes.size() * sizeof(csg::Node), threads_);
             emit_tree(root);
         }
         keep_emitted_leaves();
@@ -117,6 +125,7 @@ private:
     const graph::SceneGraph& g_;
     const FlatTree& t_;
     csg::Scene& s_;
+    const unsigned threads_;  // for populate_in_parallel; 1: none
     std::vector<std::uint32_t> material_map_, frame_map_, mesh_map_, polygon_map_;
     std::unordered_map<const SourceFile*, std::uint32_t> file_by_ptr_;
     std::unordered_map<std::string, std::uint32_t> file_by_path_;
@@ -209,8 +218,8 @@ private:
 
 }  // namespace
 
-void emit_flat_tree(const graph::SceneGraph& graph, const FlatTree& tree, csg::Scene& scene) {
-    Emitter(graph, tree, scene).emit(tree.root);
+void emit_flat_tree(const graph::SceneGraph& graph, const FlatTree& tree, csg::Scene& scene, unsigned threads) {
+    Emitter(graph, tree, scene, threads).emit(tree.root);
 }
 
 }  // namespace kerf::lowering

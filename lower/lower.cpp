@@ -72,7 +72,7 @@ csg::Scene lower(const graph::SceneGraph& input, graph::SceneGraph* owned, const
     if (ops && owned) release_nodes(*owned);
     const graph::SceneGraph& graph = ops ? resolved : input;
     csg::Scene scene;
-    const lowering::FlatTree tree = lowering::build_flat_tree(graph, scene.leaves);
+    const lowering::FlatTree tree = lowering::build_flat_tree(graph, scene.leaves, csg::kNone, options.threads);
     // The ghosts' trees are flattened too before the nodes go.
     struct Ghost {
         csg::GhostKind kind;
@@ -85,13 +85,13 @@ csg::Scene lower(const graph::SceneGraph& input, graph::SceneGraph* owned, const
             const std::uint32_t root = graph.ghost_roots[std::size_t(kind)];
             if (root == csg::kNone) continue;
             Ghost& g = ghosts.emplace_back(Ghost{kind, csg::Scene{}, {}});
-            g.tree = lowering::build_flat_tree(graph, g.scene.leaves, root);
+            g.tree = lowering::build_flat_tree(graph, g.scene.leaves, root, options.threads);
         }
     if (ops) release_nodes(resolved);
     else if (owned) release_nodes(*owned);
-    lowering::emit_flat_tree(graph, tree, scene);
+    lowering::emit_flat_tree(graph, tree, scene, options.threads);
     for (auto& [kind, ghost, ghost_tree] : ghosts) {
-        lowering::emit_flat_tree(graph, ghost_tree, ghost);
+        lowering::emit_flat_tree(graph, ghost_tree, ghost, options.threads);
         if (ghost.root == csg::kNone) continue;
         ghost.ghost_kind = kind;
         // A `#` part is the highlight colour whatever colours it has inside.

@@ -20,6 +20,9 @@ struct LowerOptions {
     // The `%` and `#` ghosts (csg/ghosts.hpp) as csg::Scene::ghosts; false
     // (`--no-ghosts`, and `kerf measure`): none, as in OpenSCAD's render.
     bool ghosts = true;
+    // Threads that may lower a wide union's leaves (the render's --threads;
+    // 0: one per hardware thread). The scene is the same bits whatever the count.
+    unsigned threads = 1;
 };
 
 // Throws SourceError for scene-level problems it can locate (e.g. a

@@ -7,7 +7,10 @@
 #include <cmath>
 #include <limits>
 
+#include <tbb/parallel_invoke.h>
+
 #include "render/tracer/bare_spheres.hpp"
+#include "render/tracer/parallel_build.hpp"
 
 namespace kerf::render {
 
@@ -65,19 +68,47 @@ void SphereGrid::build(const csg::Aabb& box, const std::vector<Ball>& balls) {
                 for (int x = c0.x; x <= c1.x; ++x) visit((std::size_t(z) * n[1] + std::size_t(y)) * n[0] + std::size_t(x));
     };
     const std::size_t ncells = std::size_t(n[0]) * std::size_t(n[1]) * std::size_t(n[2]);
-    std::vector<std::uint32_t> fill(ncells + 1, 0);
-    std::uint64_t total = 0;
-    for (const Ball& b : balls)
-        for_cells(b, [&](std::size_t cell) {
-            ++fill[cell + 1];
-            ++total;
-        });
+    // A big crowd in two halves, on two threads when the arena has them:
+    // the upper half's balls counted apart, then listed in each cell after
+    // the lower half's, so every cell lists its units in index order as one
+    // pass would, whatever the thread count.
+    const std::uint32_t mid = count >= kParallelBuild ? std::uint32_t(count / 2) : std::uint32_t(count);
+    std::vector<std::uint32_t> fill(ncells + 1, 0), upper(mid < count ? ncells + 1 : 0, 0);
+    std::uint64_t total_lower = 0, total_upper = 0;
+    const auto count_cells = [&](std::uint32_t first, std::uint32_t last, std::vector<std::uint32_t>& to, std::uint64_t& total) {
+        for (std::uint32_t i = first; i < last; ++i)
+            for_cells(balls[i], [&](std::size_t cell) {
+                ++to[cell + 1];
+                ++total;
+            });
+    };
+    const auto list_cells = [&](std::uint32_t first, std::uint32_t last, std::vector<std::uint32_t>& at) {
+        for (std::uint32_t i = first; i < last; ++i) for_cells(balls[i], [&](std::size_t cell) { items[at[cell]++] = i; });
+    };
+    if (mid < count)
+        tbb::parallel_invoke([&] { count_cells(0, mid, fill, total_lower); },
+                             [&] { count_cells(mid, std::uint32_t(count), upper, total_upper); });
+    else
+        count_cells(0, mid, fill, total_lower);
+    const std::uint64_t total = total_lower + total_upper;
     if (total > 64 * std::uint64_t(count) + 4096) return;  // balls far larger than a cell: not this crowd's scheme
     if (total > std::numeric_limits<std::uint32_t>::max()) return;  // (start and fill count in 32 bits)
-    for (std::size_t i = 0; i < ncells; ++i) fill[i + 1] += fill[i];
+    if (mid < count) {
+        // fill: each cell's start; upper: where the upper half's units of it go.
+        for (std::size_t i = 0; i < ncells; ++i) {
+            const std::uint32_t lower = fill[i + 1];
+            fill[i + 1] = fill[i] + lower + upper[i + 1];
+            upper[i] = fill[i] + lower;
+        }
+    } else {
+        for (std::size_t i = 0; i < ncells; ++i) fill[i + 1] += fill[i];
+    }
     items.resize(std::size_t(total));
     start = fill;
-    for (std::uint32_t i = 0; i < count; ++i) for_cells(balls[i], [&](std::size_t cell) { items[fill[cell]++] = i; });
+    if (mid < count)
+        tbb::parallel_invoke([&] { list_cells(0, mid, fill); }, [&] { list_cells(mid, std::uint32_t(count), upper); });
+    else
+        list_cells(0, mid, fill);
 }
 
 namespace {

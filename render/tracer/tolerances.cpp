@@ -16,6 +16,7 @@
 #include <cmath>
 
 #include "render/tracer/build.hpp"
+#include "render/tracer/parallel_build.hpp"
 
 namespace kerf::render {
 
@@ -57,6 +58,8 @@ Extent leaf_extent(const csg::Leaf& leaf) {
 void CsgTracer::Impl::local_tolerances(const std::vector<std::uint32_t>& units) {
     const Factors f = use_float ? kFloat : kDouble;
     eps_per_distance = f.per_distance;
+    reserve_populated(node_eps, scene.nodes.size());
+    reserve_populated(leaf_eps, scene.leaves.size());
     node_eps.assign(scene.nodes.size(), 0);
     leaf_eps.assign(scene.leaves.size(), 0);
     double widest = 0;
@@ -80,12 +83,25 @@ void CsgTracer::Impl::local_tolerances(const std::vector<std::uint32_t>& units) 
     // A unit that is one leaf (every unit of a crowd of bare spheres) needs
     // no walk: its rule from its own box and leaf (the same max over the
     // same values).
+    // A big crowd's rules are found by the arena's threads, each unit's
+    // into its own slot, then applied in order as before.
+    const auto leaf_unit_eps = [&](std::uint32_t unit) {
+        Extent ext = unit_extent(unit);
+        ext.add(leaf_extent(scene.leaves[scene.nodes[unit].first]));
+        return unit_eps(ext);
+    };
+    std::vector<double> found;
+    if (units.size() >= kParallelBuild) {
+        found.assign(units.size(), 0);
+        parallel_for_build(units.size(), [&](std::size_t i) {
+            if (scene.nodes[units[i]].op == csg::Op::Leaf) found[i] = leaf_unit_eps(units[i]);
+        });
+    }
     std::vector<std::uint32_t> stack, members;
-    for (std::uint32_t unit : units) {
+    for (std::size_t i = 0; i < units.size(); ++i) {
+        const std::uint32_t unit = units[i];
         if (scene.nodes[unit].op == csg::Op::Leaf) {
-            Extent ext = unit_extent(unit);
-            ext.add(leaf_extent(scene.leaves[scene.nodes[unit].first]));
-            const double eps = unit_eps(ext);
+            const double eps = found.empty() ? leaf_unit_eps(unit) : found[i];
             widest = std::max(widest, eps);
             apply(unit, eps);
             continue;

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include "render/tracer/parallel_build.hpp"
+
 namespace kerf::render {
 
 namespace {
@@ -89,22 +91,23 @@ Ball node_ball(const csg::Scene& scene, std::uint32_t id, int depth) {
 
 std::vector<Ball> unit_balls(const csg::Scene& scene, const std::vector<std::uint32_t>& units,
                              const std::vector<double>& pad, bool leaves) {
-    std::vector<Ball> out(units.size());
-    bool any = false;
-    for (std::size_t i = 0; i < units.size(); ++i) {
-        if (scene.nodes[units[i]].op == csg::Op::Leaf && !leaves) continue;
+    std::vector<Ball> out;
+    reserve_populated(out, units.size());
+    out.resize(units.size());
+    parallel_for_build(units.size(), [&](std::size_t i) {
+        if (scene.nodes[units[i]].op == csg::Op::Leaf && !leaves) return;
         out[i] = node_ball(scene, units[i], 0);
         if (out[i].r < 0 || !std::isfinite(out[i].r) || !std::isfinite(glm::dot(out[i].c, out[i].c))) {
             out[i] = {};
-            continue;
+            return;
         }
         // 1e-9 relative: far above the double round-off of the stretch and
         // of the leaf's own sphere test; 4 degenerate rules: beyond every
         // window slack of the unit's evaluation.
         out[i].r = out[i].r * (1 + 1e-9) + 4 * pad[units[i]];
-        any = true;
-    }
-    if (!any) out.clear();
+    });
+    // (A kept ball has r >= 0: a dropped one is Ball{}, r < 0.)
+    if (std::none_of(out.begin(), out.end(), [](const Ball& b) { return b.r >= 0; })) out.clear();
     return out;
 }
 
