@@ -300,8 +300,14 @@ std::optional<Refinement::Prediction> Refinement::predicted(int cx, int cy, bool
             const glm::dvec3 o = glm::mix(o0, o1, s), d = glm::mix(d0, d1, s);
             return o + glm::dot(face.normal, face.point - o) / glm::dot(face.normal, d) * d;
         };
-        const double tolerance = glm::distance(on_face(0), on_face(1)) / 256;
-        const double behind = glm::dot(face.normal, face.point - go) / glm::dot(face.normal, gd);
+        // The plane's points on the side's end rays, and its depth on the
+        // other corner's ray: crossing_on_line()'s own where it answered
+        // (the same numbers: on_face(0) and (1) are its line's ends).
+        const double tolerance =
+            (line.applies ? glm::distance(line.from, line.to) : glm::distance(on_face(0), on_face(1))) / 256;
+        const double behind = !line.applies ? glm::dot(face.normal, face.point - go) / glm::dot(face.normal, gd)
+                              : towards > 0 ? line.t1
+                                            : line.t0;
         if (std::abs(distance(own, on_face(*e))) <= tolerance && behind > 0 && other.t > behind) r.confirm = towards;
         return r;
     };
@@ -572,7 +578,8 @@ int Refinement::face_model(const glm::dvec3& o, const glm::dvec3& d, glm::dvec2 
     if (!(std::abs(leaf_distance(f.hit, w)) <= tolerance * cos)) return 0;
     const double across = leaf_distance(g.hit, w);
     if (!(std::abs(across) > tolerance)) return 0;
-    const double at_face = leaf_distance(g.hit, at_f);
+    if (f.across_leaf != g.hit.surface.leaf) f.across = leaf_distance(g.hit, at_f), f.across_leaf = g.hit.surface.leaf;
+    const double at_face = f.across;
     if (at_face == 0) return 0;
     if ((across > 0) == (at_face > 0)) return 1;
     return cuts_away(g.hit.surface.leaf, f.hit.surface.leaf) ? -1 : 0;

@@ -31,6 +31,11 @@ struct CornerProbe {
     // for (adaptive_aa.cpp): each corner's is asked for by up to 4 sides.
     mutable bool has_plane = false;
     mutable TangentPlane plane;
+    // The signed distance from the plane's point to the leaf `across_leaf`
+    // (adaptive_aa.cpp, face_model(): the side it lies on), found once:
+    // each sample the faces' model answers from this corner asks for it.
+    mutable std::uint32_t across_leaf = ~0u;
+    mutable double across = 0;
 };
 
 // Where the look changes along a side, from its first corner (left or

@@ -96,6 +96,11 @@ struct LineCrossing {
     bool applies = false;
     std::optional<double> at;
     bool starts_inside = false;  // the line's end at 0 lies inside the surface's solid
+    // Where `applies`: the line's ends (the points the plane puts on the
+    // side's two rays) and their depths along those rays, t0 and t1, for
+    // a caller that needs them too (the same numbers: not found again).
+    glm::dvec3 from{0.0}, to{0.0};
+    double t0 = 0, t1 = 0;
 };
 template <class Spans>
 LineCrossing crossing_on_line(const glm::dvec3& o0, const glm::dvec3& d0, const glm::dvec3& o1, const glm::dvec3& d1,
@@ -106,7 +111,8 @@ LineCrossing crossing_on_line(const glm::dvec3& o0, const glm::dvec3& d0, const 
                  t1 = glm::dot(p.normal, p.point - o1) / glm::dot(p.normal, d1);
     if (!(t0 > 0 && t1 > 0 && std::isfinite(t0) && std::isfinite(t1))) return {};
     csg::Span<double> out[csg::kMaxSpans];
-    const int n = spans(o0 + t0 * d0, o1 + t1 * d1, out);
+    const glm::dvec3 from = o0 + t0 * d0, to = o1 + t1 * d1;
+    const int n = spans(from, to, out);
     constexpr double kNear = 1.0 / 65536;
     bool inside0 = false, inside1 = false;
     double u = 1;
@@ -119,14 +125,14 @@ LineCrossing crossing_on_line(const glm::dvec3& o0, const glm::dvec3& d0, const 
         inside0 = inside0 || (out[i].t0 < 0 && 0 < out[i].t1);
         inside1 = inside1 || (out[i].t0 < 1 && 1 < out[i].t1);
     }
-    if (inside0 == inside1) return {true, std::nullopt, inside0};
+    if (inside0 == inside1) return {true, std::nullopt, inside0, from, to, t0, t1};
     // u along the line to s along the side: the ray at s, o + t(s)·d(s)
     // with d(s) = mix(d0, d1, s), meets the line at u = s·t0 / ((1 − s)·t1
     // + s·t0) for a shared origin (t0, t1: the plane's depths at the ends),
     // so s = u·t1 / ((1 − u)·t0 + u·t1); u = s for a shared direction.
     const double s = pinhole ? u * t1 / ((1 - u) * t0 + u * t1) : u;
     if (!(u < 1 && s > 0 && s < 1)) return {};
-    return {true, s, inside0};
+    return {true, s, inside0, from, to, t0, t1};
 }
 
 }  // namespace kerf::render
