@@ -64,7 +64,12 @@ int run(const Options& o) {
         render::RenderOptions ro = o.render;
         ro.srgb8 = render::is_8bit_output(o.output);  // colour for an 8-bit file: store its bytes directly
         image = render_and_write(scene, ro, o.output, bar, &stats, {}, -1, o.progressive, [&] {
-            release = std::jthread([](csg::Scene done) { (void)done; }, std::move(scene));
+            try {
+                release = std::jthread([](csg::Scene done) { (void)done; }, std::move(scene));
+            } catch (...) {
+                // No thread to be had: the scene is freed here or at the
+                // block's end, and the finished image is still written.
+            }
         });
     }
     if (release.joinable()) release.join();

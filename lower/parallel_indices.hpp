@@ -15,13 +15,23 @@
 #include <exception>
 #include <limits>
 #include <mutex>
-#include <system_error>
+#include <new>
 #include <thread>
 #include <vector>
+
+#include <sched.h>
 
 #include "csg/huge_pages.hpp"
 
 namespace kerf::lowering {
+
+// The CPUs this process may run on (its affinity mask), at least 1.
+inline unsigned usable_cpus() {
+    cpu_set_t set;
+    CPU_ZERO(&set);
+    if (sched_getaffinity(0, sizeof set, &set) == 0) return std::max(1, CPU_COUNT(&set));
+    return std::max(1u, std::thread::hardware_concurrency());
+}
 
 // `chunk`: how many indices a thread takes at a time. `threads`: how many
 // threads may work (the caller's among them; 0, or more than the hardware
@@ -31,8 +41,9 @@ namespace kerf::lowering {
 template <class Body>
 void for_each_index(std::size_t n, std::size_t chunk, unsigned threads, Body&& body) {
     const std::size_t kChunk = std::max<std::size_t>(chunk, 1);
-    // No more than the hardware runs at once (--threads may ask for 1,024).
-    const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
+    // No more than this process may run at once (--threads may ask for
+    // 1,024; taskset may allow fewer CPUs than the machine has).
+    const unsigned hardware = usable_cpus();
     threads = threads == 0 ? hardware : std::min(threads, hardware);
     threads = unsigned(std::min<std::size_t>(threads, (n + kChunk - 1) / kChunk));
     std::atomic<std::size_t> next{0};
@@ -58,12 +69,20 @@ void for_each_index(std::size_t n, std::size_t chunk, unsigned threads, Body&& b
             }
         }
     };
+    // Reserved first, so no push reallocates while helpers run; a helper
+    // that cannot be had (no thread, no memory) leaves its share to the
+    // others, and a started one is always joined.
     std::vector<std::thread> helpers;
+    try {
+        helpers.reserve(threads - 1);
+    } catch (const std::bad_alloc&) {
+        threads = 1;
+    }
     for (unsigned t = 1; t < threads; ++t) {
         try {
             helpers.emplace_back(work);
-        } catch (const std::system_error&) {
-            break;  // no thread to be had: the others do its share
+        } catch (...) {
+            break;
         }
     }
     work();
