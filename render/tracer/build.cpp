@@ -91,16 +91,22 @@ void Accel::commit_now() const {
     committed.store(true, std::memory_order_release);
 }
 
-void CsgTracer::Impl::build_accel(Accel& accel, const std::vector<std::uint32_t>& nodes, bool top_level, bool lazy) {
-    accel.items.reserve(nodes.size());
-    for (std::uint32_t node : nodes) {
-        const csg::Aabb& b = scene.nodes[node].bounds;
-        if (b.empty()) continue;  // an empty solid can never be hit
-        if (!finite_box(b)) {
-            accel.always.push_back(node);
-            continue;
+void CsgTracer::Impl::build_accel(Accel& accel, const std::vector<std::uint32_t>& nodes, bool top_level, bool lazy,
+                                  const Accel* same) {
+    if (same) {
+        accel.items = same->items;
+        accel.always = same->always;
+    } else {
+        accel.items.reserve(nodes.size());
+        for (std::uint32_t node : nodes) {
+            const csg::Aabb& b = scene.nodes[node].bounds;
+            if (b.empty()) continue;  // an empty solid can never be hit
+            if (!finite_box(b)) {
+                accel.always.push_back(node);
+                continue;
+            }
+            accel.items.push_back(node);
         }
-        accel.items.push_back(node);
     }
     // A few units are cheaper to box-test in a loop than through Embree, whose
     // per-query set-up costs about as much as tracing a background pixel.
@@ -280,10 +286,23 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
     // Past the cones' units the top BVH waits (Accel::ready): a crowd of
     // bare spheres walks its grid instead (sphere_grid.hpp), and only rays
     // too far for the grid's margin would ask it.
-    impl_->build_accel(impl_->top, units, true, units.size() > Impl::kMaxTwoLevelUnits);
+    // A root union of no unions (the lattices): its units are its children,
+    // whose BVH items were just sorted out (each a miss in the node table at
+    // 10^5).
+    const std::int32_t root_accel = impl_->accel_of_node[scene.root];
+    const Node& root = scene.nodes[scene.root];
+    const bool same = root_accel >= 0 && root.op == Op::Union && root.count == units.size() &&
+                      std::equal(units.begin(), units.end(), scene.children.begin() + root.first);
+    impl_->build_accel(impl_->top, units, true, units.size() > Impl::kMaxTwoLevelUnits,
+                       same ? impl_->node_accels[std::size_t(root_accel)].get() : nullptr);
     if (impl_->top.items.size() == 1 && impl_->top.always.empty()) impl_->lone_unit = impl_->top.items[0];
     if (impl_->lone_unit != csg::kNone && impl_->grid_minus[impl_->lone_unit]) impl_->plate_unit = impl_->lone_unit;
-    impl_->find_convex_units();
+    // The shadow rays' per-leaf tables (find_convex_units) are read by
+    // nothing else here: a big scene's are filled by one thread while the
+    // others build the balls, the grid and the rest (they write disjoint
+    // members; the same bits). Joined before the constructor returns or
+    // throws (`convex` waits in its destructor).
+    ConcurrentStep convex(scene.nodes.size() >= kParallelBuild, [this] { impl_->find_convex_units(); });
     impl_->ball_slack = use_float ? 1e-5 : 1e-12;  // float sphere tests round at ~1e-7 of |c - o|
     // A crowd of bare spheres (every unit a sphere leaf: the spheres_*
     // lattices) up to kMaxTwoLevelUnits keeps their balls, though each
@@ -377,6 +396,7 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
         impl_->build_ball_bvh();
         impl_->build_apexes();
     }
+    convex.join();
     if (impl_->sphere_grid.empty()) impl_->top.ready();
     impl_->float_rays = impl_->top.bvh != nullptr || impl_->ball_bvh != nullptr;
 }
