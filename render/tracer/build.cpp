@@ -10,6 +10,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "render/tracer/float_round.hpp"
 #include "render/tracer/build.hpp"
@@ -55,20 +56,41 @@ void bounds_callback(const RTCBoundsFunctionArguments* args) {
     *args->bounds_o = embree_box(accel->nodes[accel->items[args->primID]].bounds, accel->frame, accel->frame_radius);
 }
 
-// Operands of the root's union chain, in order: the units.
+// Operands of the root's union chain, in order: the units. Only unions are
+// stacked (with the next child to visit): a lattice's 10^5 leaves under one
+// union go straight to the list.
 std::vector<std::uint32_t> root_units(const csg::Scene& scene) {
-    std::vector<std::uint32_t> units, stack{scene.root};
+    if (scene.nodes[scene.root].op != Op::Union) return {scene.root};
+    std::vector<std::uint32_t> units;
+    units.reserve(scene.nodes[scene.root].count);
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> stack{{scene.root, 0}};
     while (!stack.empty()) {
-        const std::uint32_t id = stack.back();
-        stack.pop_back();
-        const Node& n = scene.nodes[id];
-        if (n.op == Op::Union) {
-            for (std::uint32_t k = n.count; k-- > 0;) stack.push_back(scene.children[n.first + k]);
-        } else {
-            units.push_back(id);
+        const Node& n = scene.nodes[stack.back().first];
+        if (stack.back().second == n.count) {
+            stack.pop_back();
+            continue;
         }
+        const std::uint32_t child = scene.children[n.first + stack.back().second++];
+        if (scene.nodes[child].op == Op::Union)
+            stack.push_back({child, 0});
+        else
+            units.push_back(child);
     }
     return units;
+}
+
+// A BVH's items: the bounded nodes, in order; the unbounded ones are
+// tested always. An empty solid can never be hit.
+void sort_items(const csg::Scene& scene, const std::uint32_t* first, const std::uint32_t* last, Accel& accel) {
+    accel.items.reserve(std::size_t(last - first));
+    for (const std::uint32_t* it = first; it != last; ++it) {
+        const csg::Aabb& b = scene.nodes[*it].bounds;
+        if (b.empty()) continue;
+        if (!finite_box(b))
+            accel.always.push_back(*it);
+        else
+            accel.items.push_back(*it);
+    }
 }
 
 }  // namespace
@@ -97,16 +119,7 @@ void CsgTracer::Impl::build_accel(Accel& accel, const std::vector<std::uint32_t>
         accel.items = same->items;
         accel.always = same->always;
     } else {
-        accel.items.reserve(nodes.size());
-        for (std::uint32_t node : nodes) {
-            const csg::Aabb& b = scene.nodes[node].bounds;
-            if (b.empty()) continue;  // an empty solid can never be hit
-            if (!finite_box(b)) {
-                accel.always.push_back(node);
-                continue;
-            }
-            accel.items.push_back(node);
-        }
+        sort_items(scene, nodes.data(), nodes.data() + nodes.size(), accel);
     }
     // A few units are cheaper to box-test in a loop than through Embree, whose
     // per-query set-up costs about as much as tracing a background pixel.
@@ -210,6 +223,17 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
     if (!impl_->device) throw std::runtime_error("cannot create the Embree device");
     rtcSetDeviceErrorFunction(impl_->device, embree_error, nullptr);
 
+    // A big root union's items (the lattices' 10^5 children, each a miss in
+    // the node table) sorted out by one thread of the arena while the others
+    // fill the tables below; the same list, taken by its BVH's build.
+    const bool big_root = scene.root != csg::kNone && scene.nodes[scene.root].op == Op::Union &&
+                          scene.nodes[scene.root].count >= kParallelBuild;
+    Accel root_items;
+    ConcurrentStep root_sort(big_root, [&] {
+        if (!big_root) return;
+        const std::uint32_t* kids = scene.children.data() + scene.nodes[scene.root].first;
+        sort_items(scene, kids, kids + scene.nodes[scene.root].count, root_items);
+    });
     impl_->accel_of_node.assign(scene.nodes.size(), -1);
     // Every per-leaf and per-node table reserved at its size: grown by
     // doubling, each copy faulted in fresh pages (a third of the page
@@ -235,6 +259,7 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
     if (scene.root == csg::kNone) return;
     impl_->build_meshes();
     impl_->build_prism_grids();
+    root_sort.join();
     for (std::uint32_t id = 0; id < scene.nodes.size(); ++id) {
         const Node& n = scene.nodes[id];
         const std::uint32_t skip = n.op == Op::Difference ? 1 : 0;
@@ -250,7 +275,8 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
             // top-level queries visit them, and nothing may ever ask the
             // root's own spans (the spheres_* lattices: 50 ms of build at 10⁵).
             const bool root_union = n.op == Op::Union && id == scene.root && kids.size() > Impl::kMaxTwoLevelUnits;
-            impl_->build_accel(accel, kids, false, (n.op == Op::Difference && kids.size() < kHugeAccel) || root_union);
+            impl_->build_accel(accel, kids, false, (n.op == Op::Difference && kids.size() < kHugeAccel) || root_union,
+                               big_root && id == scene.root ? &root_items : nullptr);
             if (n.op == Op::Difference && accel.bvh) {
                 std::vector<csg::Aabb> boxes;
                 for (std::uint32_t item : accel.items) boxes.push_back(impl_->padded[item]);
