@@ -369,25 +369,33 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
         const double pad = 4e-6 * impl_->frame_radius + 4 * eps;
         if (!reach.empty()) reach = {reach.lo - glm::dvec3(pad), reach.hi + glm::dvec3(pad)};
         impl_->reach = reach;
-        if (impl_->bare_spheres && impl_->top.items.size() > Impl::kMaxTwoLevelUnits) {
-            impl_->sphere_grid.build(reach, impl_->top.balls);
-            if (impl_->sphere_grid.empty()) {  // (not expected of bare spheres) as before: the box BVH, no balls
-                impl_->bare_spheres = false;
-                impl_->top.balls.clear();
-                impl_->top.sphere_minus.clear();
-            }
-        }
         // (Past TowardLight::kMaxUnits, not even its per-unit input: 8 MB of
-        // peak at 10⁶ units.)
-        if (impl_->bare_spheres && impl_->top.items.size() <= TowardLight::kMaxUnits) {
+        // peak at 10⁶ units.) Its lights and radii need no grid: a big
+        // crowd's are found by one thread of the arena while the others
+        // build the grid (the balls, read by both, are cleared only after).
+        const bool lit_crowd = impl_->bare_spheres && impl_->top.items.size() <= TowardLight::kMaxUnits;
+        ConcurrentStep toward_radii(lit_crowd && impl_->top.items.size() >= kParallelBuild, [&] {
+            if (!lit_crowd) return;
             std::vector<double> leaf_eps;
+            leaf_eps.reserve(impl_->top.items.size());
             for (std::uint32_t unit : impl_->top.items) leaf_eps.push_back(impl_->leaf_eps[scene.nodes[unit].first]);
             std::vector<glm::dvec3> lights;
             for (const csg::Light& light : scene.lights)
                 if (!light.directional && light.shadows && !(light.radius > 0)) lights.push_back(light.position);
-            impl_->toward_light.build(impl_->top.balls, leaf_eps, impl_->eps_per_distance, impl_->frame_radius, reach,
-                                      impl_->sphere_grid, lights);
+            impl_->toward_light.build_radii(impl_->top.balls, leaf_eps, impl_->eps_per_distance, impl_->frame_radius,
+                                            reach, lights);
+        });
+        if (impl_->bare_spheres && impl_->top.items.size() > Impl::kMaxTwoLevelUnits)
+            impl_->sphere_grid.build(reach, impl_->top.balls);
+        toward_radii.join();
+        if (impl_->bare_spheres && impl_->top.items.size() > Impl::kMaxTwoLevelUnits && impl_->sphere_grid.empty()) {
+            // (not expected of bare spheres) as before: the box BVH, no balls, no TowardLight
+            impl_->bare_spheres = false;
+            impl_->top.balls.clear();
+            impl_->top.sphere_minus.clear();
+            impl_->toward_light = TowardLight{};
         }
+        if (lit_crowd && impl_->bare_spheres) impl_->toward_light.attach(impl_->top.balls, reach, impl_->sphere_grid);
         const std::vector<std::uint32_t>& items = impl_->top.items;
         const csg::Camera& cam = scene.camera;
         const bool pinhole = cam.projection == csg::Projection::Planar && !cam.orthographic && !(cam.aperture > 0);
