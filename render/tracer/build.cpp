@@ -10,6 +10,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "render/tracer/float_round.hpp"
 #include "render/tracer/build.hpp"
@@ -55,20 +56,41 @@ void bounds_callback(const RTCBoundsFunctionArguments* args) {
     *args->bounds_o = embree_box(accel->nodes[accel->items[args->primID]].bounds, accel->frame, accel->frame_radius);
 }
 
-// Operands of the root's union chain, in order: the units.
+// Operands of the root's union chain, in order: the units. Only unions are
+// stacked (with the next child to visit): a lattice's 10^5 leaves under one
+// union go straight to the list.
 std::vector<std::uint32_t> root_units(const csg::Scene& scene) {
-    std::vector<std::uint32_t> units, stack{scene.root};
+    if (scene.nodes[scene.root].op != Op::Union) return {scene.root};
+    std::vector<std::uint32_t> units;
+    units.reserve(scene.nodes[scene.root].count);
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> stack{{scene.root, 0}};
     while (!stack.empty()) {
-        const std::uint32_t id = stack.back();
-        stack.pop_back();
-        const Node& n = scene.nodes[id];
-        if (n.op == Op::Union) {
-            for (std::uint32_t k = n.count; k-- > 0;) stack.push_back(scene.children[n.first + k]);
-        } else {
-            units.push_back(id);
+        const Node& n = scene.nodes[stack.back().first];
+        if (stack.back().second == n.count) {
+            stack.pop_back();
+            continue;
         }
+        const std::uint32_t child = scene.children[n.first + stack.back().second++];
+        if (scene.nodes[child].op == Op::Union)
+            stack.push_back({child, 0});
+        else
+            units.push_back(child);
     }
     return units;
+}
+
+// A BVH's items: the bounded nodes, in order; the unbounded ones are
+// tested always. An empty solid can never be hit.
+void sort_items(const csg::Scene& scene, const std::uint32_t* first, const std::uint32_t* last, Accel& accel) {
+    accel.items.reserve(std::size_t(last - first));
+    for (const std::uint32_t* it = first; it != last; ++it) {
+        const csg::Aabb& b = scene.nodes[*it].bounds;
+        if (b.empty()) continue;
+        if (!finite_box(b))
+            accel.always.push_back(*it);
+        else
+            accel.items.push_back(*it);
+    }
 }
 
 }  // namespace
@@ -91,16 +113,13 @@ void Accel::commit_now() const {
     committed.store(true, std::memory_order_release);
 }
 
-void CsgTracer::Impl::build_accel(Accel& accel, const std::vector<std::uint32_t>& nodes, bool top_level, bool lazy) {
-    accel.items.reserve(nodes.size());
-    for (std::uint32_t node : nodes) {
-        const csg::Aabb& b = scene.nodes[node].bounds;
-        if (b.empty()) continue;  // an empty solid can never be hit
-        if (!finite_box(b)) {
-            accel.always.push_back(node);
-            continue;
-        }
-        accel.items.push_back(node);
+void CsgTracer::Impl::build_accel(Accel& accel, const std::vector<std::uint32_t>& nodes, bool top_level, bool lazy,
+                                  const Accel* same) {
+    if (same) {
+        accel.items = same->items;
+        accel.always = same->always;
+    } else {
+        sort_items(scene, nodes.data(), nodes.data() + nodes.size(), accel);
     }
     // A few units are cheaper to box-test in a loop than through Embree, whose
     // per-query set-up costs about as much as tracing a background pixel.
@@ -204,6 +223,17 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
     if (!impl_->device) throw std::runtime_error("cannot create the Embree device");
     rtcSetDeviceErrorFunction(impl_->device, embree_error, nullptr);
 
+    // A big root union's items (the lattices' 10^5 children, each a miss in
+    // the node table) sorted out by one thread of the arena while the others
+    // fill the tables below; the same list, taken by its BVH's build.
+    const bool big_root = scene.root != csg::kNone && scene.nodes[scene.root].op == Op::Union &&
+                          scene.nodes[scene.root].count >= kParallelBuild;
+    Accel root_items;
+    ConcurrentStep root_sort(big_root, [&] {
+        if (!big_root) return;
+        const std::uint32_t* kids = scene.children.data() + scene.nodes[scene.root].first;
+        sort_items(scene, kids, kids + scene.nodes[scene.root].count, root_items);
+    });
     impl_->accel_of_node.assign(scene.nodes.size(), -1);
     // Every per-leaf and per-node table reserved at its size: grown by
     // doubling, each copy faulted in fresh pages (a third of the page
@@ -229,6 +259,7 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
     if (scene.root == csg::kNone) return;
     impl_->build_meshes();
     impl_->build_prism_grids();
+    root_sort.join();
     for (std::uint32_t id = 0; id < scene.nodes.size(); ++id) {
         const Node& n = scene.nodes[id];
         const std::uint32_t skip = n.op == Op::Difference ? 1 : 0;
@@ -244,7 +275,8 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
             // top-level queries visit them, and nothing may ever ask the
             // root's own spans (the spheres_* lattices: 50 ms of build at 10⁵).
             const bool root_union = n.op == Op::Union && id == scene.root && kids.size() > Impl::kMaxTwoLevelUnits;
-            impl_->build_accel(accel, kids, false, (n.op == Op::Difference && kids.size() < kHugeAccel) || root_union);
+            impl_->build_accel(accel, kids, false, (n.op == Op::Difference && kids.size() < kHugeAccel) || root_union,
+                               big_root && id == scene.root ? &root_items : nullptr);
             if (n.op == Op::Difference && accel.bvh) {
                 std::vector<csg::Aabb> boxes;
                 for (std::uint32_t item : accel.items) boxes.push_back(impl_->padded[item]);
@@ -280,10 +312,23 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
     // Past the cones' units the top BVH waits (Accel::ready): a crowd of
     // bare spheres walks its grid instead (sphere_grid.hpp), and only rays
     // too far for the grid's margin would ask it.
-    impl_->build_accel(impl_->top, units, true, units.size() > Impl::kMaxTwoLevelUnits);
+    // A root union of no unions (the lattices): its units are its children,
+    // whose BVH items were just sorted out (each a miss in the node table at
+    // 10^5).
+    const std::int32_t root_accel = impl_->accel_of_node[scene.root];
+    const Node& root = scene.nodes[scene.root];
+    const bool same = root_accel >= 0 && root.op == Op::Union && root.count == units.size() &&
+                      std::equal(units.begin(), units.end(), scene.children.begin() + root.first);
+    impl_->build_accel(impl_->top, units, true, units.size() > Impl::kMaxTwoLevelUnits,
+                       same ? impl_->node_accels[std::size_t(root_accel)].get() : nullptr);
     if (impl_->top.items.size() == 1 && impl_->top.always.empty()) impl_->lone_unit = impl_->top.items[0];
     if (impl_->lone_unit != csg::kNone && impl_->grid_minus[impl_->lone_unit]) impl_->plate_unit = impl_->lone_unit;
-    impl_->find_convex_units();
+    // The shadow rays' per-leaf tables (find_convex_units) are read by
+    // nothing else here: a big scene's are filled by one thread while the
+    // others build the balls, the grid and the rest (they write disjoint
+    // members; the same bits). Joined before the constructor returns or
+    // throws (`convex` waits in its destructor).
+    ConcurrentStep convex(scene.nodes.size() >= kParallelBuild, [this] { impl_->find_convex_units(); });
     impl_->ball_slack = use_float ? 1e-5 : 1e-12;  // float sphere tests round at ~1e-7 of |c - o|
     // A crowd of bare spheres (every unit a sphere leaf: the spheres_*
     // lattices) up to kMaxTwoLevelUnits keeps their balls, though each
@@ -324,25 +369,33 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
         const double pad = 4e-6 * impl_->frame_radius + 4 * eps;
         if (!reach.empty()) reach = {reach.lo - glm::dvec3(pad), reach.hi + glm::dvec3(pad)};
         impl_->reach = reach;
-        if (impl_->bare_spheres && impl_->top.items.size() > Impl::kMaxTwoLevelUnits) {
-            impl_->sphere_grid.build(reach, impl_->top.balls);
-            if (impl_->sphere_grid.empty()) {  // (not expected of bare spheres) as before: the box BVH, no balls
-                impl_->bare_spheres = false;
-                impl_->top.balls.clear();
-                impl_->top.sphere_minus.clear();
-            }
-        }
         // (Past TowardLight::kMaxUnits, not even its per-unit input: 8 MB of
-        // peak at 10⁶ units.)
-        if (impl_->bare_spheres && impl_->top.items.size() <= TowardLight::kMaxUnits) {
+        // peak at 10⁶ units.) Its lights and radii need no grid: a big
+        // crowd's are found by one thread of the arena while the others
+        // build the grid (the balls, read by both, are cleared only after).
+        const bool lit_crowd = impl_->bare_spheres && impl_->top.items.size() <= TowardLight::kMaxUnits;
+        ConcurrentStep toward_radii(lit_crowd && impl_->top.items.size() >= kParallelBuild, [&] {
+            if (!lit_crowd) return;
             std::vector<double> leaf_eps;
+            leaf_eps.reserve(impl_->top.items.size());
             for (std::uint32_t unit : impl_->top.items) leaf_eps.push_back(impl_->leaf_eps[scene.nodes[unit].first]);
             std::vector<glm::dvec3> lights;
             for (const csg::Light& light : scene.lights)
                 if (!light.directional && light.shadows && !(light.radius > 0)) lights.push_back(light.position);
-            impl_->toward_light.build(impl_->top.balls, leaf_eps, impl_->eps_per_distance, impl_->frame_radius, reach,
-                                      impl_->sphere_grid, lights);
+            impl_->toward_light.build_radii(impl_->top.balls, leaf_eps, impl_->eps_per_distance, impl_->frame_radius,
+                                            reach, lights);
+        });
+        if (impl_->bare_spheres && impl_->top.items.size() > Impl::kMaxTwoLevelUnits)
+            impl_->sphere_grid.build(reach, impl_->top.balls);
+        toward_radii.join();
+        if (impl_->bare_spheres && impl_->top.items.size() > Impl::kMaxTwoLevelUnits && impl_->sphere_grid.empty()) {
+            // (not expected of bare spheres) as before: the box BVH, no balls, no TowardLight
+            impl_->bare_spheres = false;
+            impl_->top.balls.clear();
+            impl_->top.sphere_minus.clear();
+            impl_->toward_light = TowardLight{};
         }
+        if (lit_crowd && impl_->bare_spheres) impl_->toward_light.attach(impl_->top.balls, reach, impl_->sphere_grid);
         const std::vector<std::uint32_t>& items = impl_->top.items;
         const csg::Camera& cam = scene.camera;
         const bool pinhole = cam.projection == csg::Projection::Planar && !cam.orthographic && !(cam.aperture > 0);
@@ -377,6 +430,7 @@ CsgTracer::CsgTracer(const csg::Scene& scene, bool use_float) : impl_(std::make_
         impl_->build_ball_bvh();
         impl_->build_apexes();
     }
+    convex.join();
     if (impl_->sphere_grid.empty()) impl_->top.ready();
     impl_->float_rays = impl_->top.bvh != nullptr || impl_->ball_bvh != nullptr;
 }

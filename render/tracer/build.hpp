@@ -211,7 +211,10 @@ struct CsgTracer::Impl {
     }
     ~Impl();
     // `lazy`: leave the commit to the first query (Accel::ready).
-    void build_accel(Accel& accel, const std::vector<std::uint32_t>& nodes, bool top_level, bool lazy = false);
+    // `same`: an accel already built of the same nodes in the same order,
+    // whose items and unbounded nodes are copied rather than sorted again.
+    void build_accel(Accel& accel, const std::vector<std::uint32_t>& nodes, bool top_level, bool lazy = false,
+                     const Accel* same = nullptr);
     void local_tolerances(const std::vector<std::uint32_t>& units);  // build.cpp
     void build_meshes();  // mesh_spans.cpp
     void build_prism_grids();  // prism_spans.cpp

@@ -7,12 +7,14 @@
 #pragma once
 #include <algorithm>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 #include "csg/huge_pages.hpp"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_group.h>
 
 namespace kerf::render {
 
@@ -52,5 +54,41 @@ void reserve_populated(std::vector<T>& v, std::size_t n) {
                       },
                       tbb::simple_partitioner());
 }
+
+// One step of a big build run by a thread of the arena alongside what the
+// constructing thread does next (it must write only what nothing before
+// join() reads); a small build's, or with `concurrent` false, runs at once.
+// join() waits and rethrows its exception; the destructor (an exception
+// unwinding the build) waits too, and drops it.
+class ConcurrentStep {
+public:
+    template <class F>
+    ConcurrentStep(bool concurrent, F&& step) {
+        if (!concurrent) {
+            step();
+            return;
+        }
+        group_.run(std::forward<F>(step));
+        running_ = true;
+    }
+    ConcurrentStep(const ConcurrentStep&) = delete;
+    ConcurrentStep& operator=(const ConcurrentStep&) = delete;
+    void join() {
+        if (!running_) return;
+        running_ = false;
+        group_.wait();
+    }
+    ~ConcurrentStep() {
+        if (!running_) return;
+        try {
+            group_.wait();
+        } catch (...) {  // the build is failing already: its own exception goes on
+        }
+    }
+
+private:
+    tbb::task_group group_;
+    bool running_ = false;
+};
 
 }  // namespace kerf::render

@@ -104,11 +104,17 @@ void SphereGrid::build(const csg::Aabb& box, const std::vector<Ball>& balls) {
         for (std::size_t i = 0; i < ncells; ++i) fill[i + 1] += fill[i];
     }
     items.resize(std::size_t(total));
-    start = fill;
     if (mid < count)
         tbb::parallel_invoke([&] { list_cells(0, mid, fill); }, [&] { list_cells(mid, std::uint32_t(count), upper); });
     else
         list_cells(0, mid, fill);
+    // The last half's cursors have stopped at each cell's end, the next
+    // cell's start: shifted by one they are `start` (no fresh copy of
+    // fill made before the listing: its pages cost more than the shift).
+    std::vector<std::uint32_t>& ends = mid < count ? upper : fill;
+    std::copy_backward(ends.begin(), ends.begin() + std::ptrdiff_t(ncells), ends.end());
+    ends[0] = 0;
+    start = std::move(ends);
 }
 
 namespace {

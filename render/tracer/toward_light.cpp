@@ -14,6 +14,13 @@ double l1(const glm::dvec3& v) { return std::abs(v.x) + std::abs(v.y) + std::abs
 void TowardLight::build(const std::vector<Ball>& balls, const std::vector<double>& leaf_eps_of_unit,
                         double eps_per_distance, double frame_radius, const csg::Aabb& reach,
                         const SphereGrid& crowd_grid, const std::vector<glm::dvec3>& point_lights) {
+    build_radii(balls, leaf_eps_of_unit, eps_per_distance, frame_radius, reach, point_lights);
+    attach(balls, reach, crowd_grid);
+}
+
+void TowardLight::build_radii(const std::vector<Ball>& balls, const std::vector<double>& leaf_eps_of_unit,
+                              double eps_per_distance, double frame_radius, const csg::Aabb& reach,
+                              const std::vector<glm::dvec3>& point_lights) {
     *this = TowardLight{};
     if (balls.size() < 2 || balls.size() > kMaxUnits || point_lights.empty() || reach.empty()) return;
     const double mag = l1(reach.lo) + l1(reach.hi);
@@ -34,6 +41,10 @@ void TowardLight::build(const std::vector<Ball>& balls, const std::vector<double
         r_small = std::min(i == 0 ? b.r : r_small, b.r);
         radius[i] = b.r * (1 + 1e-4) + 200 * (leaf_eps_of_unit[i] + eps_per_distance * (l1(b.c) + b.r)) + 1e-12 * l1(b.c);
     }
+}
+
+void TowardLight::attach(const std::vector<Ball>& balls, const csg::Aabb& reach, const SphereGrid& crowd_grid) {
+    if (lights.empty()) return;
     if (crowd_grid.empty()) {
         own_grid.build(reach, balls);
         if (own_grid.empty()) return lights.clear();

@@ -68,6 +68,11 @@ struct TowardLight {
     void build(const std::vector<Ball>& balls, const std::vector<double>& leaf_eps_of_unit, double eps_per_distance,
                double frame_radius, const csg::Aabb& reach, const SphereGrid& crowd_grid,
                const std::vector<glm::dvec3>& point_lights);
+    // build() in two steps: the lights and radii, which need no grid (a big
+    // crowd's are found while its grid is built), then the grid and slots.
+    void build_radii(const std::vector<Ball>& balls, const std::vector<double>& leaf_eps_of_unit, double eps_per_distance,
+                     double frame_radius, const csg::Aabb& reach, const std::vector<glm::dvec3>& point_lights);
+    void attach(const std::vector<Ball>& balls, const csg::Aabb& reach, const SphereGrid& crowd_grid);
     // The light a ray from unit `unit`'s sphere ends at (o + tfar·d), or
     // -1: none, or the ray starts too far from the sphere.
     int light_of(const glm::dvec3& o, const glm::dvec3& d, double tfar, std::uint32_t unit,
