@@ -21,9 +21,8 @@ void advise_huge_pages(void* data, std::size_t bytes);
 // of a fault per 4 KiB page, callable from several threads on parts of one
 // block so that a big array's first touch is shared among them (on this
 // project's virtual machines a fresh page costs ~1.5-2 us). Contents are
-// kept: pages already there are left as they are. A hint: failure is fine;
-// false when the kernel does not know the advice (EINVAL: before 5.14).
-bool populate_pages(void* data, std::size_t bytes);
+// kept: pages already there are left as they are. A hint: failure is fine.
+void populate_pages(void* data, std::size_t bytes);
 
 // Reserves `count` elements and advises huge pages over the whole buffer,
 // before the elements already there move in (so their copy lands on huge

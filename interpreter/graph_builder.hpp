@@ -8,11 +8,9 @@
 #include <cstdint>
 #include <functional>
 #include <string>
-#include <type_traits>
 #include <vector>
 
 #include "csg/huge_pages.hpp"
-#include "csg/pages_ahead.hpp"
 #include "grammar/source.hpp"
 #include "interpreter/scene_graph.hpp"
 
@@ -34,7 +32,7 @@ public:
     // loop (docs/performance.md, "The front end").
     std::size_t max_nodes = 0, max_matrices = 0;
     template <class V>
-    void grow(V& v, std::size_t max, csg::PagesAhead::Watch* ahead = nullptr) {
+    static void grow(V& v, std::size_t max) {
         if (v.size() == v.capacity() && v.size() >= 16384 && max > v.capacity()) {
             // The whole reservation counts against RLIMIT_DATA (the memory
             // cap): refused, the array grows as any vector does and only a
@@ -42,31 +40,15 @@ public:
             try {
                 reserve_huge(v, max);
             } catch (const std::bad_alloc&) {
-                return;
-            }
-            if constexpr (std::is_same_v<V, graph::Transforms>) {
-                pages_ahead.watch(slots_ahead, v.slot_array());
-                pages_ahead.watch(offsets_ahead, v.offset_array());
-            } else if (ahead) {
-                pages_ahead.watch(*ahead, v);
             }
         }
     }
     template <class T>
     static void reserve_huge(std::vector<T>& v, std::size_t n) { csg::reserve_huge(v, n); }
     static void reserve_huge(graph::Transforms& t, std::size_t n) { t.reserve_huge(n); }
-
-    // The reserved node, child and translation arrays' pages are faulted in by another
-    // thread a few MB ahead of their ends (csg/pages_ahead.hpp); stopped
-    // when evaluation ends (Evaluator::run) or, at an error, with the builder.
-    csg::PagesAhead pages_ahead;
-    csg::PagesAhead::Watch nodes_ahead, refs_ahead, slots_ahead, offsets_ahead;
-
     void add_matrix(const glm::dmat4& m) {
         grow(graph.matrices, max_matrices);
         graph.matrices.push_back(m);
-        pages_ahead.advance(slots_ahead, graph.matrices.slot_array());
-        pages_ahead.advance(offsets_ahead, graph.matrices.offset_array());
     }
 
     // The OpenSCAD dialect's mixing rule (docs/spec.md §10): set, a child of
@@ -75,9 +57,8 @@ public:
     std::function<void(const SourceLoc&, const std::string&)> warn_mixed;
 
     std::uint32_t add(graph::Node&& n) {
-        grow(graph.nodes, max_nodes, &nodes_ahead);
+        grow(graph.nodes, max_nodes);
         graph.nodes.push_back(std::move(n));
-        pages_ahead.advance(nodes_ahead, graph.nodes);
         return static_cast<std::uint32_t>(graph.nodes.size() - 1);
     }
     void push(std::uint32_t id) { pending.push_back(id); }
@@ -93,12 +74,11 @@ public:
         }
         const auto first_child = static_cast<std::uint32_t>(graph.child_refs.size());
         const auto child_count = static_cast<std::uint32_t>(pending.size() - mark);
-        grow(graph.child_refs, max_nodes, &refs_ahead);
+        grow(graph.child_refs, max_nodes);
         if (child_count == 1) graph.child_refs.push_back(pending[mark]);  // a transform's one child: no range insert
         else
             graph.child_refs.insert(graph.child_refs.end(), pending.begin() + static_cast<std::ptrdiff_t>(mark),
                                     pending.end());
-        pages_ahead.advance(refs_ahead, graph.child_refs);
         pending.resize(mark);
         graph::Node& n = emplace(loc);
         n.kind = kind;
@@ -117,13 +97,10 @@ public:
         if (graph.nodes.size() == graph.nodes.capacity()) {  // the arena moves: loc may be a node's, so copied first
             graph::Node n;
             n.loc = loc;
-            grow(graph.nodes, max_nodes, &nodes_ahead);
-            graph::Node& moved = graph.nodes.emplace_back(std::move(n));
-            pages_ahead.advance(nodes_ahead, graph.nodes);
-            return moved;
+            grow(graph.nodes, max_nodes);
+            return graph.nodes.emplace_back(std::move(n));
         }
         graph::Node& n = graph.nodes.emplace_back();
-        pages_ahead.advance(nodes_ahead, graph.nodes);
         n.loc = loc;
         return n;
     }

@@ -10,7 +10,6 @@
 #include <cstdint>
 #include <exception>
 #include <functional>
-#include <thread>
 #include <utility>
 
 #include "interpreter/evaluator.hpp"
@@ -29,7 +28,6 @@ Evaluator::Evaluator(const EvalOptions& options)
     std::size_t prims = static_cast<std::size_t>(std::min<std::uint64_t>(options.limits.primitives, 1u << 24));
     out_.max_nodes = 3 * prims + 1024;
     out_.max_matrices = prims + 1024;
-    if (options.threads == 1 || std::thread::hardware_concurrency() == 1) out_.pages_ahead.disable();
     if (lenient_) out_.warn_mixed = [this](const SourceLoc& loc, const std::string& message) { warn(loc, message); };
 }
 
@@ -92,7 +90,6 @@ graph::SceneGraph Evaluator::run(ast::Program program) {
     } catch (const RunLimitError& e) {
         record_error(e);
     }
-    out_.pages_ahead.stop();  // the arena is written: the rest faults its few pages itself
     SourceLoc top{prog.file, 1, 1};
     if (!out_.graph.camera) viewport_camera(top);
     if (exact_curves_)

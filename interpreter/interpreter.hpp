@@ -78,9 +78,6 @@ struct EvalOptions {
     // lowering (docs/architecture.md, "Layers"); unset, such a projection is
     // an error.
     std::function<bool(const graph::SceneGraph&, graph::SceneGraph&)> resolve_geometry_ops;
-    // --threads: 1 keeps evaluation on one thread (no second thread faults
-    // the node arena's pages ahead, csg/pages_ahead.hpp); 0 is all cores.
-    unsigned threads = 0;
 };
 
 // A -D value that does not parse, evaluate or name a top-level binding: a
