@@ -212,7 +212,8 @@ struct CsgTracer::Impl {
     ~Impl();
     // `lazy`: leave the commit to the first query (Accel::ready).
     // `same`: an accel already built of the same nodes in the same order,
-    // whose items and unbounded nodes are copied rather than sorted again.
+    // whose items and unbounded nodes are copied rather than split again
+    // (`accel` itself: they were moved in already).
     void build_accel(Accel& accel, const std::vector<std::uint32_t>& nodes, bool top_level, bool lazy = false,
                      const Accel* same = nullptr);
     void local_tolerances(const std::vector<std::uint32_t>& units);  // build.cpp

@@ -56,8 +56,9 @@ void reserve_populated(std::vector<T>& v, std::size_t n) {
 }
 
 // One step of a big build run by a thread of the arena alongside what the
-// constructing thread does next (it must write only what nothing before
-// join() reads); a small build's, or with `concurrent` false, runs at once.
+// constructing thread does next: the step and the constructing thread
+// share only what neither writes until join(). A small build's, or with
+// `concurrent` false, runs at once.
 // join() waits and rethrows its exception; the destructor (an exception
 // unwinding the build) waits too, and drops it.
 class ConcurrentStep {

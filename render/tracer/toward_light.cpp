@@ -11,13 +11,6 @@ namespace {
 double l1(const glm::dvec3& v) { return std::abs(v.x) + std::abs(v.y) + std::abs(v.z); }
 }  // namespace
 
-void TowardLight::build(const std::vector<Ball>& balls, const std::vector<double>& leaf_eps_of_unit,
-                        double eps_per_distance, double frame_radius, const csg::Aabb& reach,
-                        const SphereGrid& crowd_grid, const std::vector<glm::dvec3>& point_lights) {
-    build_radii(balls, leaf_eps_of_unit, eps_per_distance, frame_radius, reach, point_lights);
-    attach(balls, reach, crowd_grid);
-}
-
 void TowardLight::build_radii(const std::vector<Ball>& balls, const std::vector<double>& leaf_eps_of_unit,
                               double eps_per_distance, double frame_radius, const csg::Aabb& reach,
                               const std::vector<glm::dvec3>& point_lights) {

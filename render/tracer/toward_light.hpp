@@ -64,12 +64,9 @@ struct TowardLight {
     std::size_t units = 0;
 
     bool empty() const { return lights.empty(); }
-    // Built after the balls, `reach` and the crowd's grid (build.cpp).
-    void build(const std::vector<Ball>& balls, const std::vector<double>& leaf_eps_of_unit, double eps_per_distance,
-               double frame_radius, const csg::Aabb& reach, const SphereGrid& crowd_grid,
-               const std::vector<glm::dvec3>& point_lights);
-    // build() in two steps: the lights and radii, which need no grid (a big
-    // crowd's are found while its grid is built), then the grid and slots.
+    // Built in two steps after the balls and `reach` (build.cpp): the lights
+    // and radii, which need no grid (a big crowd's are found while its grid
+    // is built), then, with the crowd's grid, the grid and slots.
     void build_radii(const std::vector<Ball>& balls, const std::vector<double>& leaf_eps_of_unit, double eps_per_distance,
                      double frame_radius, const csg::Aabb& reach, const std::vector<glm::dvec3>& point_lights);
     void attach(const std::vector<Ball>& balls, const csg::Aabb& reach, const SphereGrid& crowd_grid);
