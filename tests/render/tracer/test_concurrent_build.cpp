@@ -3,8 +3,11 @@
 // ConcurrentStep): the shadow rays' per-leaf tables, the root union's BVH
 // items (copied to the top level's), TowardLight's radii beside the sphere
 // grid. A lattice of 35,937 spheres (past kParallelBuild) directly under
-// the root, and the same under two nested unions (the units found through
-// them), built in arenas of 1 and 2 threads: every camera ray's entry
+// the root, the same under two nested unions (the units found through
+// them), and directly under the root beside a union child holding its last
+// sphere, or beside an empty union (the root's items split out beside the
+// tables, but not the top level's to copy), built in arenas of 1 and 2
+// threads: every camera ray's entry
 // against the closed form (the nearest sphere entry along it), the same
 // entry and leaf on both, and every departing shadow ray's answer against
 // the closed form too. Every fifth camera ray is aimed at the first or
@@ -54,7 +57,10 @@ double first_entry(const std::vector<Ball>& balls, const glm::dvec3& o, const gl
     return best;
 }
 
-void check_crowd(bool nested) {
+enum class Shape { Flat, Nested, UnionChild, EmptyUnion };
+
+void check_crowd(Shape shape) {
+    const bool nested = shape == Shape::Nested;
     const int m = 33;
     const double p = 2.0 / m;
     std::vector<Ball> balls;
@@ -70,8 +76,12 @@ void check_crowd(bool nested) {
         const std::size_t half = kids.size() / 2;
         tree.kids.push_back(op(Op::Union, std::vector<Tree>(kids.begin(), kids.begin() + std::ptrdiff_t(half))));
         tree.kids.push_back(op(Op::Union, std::vector<Tree>(kids.begin() + std::ptrdiff_t(half), kids.end())));
+    } else if (shape == Shape::UnionChild) {
+        tree.kids.assign(kids.begin(), kids.end() - 1);
+        tree.kids.push_back(op(Op::Union, {kids.back()}));
     } else {
         tree.kids = kids;
+        if (shape == Shape::EmptyUnion) tree.kids.push_back(op(Op::Union, {}));
     }
     csg::Scene s = make_scene(tree);
     s.camera.position = glm::dvec3(3, -8, 4);
@@ -81,7 +91,7 @@ void check_crowd(bool nested) {
     std::optional<render::CsgTracer> one, two;
     tbb::task_arena(1).execute([&] { one.emplace(s, false); });
     tbb::task_arena(2).execute([&] { two.emplace(s, false); });
-    RandomCsg g(nested ? 71 : 70);
+    RandomCsg g(70 + int(shape));
     render::TraceScratch kept, fresh;
     int hits = 0, lit = 0, shadowed = 0;
     for (int i = 0; i < 300; ++i) {
@@ -97,7 +107,7 @@ void check_crowd(bool nested) {
         render::TraceHit h1, h2;
         const bool hit1 = one->intersect(render::TraceRay{from, d, 0, kInf}, h1, fresh);
         const bool hit2 = two->intersect(render::TraceRay{from, d, 0, kInf}, h2, fresh);
-        INFO((nested ? "nested" : "flat") << " ray " << i << " closed form " << t_true);
+        INFO("shape " << int(shape) << " ray " << i << " closed form " << t_true);
         REQUIRE(hit1 == hit2);
         if (hit1) {
             CHECK(h1.t == h2.t);
@@ -135,8 +145,10 @@ void check_crowd(bool nested) {
 TEST_CASE("a big crowd's tracer built with concurrent steps: entries and shadows by closed form, the same on 1 "
           "and 2 threads",
           "[render][oracle]") {
-    check_crowd(false);
-    check_crowd(true);
+    check_crowd(Shape::Flat);
+    check_crowd(Shape::Nested);
+    check_crowd(Shape::UnionChild);
+    check_crowd(Shape::EmptyUnion);
 }
 
 TEST_CASE("ConcurrentStep: the step has run when join returns, and join rethrows its exception", "[render]") {
