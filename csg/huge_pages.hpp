@@ -24,6 +24,16 @@ void advise_huge_pages(void* data, std::size_t bytes);
 // kept: pages already there are left as they are. A hint: failure is fine.
 void populate_pages(void* data, std::size_t bytes);
 
+// A big array is populated by several threads a slice at a time: slice i
+// of [data, data + bytes), for i < populate_slices(bytes). 64 KiB: 16
+// pages, a share small enough that a descheduled thread delays little.
+constexpr std::size_t kPopulateSlice = std::size_t(64) << 10;
+constexpr std::size_t populate_slices(std::size_t bytes) { return (bytes + kPopulateSlice - 1) / kPopulateSlice; }
+inline void populate_slice(void* data, std::size_t bytes, std::size_t i) {
+    const std::size_t from = i * kPopulateSlice;
+    populate_pages(static_cast<char*>(data) + from, bytes - from < kPopulateSlice ? bytes - from : kPopulateSlice);
+}
+
 // Reserves `count` elements and advises huge pages over the whole buffer,
 // before the elements already there move in (so their copy lands on huge
 // pages too, not on 4 KiB faults).

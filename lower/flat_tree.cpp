@@ -152,12 +152,18 @@ private:
     const std::uint32_t root_;
     const unsigned threads_;  // for wide unions' runs of leaves (place_run); 1: all serial
 
-    std::uint32_t child(const graph::Node& gn, std::uint32_t parent, std::uint32_t i) const {
+    // Child i of `parent` (node gn), or kNone for a bad reference. Children
+    // precede parents in the arena: checking it rules out cycles.
+    std::uint32_t child_or_none(const graph::Node& gn, std::uint32_t parent, std::uint32_t i) const {
         const std::size_t ref = std::size_t(gn.first_child) + i;
-        // Children precede parents in the arena: checking it rules out cycles.
-        if (ref >= g_.child_refs.size() || g_.child_refs[ref] >= parent)
-            throw std::invalid_argument("lower_to_csg: malformed scene graph (bad child reference)");
+        if (ref >= g_.child_refs.size() || g_.child_refs[ref] >= parent) return kNone;
         return g_.child_refs[ref];
+    }
+
+    std::uint32_t child(const graph::Node& gn, std::uint32_t parent, std::uint32_t i) const {
+        const std::uint32_t c = child_or_none(gn, parent, i);
+        if (c == kNone) throw std::invalid_argument("lower_to_csg: malformed scene graph (bad child reference)");
+        return c;
     }
 
     Frame open(std::uint32_t gnode, const Frame& parent) const {
@@ -251,16 +257,13 @@ private:
     // kNone. Checks what child() and open() would throw for, without
     // throwing: such a child ends a run and the serial walk reports it in order.
     std::uint32_t run_leaf(std::uint32_t parent, const graph::Node& gn, std::uint32_t i) const {
-        const std::size_t ref = std::size_t(gn.first_child) + i;
-        if (ref >= g_.child_refs.size() || g_.child_refs[ref] >= parent) return kNone;
-        const std::uint32_t c = g_.child_refs[ref];
+        const std::uint32_t c = child_or_none(gn, parent, i);
+        if (c == kNone) return kNone;
         const graph::Node& cn = g_.nodes[c];
         if (cn.kind == NodeKind::Primitive) return c;
         if (cn.kind != NodeKind::Transform || cn.child_count != 1 || cn.index >= g_.matrices.size()) return kNone;
-        const std::size_t inner = cn.first_child;
-        if (inner >= g_.child_refs.size() || g_.child_refs[inner] >= c) return kNone;
-        const std::uint32_t p = g_.child_refs[inner];
-        return g_.nodes[p].kind == NodeKind::Primitive ? p : kNone;
+        const std::uint32_t p = child_or_none(cn, c, 0);
+        return p != kNone && g_.nodes[p].kind == NodeKind::Primitive ? p : kNone;
     }
 
     // A union-like frame's next children when at least kParallelRun of them

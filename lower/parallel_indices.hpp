@@ -94,11 +94,8 @@ void for_each_index(std::size_t n, std::size_t chunk, unsigned threads, Body&& b
 // (csg::populate_pages): a big array's fresh pages, before one thread fills
 // it, cost half the time.
 inline void populate_in_parallel(void* data, std::size_t bytes, unsigned threads) {
-    constexpr std::size_t kSlice = std::size_t(64) << 10;
-    char* const p = static_cast<char*>(data);
-    for_each_index((bytes + kSlice - 1) / kSlice, 4, threads, [&](std::size_t i) {
-        csg::populate_pages(p + i * kSlice, std::min(kSlice, bytes - i * kSlice));
-    });
+    for_each_index(csg::populate_slices(bytes), 4, threads,
+                   [&](std::size_t i) { csg::populate_slice(data, bytes, i); });
 }
 
 }  // namespace kerf::lowering

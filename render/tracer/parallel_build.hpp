@@ -44,13 +44,11 @@ template <class T>
 void reserve_populated(std::vector<T>& v, std::size_t n) {
     v.reserve(n);
     const std::size_t bytes = n * sizeof(T);
-    constexpr std::size_t kSlice = std::size_t(64) << 10;
-    if (bytes < 16 * kSlice) return;
-    char* const p = reinterpret_cast<char*>(v.data());
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, (bytes + kSlice - 1) / kSlice, 4),
+    if (bytes < 16 * csg::kPopulateSlice) return;
+    void* const p = v.data();
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, csg::populate_slices(bytes), 4),
                       [&](const tbb::blocked_range<std::size_t>& r) {
-                          for (std::size_t i = r.begin(); i != r.end(); ++i)
-                              csg::populate_pages(p + i * kSlice, std::min(kSlice, bytes - i * kSlice));
+                          for (std::size_t i = r.begin(); i != r.end(); ++i) csg::populate_slice(p, bytes, i);
                       },
                       tbb::simple_partitioner());
 }
