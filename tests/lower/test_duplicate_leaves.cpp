@@ -94,3 +94,21 @@ TEST_CASE("leaves differing only in pattern frame are not duplicates, equal fram
               (cell(q - glm::dvec3(0.5, 0, 0)) ? 0 : 1));
     }
 }
+
+// A union whose list is one inner union's, spliced whole, keeps its leaves
+// without a second look (flat_tree.cpp, Frame::distinct); one that gains
+// anything beside it looks again, whichever side the copy is on.
+TEST_CASE("duplicates across nested unions are dropped, a spliced union is not looked at twice") {
+    const auto leaves_of = [](const char* text) {
+        auto f = std::make_shared<kerf::SourceFile>();
+        f->path = "nested.sdl";
+        f->text = text;
+        return kerf::lower_to_csg(kerf::evaluate_source(f).graph).leaves.size();
+    };
+    CHECK(leaves_of("union() { union() { sphere(1); sphere(2); } sphere(1); }") == 2);
+    CHECK(leaves_of("union() { sphere(1); union() { sphere(1); sphere(2); } }") == 2);
+    CHECK(leaves_of("union() { union() { sphere(1); sphere(2); } union() { sphere(2); sphere(3); } }") == 3);
+    CHECK(leaves_of("union() { union() { sphere(1); sphere(2); } translate([0, 0, 0]) sphere(2); }") == 2);
+    CHECK(leaves_of("color(\"red\") union() { union() { for (i = [0:2]) sphere(1 + i % 2); } }") == 2);
+    CHECK(leaves_of("union() { union() { for (i = [0:3]) sphere(1 + i % 2); } for (i = [0:3]) sphere(1 + i % 3); }") == 3);
+}
