@@ -11,6 +11,7 @@
 
 #include "cli/assemble.hpp"
 #include "cli/farm.hpp"
+#include "cli/heap_policy.hpp"
 #include "cli/measure.hpp"
 #include "cli/memory_cap.hpp"
 #include "cli/options.hpp"
@@ -101,6 +102,7 @@ int main(int argc, char** argv) {
         return kOk;
     }
     cap_memory_to_physical();
+    if (options.command != Command::Watch && options.command != Command::View) one_heap_for_one_shot();
     csg::set_texture_reader(render::read_texture);  // material(texture = ...) reads images while evaluating
     // -o -: a reader that goes away is a failed write (exit 3, "Broken
     // pipe"), not a signal.
