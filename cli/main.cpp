@@ -102,7 +102,10 @@ int main(int argc, char** argv) {
         return kOk;
     }
     cap_memory_to_physical();
-    if (options.command != Command::Watch && options.command != Command::View) one_heap_for_one_shot();
+    if (options.command != Command::Watch && options.command != Command::View) {
+        one_heap_for_one_shot();
+        options.eval.populate_ahead = true;  // safe on that heap (csg/populate_ahead.hpp)
+    }
     csg::set_texture_reader(render::read_texture);  // material(texture = ...) reads images while evaluating
     // -o -: a reader that goes away is a failed write (exit 3, "Broken
     // pipe"), not a signal.

@@ -253,6 +253,7 @@ Options parse_options(const std::vector<std::string>& args) {
         else throw UsageError("more than one scene given ('" + o.scene + "' and '" + a + "')");
     }
     if (o.scene.empty()) throw UsageError(cmd + " needs a scene file");
+    o.eval.threads = unsigned(o.render.threads);
     if (o.command == Command::Measure) {
         if (!image_flag.empty() || o.farm.any())
             throw UsageError("measure writes no image; " + (image_flag.empty() ? std::string("the farm options do") : image_flag) +

@@ -1,5 +1,6 @@
 #include "csg/huge_pages.hpp"
 
+#include <cerrno>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -45,17 +46,19 @@ void advise_huge_pages(void* data, std::size_t bytes) {
 #endif
 }
 
-void populate_pages(void* data, std::size_t bytes) {
+bool populate_pages(void* data, std::size_t bytes) {
 #if defined(__linux__)
     constexpr int kPopulateWrite = 23;  // MADV_POPULATE_WRITE (older headers lack the name)
     constexpr std::uintptr_t kPage = 4096;
     const auto begin = reinterpret_cast<std::uintptr_t>(data);
     const std::uintptr_t lo = begin & ~(kPage - 1);  // madvise takes whole pages
     const std::uintptr_t hi = (begin + bytes + kPage - 1) & ~(kPage - 1);
-    if (bytes > 0) madvise(reinterpret_cast<void*>(lo), hi - lo, kPopulateWrite);  // a hint: failure is fine
+    if (bytes > 0 && madvise(reinterpret_cast<void*>(lo), hi - lo, kPopulateWrite) != 0) return errno != EINVAL;
+    return true;
 #else
     (void)data;
     (void)bytes;
+    return false;
 #endif
 }
 

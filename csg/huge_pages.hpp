@@ -21,8 +21,9 @@ void advise_huge_pages(void* data, std::size_t bytes);
 // of a fault per 4 KiB page, callable from several threads on parts of one
 // block so that a big array's first touch is shared among them (on this
 // project's virtual machines a fresh page costs ~1.5-2 us). Contents are
-// kept: pages already there are left as they are. A hint: failure is fine.
-void populate_pages(void* data, std::size_t bytes);
+// kept: pages already there are left as they are. A hint: failure is fine;
+// false when the kernel does not know the advice (EINVAL: before 5.14).
+bool populate_pages(void* data, std::size_t bytes);
 
 // A big array is populated by several threads a slice at a time: slice i
 // of [data, data + bytes), for i < populate_slices(bytes). 64 KiB: 16

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "csg/huge_pages.hpp"
+#include "csg/populate_ahead.hpp"
 #include "grammar/source.hpp"
 #include "interpreter/scene_graph.hpp"
 
@@ -27,28 +28,64 @@ public:
     // Large scenes: once an array passes 16K entries it is reserved at the
     // size the primitive limit allows (address space only; pages are touched
     // as nodes arrive), so a million-primitive loop never copies the arena
-    // while it grows, and its pages are asked to be huge ones: a page fault
-    // per 4 KiB (46 nodes) was a third of evaluating 30,000 spheres in a
-    // loop (docs/performance.md, "The front end").
+    // while it grows (docs/performance.md, "The front end"), and a second
+    // thread faults its pages in a few MB ahead of its end (populate_ahead).
     std::size_t max_nodes = 0, max_matrices = 0;
-    template <class V>
-    static void grow(V& v, std::size_t max) {
-        if (v.size() == v.capacity() && v.size() >= 16384 && max > v.capacity()) {
-            // The whole reservation counts against RLIMIT_DATA (the memory
-            // cap): refused, the array grows as any vector does and only a
-            // scene that really needs the memory runs out of it.
-            try {
-                reserve_huge(v, max);
-            } catch (const std::bad_alloc&) {
-            }
+    csg::PopulateAhead populate_ahead;
+    csg::PopulateAhead::Watch nodes_ahead, refs_ahead, slots_ahead, offsets_ahead;
+
+    // Makes room for n more elements of v. When they do not fit, v moves:
+    // the page thread is stopped first if it watches v, since it must never
+    // touch the block v leaves (an array outgrows its reservation only past
+    // the primitive limit's cap, or below 16K entries, before it is watched).
+    template <class T>
+    void room(std::vector<T>& v, std::size_t n, std::size_t max, csg::PopulateAhead::Watch& watch) {
+        if (v.size() + n <= v.capacity()) return;
+        if (watch.slot >= 0) populate_ahead.stop();
+        if (reserve_cap(v, n, max)) populate_ahead.watch(watch, v);
+    }
+    void room(graph::Transforms& t, std::size_t max) {
+        const std::vector<std::uint32_t>& slots = t.slot_array();
+        const std::vector<glm::dvec3>& offsets = t.offset_array();
+        if (slots.size() < slots.capacity() && offsets.size() < offsets.capacity()) return;
+        if (slots_ahead.slot >= 0 || offsets_ahead.slot >= 0) populate_ahead.stop();
+        if (reserve_cap(t, 1, max)) {
+            populate_ahead.watch(slots_ahead, t.slot_array());
+            populate_ahead.watch(offsets_ahead, t.offset_array());
         }
+    }
+    // v reserved at max when it has 16K entries and the cap is larger; false
+    // when not. The whole reservation counts against RLIMIT_DATA (the memory
+    // cap): refused, the array grows as any vector does and only a scene
+    // that really needs the memory runs out of it.
+    template <class V>
+    static bool reserve_cap(V& v, std::size_t n, std::size_t max) {
+        if (v.size() < 16384 || v.size() + n > max) return false;
+        try {
+            reserve_huge(v, max);
+        } catch (const std::bad_alloc&) {
+            return false;
+        }
+        return true;
     }
     template <class T>
     static void reserve_huge(std::vector<T>& v, std::size_t n) { csg::reserve_huge(v, n); }
     static void reserve_huge(graph::Transforms& t, std::size_t n) { t.reserve_huge(n); }
+
+    // Every push to the node, child and transform arrays goes through the
+    // builder (room() before it, advance() after), so none moves one under
+    // the page thread.
     void add_matrix(const glm::dmat4& m) {
-        grow(graph.matrices, max_matrices);
+        room(graph.matrices, max_matrices);
         graph.matrices.push_back(m);
+        populate_ahead.advance(slots_ahead, graph.matrices.slot_array());
+        populate_ahead.advance(offsets_ahead, graph.matrices.offset_array());
+    }
+    void add_child_refs(const std::uint32_t* first, std::size_t n) {
+        room(graph.child_refs, n, max_nodes, refs_ahead);
+        if (n == 1) graph.child_refs.push_back(*first);  // a transform's one child: no range insert
+        else graph.child_refs.insert(graph.child_refs.end(), first, first + n);
+        populate_ahead.advance(refs_ahead, graph.child_refs);
     }
 
     // The OpenSCAD dialect's mixing rule (docs/spec.md §10): set, a child of
@@ -57,8 +94,9 @@ public:
     std::function<void(const SourceLoc&, const std::string&)> warn_mixed;
 
     std::uint32_t add(graph::Node&& n) {
-        grow(graph.nodes, max_nodes);
+        room(graph.nodes, 1, max_nodes, nodes_ahead);
         graph.nodes.push_back(std::move(n));
+        populate_ahead.advance(nodes_ahead, graph.nodes);
         return static_cast<std::uint32_t>(graph.nodes.size() - 1);
     }
     void push(std::uint32_t id) { pending.push_back(id); }
@@ -74,11 +112,7 @@ public:
         }
         const auto first_child = static_cast<std::uint32_t>(graph.child_refs.size());
         const auto child_count = static_cast<std::uint32_t>(pending.size() - mark);
-        grow(graph.child_refs, max_nodes);
-        if (child_count == 1) graph.child_refs.push_back(pending[mark]);  // a transform's one child: no range insert
-        else
-            graph.child_refs.insert(graph.child_refs.end(), pending.begin() + static_cast<std::ptrdiff_t>(mark),
-                                    pending.end());
+        add_child_refs(pending.data() + mark, child_count);
         pending.resize(mark);
         graph::Node& n = emplace(loc);
         n.kind = kind;
@@ -97,10 +131,13 @@ public:
         if (graph.nodes.size() == graph.nodes.capacity()) {  // the arena moves: loc may be a node's, so copied first
             graph::Node n;
             n.loc = loc;
-            grow(graph.nodes, max_nodes);
-            return graph.nodes.emplace_back(std::move(n));
+            room(graph.nodes, 1, max_nodes, nodes_ahead);
+            graph::Node& moved = graph.nodes.emplace_back(std::move(n));
+            populate_ahead.advance(nodes_ahead, graph.nodes);
+            return moved;
         }
         graph::Node& n = graph.nodes.emplace_back();
+        populate_ahead.advance(nodes_ahead, graph.nodes);
         n.loc = loc;
         return n;
     }

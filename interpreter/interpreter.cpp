@@ -12,6 +12,7 @@
 #include <functional>
 #include <utility>
 
+#include "csg/usable_cpus.hpp"
 #include "interpreter/evaluator.hpp"
 
 namespace kerf {
@@ -28,6 +29,7 @@ Evaluator::Evaluator(const EvalOptions& options)
     std::size_t prims = static_cast<std::size_t>(std::min<std::uint64_t>(options.limits.primitives, 1u << 24));
     out_.max_nodes = 3 * prims + 1024;
     out_.max_matrices = prims + 1024;
+    if (!options.populate_ahead || options.threads == 1 || csg::usable_cpus() == 1) out_.populate_ahead.disable();
     if (lenient_) out_.warn_mixed = [this](const SourceLoc& loc, const std::string& message) { warn(loc, message); };
 }
 
@@ -90,6 +92,7 @@ graph::SceneGraph Evaluator::run(ast::Program program) {
     } catch (const RunLimitError& e) {
         record_error(e);
     }
+    out_.populate_ahead.stop();  // the arena is written: the rest faults its few pages itself
     SourceLoc top{prog.file, 1, 1};
     if (!out_.graph.camera) viewport_camera(top);
     if (exact_curves_)

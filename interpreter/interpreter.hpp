@@ -78,6 +78,12 @@ struct EvalOptions {
     // lowering (docs/architecture.md, "Layers"); unset, such a projection is
     // an error.
     std::function<bool(const graph::SceneGraph&, graph::SceneGraph&)> resolve_geometry_ops;
+    // A second thread faults the node arena's pages in ahead of evaluation
+    // (csg/populate_ahead.hpp). Only where freed memory stays the process's
+    // heap (the CLI's one-shot commands, cli/heap_policy.hpp), and not with
+    // --threads 1 (`threads`: 0 is all cores) or on one usable CPU.
+    bool populate_ahead = false;
+    unsigned threads = 0;
 };
 
 // A -D value that does not parse, evaluate or name a top-level binding: a

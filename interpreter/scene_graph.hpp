@@ -82,6 +82,10 @@ public:
         csg::reserve_huge(offsets_, n);
         csg::reserve_huge(general_, n);
     }
+    // The arrays a translation's push_back grows: the interpreter has their
+    // pages faulted in ahead (interpreter/graph_builder.hpp).
+    const std::vector<std::uint32_t>& slot_array() const { return slots_; }
+    const std::vector<glm::dvec3>& offset_array() const { return offsets_; }
     glm::dmat4 operator[](std::size_t i) const {
         const std::uint32_t s = slots_[i];
         if (s & kGeneral) return general_[s & ~kGeneral];

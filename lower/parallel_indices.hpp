@@ -19,19 +19,10 @@
 #include <thread>
 #include <vector>
 
-#include <sched.h>
-
 #include "csg/huge_pages.hpp"
+#include "csg/usable_cpus.hpp"
 
 namespace kerf::lowering {
-
-// The CPUs this process may run on (its affinity mask), at least 1.
-inline unsigned usable_cpus() {
-    cpu_set_t set;
-    CPU_ZERO(&set);
-    if (sched_getaffinity(0, sizeof set, &set) == 0) return std::max(1, CPU_COUNT(&set));
-    return std::max(1u, std::thread::hardware_concurrency());
-}
 
 // `chunk`: how many indices a thread takes at a time. `threads`: how many
 // threads may work (the caller's among them; 0, or more than the hardware
@@ -43,7 +34,7 @@ void for_each_index(std::size_t n, std::size_t chunk, unsigned threads, Body&& b
     const std::size_t kChunk = std::max<std::size_t>(chunk, 1);
     // No more than this process may run at once (--threads may ask for
     // 1,024; taskset may allow fewer CPUs than the machine has).
-    const unsigned hardware = usable_cpus();
+    const unsigned hardware = csg::usable_cpus();
     threads = threads == 0 ? hardware : std::min(threads, hardware);
     threads = unsigned(std::min<std::size_t>(threads, (n + kChunk - 1) / kChunk));
     std::atomic<std::size_t> next{0};

@@ -31,7 +31,7 @@ void add_circle(ModuleCall& c, const DxfCircle& circle) {
     GraphBuilder& g = c.graph();
     const std::size_t mark = g.mark();
     add_flat(c, P::Cylinder, {0, 1, circle.r, circle.r});
-    g.graph.matrices.push_back(glm::translate(glm::dmat4(1), glm::dvec3(circle.centre, 0)));
+    g.add_matrix(glm::translate(glm::dmat4(1), glm::dvec3(circle.centre, 0)));
     g.wrap(mark, graph::NodeKind::Transform, static_cast<std::uint32_t>(g.graph.matrices.size() - 1), c.st.loc);
 }
 
@@ -47,7 +47,7 @@ void add_segment(ModuleCall& c, const DxfSegment& s) {
     m[0] = glm::dvec4(s.normal.y, -s.normal.x, 0, 0);  // (x, normal) right-handed
     m[1] = glm::dvec4(s.normal, 0, 0);
     m[3] = glm::dvec4((s.p + s.q) / 2.0, 0, 1);
-    g.graph.matrices.push_back(m);
+    g.add_matrix(m);
     g.wrap(g.mark() - 1, graph::NodeKind::Transform, static_cast<std::uint32_t>(g.graph.matrices.size() - 1), c.st.loc);
     g.make_node(mark, graph::NodeKind::Intersection, c.st.loc);
 }
@@ -71,7 +71,7 @@ void add_disc(ModuleCall& c, const Map2& a) {
     m[0] = glm::dvec4(a[0][0], a[0][1], 0, 0);
     m[1] = glm::dvec4(flip * a[1][0], flip * a[1][1], 0, 0);
     m[3] = glm::dvec4(a[2][0], a[2][1], 0, 1);
-    g.graph.matrices.push_back(m);
+    g.add_matrix(m);
     g.wrap(mark, graph::NodeKind::Transform, static_cast<std::uint32_t>(g.graph.matrices.size() - 1), c.st.loc);
 }
 

@@ -190,7 +190,7 @@ std::uint32_t op_node(GraphBuilder& g, graph::NodeKind kind, const std::vector<s
     n.child_count = std::uint32_t(children.size());
     n.loc = loc;
     n.flat = true;
-    g.graph.child_refs.insert(g.graph.child_refs.end(), children.begin(), children.end());
+    g.add_child_refs(children.data(), children.size());
     return g.add(std::move(n));
 }
 

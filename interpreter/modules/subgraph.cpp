@@ -74,11 +74,14 @@ std::uint32_t append_graph(GraphBuilder& g, graph::SceneGraph&& sub) {
     const auto nodes = std::uint32_t(d.nodes.size()), refs = std::uint32_t(d.child_refs.size()),
                matrices = std::uint32_t(d.matrices.size()), materials = std::uint32_t(d.materials.size()),
                meshes = std::uint32_t(d.meshes.size()), polygons = std::uint32_t(d.polygons.size());
-    for (std::size_t i = 0; i < sub.matrices.size(); ++i) d.matrices.push_back(sub.matrices[i]);
+    for (std::size_t i = 0; i < sub.matrices.size(); ++i) g.add_matrix(sub.matrices[i]);
     d.materials.insert(d.materials.end(), sub.materials.begin(), sub.materials.end());
     for (graph::PolygonMesh& m : sub.meshes) d.meshes.push_back(std::move(m));
     for (csg::Polygon2& p : sub.polygons) d.polygons.push_back(std::move(p));
-    for (std::uint32_t c : sub.child_refs) d.child_refs.push_back(c + nodes);
+    for (std::uint32_t c : sub.child_refs) {
+        const std::uint32_t ref = c + nodes;
+        g.add_child_refs(&ref, 1);
+    }
     for (graph::Node n : sub.nodes) {
         n.first_child += refs;
         if (n.kind == NK::Transform) n.index += matrices;

@@ -125,6 +125,38 @@ TEST_CASE("list size and primitive limits", "[limits]") {
     CHECK(error_of("for (i = [1:50]) sphere();", prims) == "no error");
 }
 
+// Past 16K entries the node arena is reserved at its cap and a second
+// thread faults its pages in ahead of the writer (csg/populate_ahead.hpp). An
+// error then is the same located error, whether the run goes on to its end
+// (where the thread is stopped) or ends at its 20th error, out of the
+// middle of evaluation: then the thread is stopped and joined as the
+// evaluator unwinds (a std::thread left joinable would end the process).
+TEST_CASE("an error after the node arena passed 16K entries, with its pages faulted ahead", "[limits]") {
+    kerf::EvalOptions two;
+    two.threads = 2;
+    two.populate_ahead = true;
+    for (int run = 0; run < 3; ++run) {
+        CHECK(error_of("for (i = [0:39999]) translate([i, 0, 0]) sphere(1);\nassert(false);", two) ==
+              "test.sdl:2:1: error: assertion failed");
+        CHECK(error_of("for (i = [0:39999]) translate([i, 0, 0]) { sphere(1); if (i == 30000) nosuch(); }", two) ==
+              "test.sdl:1:71: error: unknown module 'nosuch'");
+    }
+    std::string twenty = "for (i = [0:39999]) translate([i, 0, 0]) sphere(1);\n";
+    for (int i = 0; i < 20; ++i) twenty += "nosuch();\n";
+    CHECK(error_of(twenty, two) == "test.sdl:2:1: error: unknown module 'nosuch'");
+    CHECK(error_of("for (i = [0:39999]) translate([i, 0, 0]) { sphere(1); if (i >= 30000) nosuch(); }", two) ==
+          "test.sdl:1:71: error: unknown module 'nosuch'");
+    kerf::EvalOptions one;
+    one.threads = 1;
+    one.populate_ahead = true;
+    CHECK(error_of("for (i = [0:39999]) translate([i, 0, 0]) sphere(1);\nassert(false);", one) ==
+          "test.sdl:2:1: error: assertion failed");
+    auto r = kerf::test::run("for (i = [0:39999]) translate([i, 0, 0]) sphere(1);", two);
+    CHECK(r.graph.nodes.size() == 80002);
+    CHECK(r.graph.matrices.size() == 40000);
+    CHECK(r.graph.child_refs.size() == 80001);
+}
+
 // CPU time (the machine may be shared); hidden: run with "[.perf]".
 TEST_CASE("a million primitives evaluate quickly", "[limits][.perf]") {
     std::clock_t c0 = std::clock();
