@@ -3,8 +3,6 @@
 #include "lower/lower.hpp"
 
 #include <algorithm>
-#include <system_error>
-#include <thread>
 
 #include "csg/ghosts.hpp"
 
@@ -55,35 +53,12 @@ void apply_scene_statements(const graph::SceneGraph& g, const SourceLoc& top, co
     s.fog = g.fog.value_or(csg::Fog{});
 }
 
-// The node arrays: what only build_flat_tree reads. Freed on a thread of
-// their own while the emitter runs (each node lets go of its source file's
-// shared reference, ~1.8 ms at 10^5 nodes), joined before the scene is
-// returned; in place with --threads 1 or when no thread can be had.
-class NodeRelease {
-public:
-    void start(graph::SceneGraph& g, unsigned threads) {
-        Nodes doomed{std::move(g.nodes), std::move(g.child_refs), std::move(g.matrices)};
-        g.nodes = {};
-        g.child_refs = {};
-        g.matrices = graph::Transforms{};
-        if (threads == 1) return;
-        try {
-            thread_ = std::thread([d = std::move(doomed)]() mutable { d = Nodes{}; });
-        } catch (const std::system_error&) {  // the lambda, destroyed here, frees them
-        }
-    }
-    ~NodeRelease() {
-        if (thread_.joinable()) thread_.join();
-    }
-
-private:
-    struct Nodes {
-        std::vector<graph::Node> nodes;
-        std::vector<std::uint32_t> child_refs;
-        graph::Transforms matrices;
-    };
-    std::thread thread_;
-};
+// The node arrays: what only build_flat_tree reads.
+void release_nodes(graph::SceneGraph& g) {
+    std::vector<graph::Node>().swap(g.nodes);
+    std::vector<std::uint32_t>().swap(g.child_refs);
+    g.matrices = graph::Transforms{};
+}
 
 // `owned`: the input when the caller gave it up; its nodes are freed as
 // soon as the flat tree holds what they said, so the graph and the scene's
@@ -94,8 +69,7 @@ csg::Scene lower(const graph::SceneGraph& input, graph::SceneGraph* owned, const
     const SourceLoc top = input.nodes.empty() ? SourceLoc{} : input.nodes[input.root].loc;
     graph::SceneGraph resolved;  // hull(), minkowski(), resize() replaced, when there are any
     const bool ops = resolve_geometry_ops(input, resolved);
-    NodeRelease release, release_resolved;  // (joined on the way out)
-    if (ops && owned) release.start(*owned, options.threads);
+    if (ops && owned) release_nodes(*owned);
     const graph::SceneGraph& graph = ops ? resolved : input;
     csg::Scene scene;
     const lowering::FlatTree tree = lowering::build_flat_tree(graph, scene.leaves, csg::kNone, options.threads);
@@ -113,8 +87,8 @@ csg::Scene lower(const graph::SceneGraph& input, graph::SceneGraph* owned, const
             Ghost& g = ghosts.emplace_back(Ghost{kind, csg::Scene{}, {}});
             g.tree = lowering::build_flat_tree(graph, g.scene.leaves, root, options.threads);
         }
-    if (ops) release_resolved.start(resolved, options.threads);
-    else if (owned) release.start(*owned, options.threads);
+    if (ops) release_nodes(resolved);
+    else if (owned) release_nodes(*owned);
     lowering::emit_flat_tree(graph, tree, scene, options.threads);
     for (auto& [kind, ghost, ghost_tree] : ghosts) {
         lowering::emit_flat_tree(graph, ghost_tree, ghost, options.threads);

@@ -40,23 +40,18 @@ TEST_CASE("a consumed graph lowers to the same scene and is emptied") {
         // nothing at all
         "",
     };
-    // threads 2: the nodes are freed on a thread of their own while the
-    // emitter runs (lower.cpp's NodeRelease).
-    for (unsigned threads : {1u, 2u})
-        for (const char* text : scripts) {
-            INFO(text << "threads " << threads);
-            LowerOptions options;
-            options.threads = threads;
-            const EvalResult kept = test::evaluated(text);
-            EvalResult given = test::evaluated(text);
-            const std::string want = csg::dump_scene(lower_to_csg(kept.graph, options));
-            const std::string got = csg::dump_scene(lower_to_csg(std::move(given.graph), options));
-            CHECK(got == want);
-            CHECK(given.graph.nodes.empty());
-            CHECK(given.graph.child_refs.empty());
-            CHECK(given.graph.matrices.empty());
-            CHECK(given.graph.materials.size() == kept.graph.materials.size());
-        }
+    for (const char* text : scripts) {
+        INFO(text);
+        const EvalResult kept = test::evaluated(text);
+        EvalResult given = test::evaluated(text);
+        const std::string want = csg::dump_scene(lower_to_csg(kept.graph));
+        const std::string got = csg::dump_scene(lower_to_csg(std::move(given.graph)));
+        CHECK(got == want);
+        CHECK(given.graph.nodes.empty());
+        CHECK(given.graph.child_refs.empty());
+        CHECK(given.graph.matrices.empty());
+        CHECK(given.graph.materials.size() == kept.graph.materials.size());
+    }
 }
 
 TEST_CASE("a consumed graph's errors point where the kept graph's do") {
@@ -67,20 +62,17 @@ TEST_CASE("a consumed graph's errors point where the kept graph's do") {
         "module m(n) { if (n > 0) difference() { sphere(2); difference() { sphere(2); difference() { sphere(2);\n"
         "difference() { sphere(2); difference() { sphere(2); m(n - 1); } } } } } }\nm(900);\n",
     };
-    for (unsigned threads : {1u, 2u})
-        for (const char* text : scripts) {
-            INFO(text << "threads " << threads);
-            LowerOptions options;
-            options.threads = threads;
-            const std::string want = error_text([&] {
-                const EvalResult kept = test::evaluated(text);
-                lower_to_csg(kept.graph, options);
-            });
-            const std::string got = error_text([&] {
-                EvalResult given = test::evaluated(text);
-                lower_to_csg(std::move(given.graph), options);
-            });
-            CHECK(want.find("error:") != std::string::npos);
-            CHECK(got == want);
-        }
+    for (const char* text : scripts) {
+        INFO(text);
+        const std::string want = error_text([&] {
+            const EvalResult kept = test::evaluated(text);
+            lower_to_csg(kept.graph);
+        });
+        const std::string got = error_text([&] {
+            EvalResult given = test::evaluated(text);
+            lower_to_csg(std::move(given.graph));
+        });
+        CHECK(want.find("error:") != std::string::npos);
+        CHECK(got == want);
+    }
 }
