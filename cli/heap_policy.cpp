@@ -13,13 +13,14 @@ namespace kerf::cli {
 // (the tracer's, lowering's and the encoder's work in preallocated slots),
 // so its lock is not contended. RLIMIT_DATA (memory_cap.cpp) bounds the
 // heap as it bounded the mappings, and out-of-memory is still bad_alloc.
-// Never trimmed either: the interpreter's page thread (csg/populate_ahead.hpp)
-// relies on a freed block staying mapped memory of this process.
+// A freed block goes back to the heap, not to the system (only the heap's
+// top is trimmed): the interpreter's page thread (csg/populate_ahead.hpp)
+// runs only here. Not trimming at all cost the 10^6-sphere render 44 MB of
+// peak (docs/performance.md).
 void one_heap_for_one_shot() {
 #if defined(__GLIBC__)
-    mallopt(M_MMAP_MAX, 0);         // no block on a mapping of its own
-    mallopt(M_ARENA_MAX, 1);        // every thread on the main heap
-    mallopt(M_TRIM_THRESHOLD, -1);  // never shrunk: a freed block stays the process's memory
+    mallopt(M_MMAP_MAX, 0);   // no block on a mapping of its own
+    mallopt(M_ARENA_MAX, 1);  // every thread on the main heap
 #endif
 }
 

@@ -10,9 +10,9 @@ namespace kerf::cli {
 // which free the interpreter's graph and then allocate the tracer's tables
 // and the image: those reuse the graph's pages instead of faulting in fresh
 // ones. Not for `watch` and `view`, which live on between renders and
-// should give memory back. Call before any thread starts. Freed memory
-// stays the process's until it exits: what makes the interpreter's page
-// thread safe (EvalOptions::populate_ahead).
+// should give memory back. Call before any thread starts. A freed block
+// returns to this heap, not to the system: where the interpreter's page
+// thread may run (EvalOptions::populate_ahead).
 void one_heap_for_one_shot();
 
 }  // namespace kerf::cli

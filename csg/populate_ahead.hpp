@@ -11,10 +11,11 @@
 //
 // The thread must never act on a block its array has left. The writer
 // stops it (stop(): joined, for good) before any push that would move a
-// watched array; and the interpreter runs it only where freed memory stays
-// the process's heap (cli/heap_policy.hpp: no block on a mapping of its
-// own, no trimming), so even a push outside that rule could at worst
-// populate a free block of kerf's own heap, which changes no byte.
+// watched array; and the interpreter runs it only where a freed block goes
+// back to the process's heap rather than to the system (cli/heap_policy.hpp:
+// no block on a mapping of its own), so even a push outside that rule would
+// at worst populate a free block of kerf's own heap, which changes no byte
+// (or, on the heap's trimmed top, fail with ENOMEM).
 #pragma once
 #include <array>
 #include <atomic>

@@ -79,8 +79,8 @@ struct EvalOptions {
     // an error.
     std::function<bool(const graph::SceneGraph&, graph::SceneGraph&)> resolve_geometry_ops;
     // A second thread faults the node arena's pages in ahead of evaluation
-    // (csg/populate_ahead.hpp). Only where freed memory stays the process's
-    // heap (the CLI's one-shot commands, cli/heap_policy.hpp), and not with
+    // (csg/populate_ahead.hpp). Only where a freed block returns to the
+    // process's heap (the CLI's one-shot commands, cli/heap_policy.hpp), not with
     // --threads 1 (`threads`: 0 is all cores) or on one usable CPU.
     bool populate_ahead = false;
     unsigned threads = 0;
