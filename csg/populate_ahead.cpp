@@ -41,6 +41,7 @@ void PopulateAhead::add(Watch& w, const void* data, std::size_t used, std::size_
 void PopulateAhead::report(Watch& w, const void* data, std::size_t used, std::size_t elem) {
     Slot& s = slots_[static_cast<std::size_t>(w.slot)];
     if (data != w.data) {  // grew past its cap and moved: the old block is not ours any more
+        if (thread_.joinable()) ++moved_under_thread_;  // the writer should have stopped the thread first
         s.used.store(SIZE_MAX, std::memory_order_relaxed);
         w.next = SIZE_MAX;
         return;
@@ -61,8 +62,13 @@ void PopulateAhead::stop() {
 }
 
 void PopulateAhead::run() {
-    while (!stop_.load(std::memory_order_relaxed)) {
+    for (;;) {
         const std::uint32_t seen = epoch_.load(std::memory_order_acquire);
+        // Read after `seen`: a stop() whose bump `seen` already holds is
+        // seen here (its release, this acquire), so the wait below cannot
+        // sleep through it (read before, its notify could come and go
+        // between the two loads and the wait would never end).
+        if (stop_.load(std::memory_order_relaxed)) return;
         bool worked = false;
         const int n = count_.load(std::memory_order_acquire);
         for (int i = 0; i < n && !stop_.load(std::memory_order_relaxed); ++i) {

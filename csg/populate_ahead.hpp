@@ -55,13 +55,17 @@ public:
     void advance(Watch& w, const std::vector<T>& v) {
         if (v.size() >= w.next) report(w, v.data(), v.size() * sizeof(T), sizeof(T));
     }
-    // Off (--threads 1: one thread asked for), before the first watch().
-    void disable() { enabled_ = false; }
+    // Off until enabled, before the first watch(): only where a freed block
+    // returns to the process's heap (see above), and not with --threads 1.
+    void enable() { enabled_ = true; }
     // Stops and joins the thread, which no later watch() starts again (the
     // end of evaluation, its error, or a watched array about to move).
     void stop();
-    // Whether the thread is running (for the tests).
+    // For the tests: whether the thread is running, and how many watched
+    // arrays the writer found moved while it still ran (never, when every
+    // move is preceded by stop()).
     bool running() const { return thread_.joinable(); }
+    int moved_under_thread() const { return moved_under_thread_; }
 
 private:
     static constexpr int kSlots = 8;
@@ -76,7 +80,8 @@ private:
     void report(Watch& w, const void* data, std::size_t used, std::size_t elem);
     void run();
 
-    bool enabled_ = true;
+    bool enabled_ = false;
+    int moved_under_thread_ = 0;
     std::array<Slot, kSlots> slots_;
     std::atomic<int> count_{0};
     std::atomic<std::uint32_t> epoch_{0};  // bumped at each report: the thread waits on it

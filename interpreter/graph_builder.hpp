@@ -81,6 +81,13 @@ public:
         populate_ahead.advance(slots_ahead, graph.matrices.slot_array());
         populate_ahead.advance(offsets_ahead, graph.matrices.offset_array());
     }
+    // Replaces transform i (linear_extrude's taper): a general matrix may
+    // become a translation, whose offset is appended to a watched array.
+    void set_matrix(std::size_t i, const glm::dmat4& m) {
+        room(graph.matrices, max_matrices);
+        graph.matrices.set(i, m);
+        populate_ahead.advance(offsets_ahead, graph.matrices.offset_array());
+    }
     void add_child_refs(const std::uint32_t* first, std::size_t n) {
         room(graph.child_refs, n, max_nodes, refs_ahead);
         if (n == 1) graph.child_refs.push_back(*first);  // a transform's one child: no range insert

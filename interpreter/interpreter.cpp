@@ -29,7 +29,7 @@ Evaluator::Evaluator(const EvalOptions& options)
     std::size_t prims = static_cast<std::size_t>(std::min<std::uint64_t>(options.limits.primitives, 1u << 24));
     out_.max_nodes = 3 * prims + 1024;
     out_.max_matrices = prims + 1024;
-    if (!options.populate_ahead || options.threads == 1 || csg::usable_cpus() == 1) out_.populate_ahead.disable();
+    if (options.populate_ahead && options.threads != 1 && csg::usable_cpus() > 1) out_.populate_ahead.enable();
     if (lenient_) out_.warn_mixed = [this](const SourceLoc& loc, const std::string& message) { warn(loc, message); };
 }
 

@@ -110,7 +110,8 @@ void polygon(ModuleCall& c) {
 // shear and every leaf its tapered form: a circle a frustum, a polygon a
 // tapered prism, a square a tapered prism of its four corners. Rewrites
 // the subtree in place (its nodes belong to this extrusion alone).
-void taper(graph::SceneGraph& g, std::uint32_t root, double s) {
+void taper(GraphBuilder& b, std::uint32_t root, double s) {
+    graph::SceneGraph& g = b.graph;
     std::vector<std::uint32_t> todo{root};
     while (!todo.empty()) {
         graph::Node& n = g.nodes[todo.back()];
@@ -142,7 +143,7 @@ void taper(graph::SceneGraph& g, std::uint32_t root, double s) {
             glm::dmat4 m = g.matrices[n.index];
             m[2][0] = (s - 1) * m[3][0];
             m[2][1] = (s - 1) * m[3][1];
-            g.matrices.set(n.index, m);
+            b.set_matrix(n.index, m);
         }
         for (std::uint32_t k = 0; k < n.child_count; ++k) todo.push_back(g.child_refs[n.first_child + k]);
     }
@@ -232,7 +233,7 @@ void linear_extrude(ModuleCall& c) {
         for (std::uint32_t id : shapes) sweep_subtree(c, id, {top.x, top.y, twist * std::numbers::pi / 180});
         if (g.mark() == mark) return;
     } else if (top.x != 1) {
-        for (std::size_t i = mark; i < g.pending.size(); ++i) taper(g.graph, g.pending[i], top.x);
+        for (std::size_t i = mark; i < g.pending.size(); ++i) taper(g, g.pending[i], top.x);
     }
     // The unit slab to its place: the top section moved by h·v/|v|.
     const glm::dvec3 up = h / vlen * dir;

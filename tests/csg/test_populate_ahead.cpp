@@ -46,6 +46,7 @@ TEST_CASE("PopulateAhead populates a bounded distance past the reported end, and
     const std::size_t bytes = v.capacity() * sizeof(std::uint64_t);
     v.push_back(1);
     PopulateAhead ahead;
+    ahead.enable();
     PopulateAhead::Watch w;
     ahead.watch(w, v);
     CHECK(w.slot == 0);
@@ -68,16 +69,16 @@ TEST_CASE("PopulateAhead populates a bounded distance past the reported end, and
     CHECK(beyond == 0);
 }
 
-TEST_CASE("PopulateAhead disabled, or asked for a small array, starts nothing", "[memory]") {
+TEST_CASE("PopulateAhead not enabled, or asked for a small array, starts nothing", "[memory]") {
     std::vector<std::uint64_t> v(10);
     PopulateAhead ahead;
+    ahead.enable();
     PopulateAhead::Watch w;
     ahead.watch(w, v);  // no room past the end worth a thread
     CHECK(w.slot == -1);
     std::vector<std::uint64_t> big;
     big.reserve(std::size_t(1) << 20);
-    PopulateAhead off;
-    off.disable();
+    PopulateAhead off;  // off until enabled
     off.watch(w, big);
     CHECK(w.slot == -1);
     off.advance(w, big);  // a no-op, not a crash

@@ -2,7 +2,9 @@
 // their pages in ahead (csg/populate_ahead.hpp). The thread must never touch
 // a block an array has left: every push goes through the builder, which
 // stops the thread before a push that would move a watched array (past its
-// reservation's cap, or a wide insert bigger than the room left).
+// reservation's cap, or a wide insert bigger than the room left). A move
+// under a running thread is counted at the writer's next report
+// (PopulateAhead::moved_under_thread), so each case pushes past one.
 #include <catch2/catch.hpp>
 
 #include <vector>
@@ -23,6 +25,7 @@ void add_nodes(GraphBuilder& b, std::size_t n) {
 
 TEST_CASE("the page thread stops before a watched node array moves past its cap", "[memory]") {
     GraphBuilder b;
+    b.populate_ahead.enable();
     b.max_nodes = 60000;
     add_nodes(b, 16384);
     CHECK_FALSE(b.populate_ahead.running());  // not yet reserved
@@ -37,11 +40,13 @@ TEST_CASE("the page thread stops before a watched node array moves past its cap"
     CHECK_FALSE(b.populate_ahead.running());
     add_nodes(b, 100000);  // and is not started again
     CHECK_FALSE(b.populate_ahead.running());
+    CHECK(b.populate_ahead.moved_under_thread() == 0);
     CHECK(b.graph.nodes.size() == 160001);
 }
 
 TEST_CASE("the page thread stops before a wide child insert outgrows the room left", "[memory]") {
     GraphBuilder b;
+    b.populate_ahead.enable();
     b.max_nodes = 60000;
     std::vector<std::uint32_t> ids(16385, 7);
     b.add_child_refs(ids.data(), 16384);
@@ -52,11 +57,14 @@ TEST_CASE("the page thread stops before a wide child insert outgrows the room le
     CHECK(b.populate_ahead.running());
     b.add_child_refs(ids.data(), 2);  // two past the room: moves, the thread stopped first
     CHECK_FALSE(b.populate_ahead.running());
-    CHECK(b.graph.child_refs.size() == 60002);
+    b.add_child_refs(ids.data(), 16384);  // past the next report
+    CHECK(b.populate_ahead.moved_under_thread() == 0);
+    CHECK(b.graph.child_refs.size() == 76386);
 }
 
 TEST_CASE("the page thread stops before the transforms move past their cap", "[memory]") {
     GraphBuilder b;
+    b.populate_ahead.enable();
     b.max_matrices = 30000;
     const glm::dmat4 shift = glm::translate(glm::dmat4(1), glm::dvec3(1, 2, 3));
     for (int i = 0; i < 16385; ++i) b.add_matrix(shift);
@@ -66,6 +74,8 @@ TEST_CASE("the page thread stops before the transforms move past their cap", "[m
     CHECK(b.populate_ahead.running());
     b.add_matrix(shift);
     CHECK_FALSE(b.populate_ahead.running());
-    CHECK(b.graph.matrices.size() == 30001);
+    for (int i = 0; i < 8192; ++i) b.add_matrix(shift);  // past the next report
+    CHECK(b.populate_ahead.moved_under_thread() == 0);
+    CHECK(b.graph.matrices.size() == 38193);
     CHECK(b.graph.matrices[30000] == shift);
 }
