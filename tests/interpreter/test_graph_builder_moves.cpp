@@ -17,8 +17,24 @@ using kerf::eval::GraphBuilder;
 
 namespace {
 
-void add_nodes(GraphBuilder& b, std::size_t n) {
-    for (std::size_t i = 0; i < n; ++i) b.add(kerf::graph::Node{});
+// Pushes `push(n)` n elements at a time: to 16K + 1 (the array reserved at
+// `cap` and watched), to the cap (still watched), past it by `over` (the
+// array moves: the thread was stopped first), then past the next report,
+// where a move under a running thread would be counted.
+template <class Push, class Capacity>
+void past_the_cap(GraphBuilder& b, std::size_t cap, std::size_t over, Push&& push, Capacity&& capacity) {
+    push(16384);
+    CHECK_FALSE(b.populate_ahead.running());  // not yet reserved
+    push(1);
+    REQUIRE(capacity() == cap);
+    CHECK(b.populate_ahead.running());
+    push(cap - 16385);  // exactly fills it
+    CHECK(b.populate_ahead.running());
+    push(over);
+    CHECK_FALSE(b.populate_ahead.running());
+    push(16384);  // past the next report; the thread is not started again
+    CHECK_FALSE(b.populate_ahead.running());
+    CHECK(b.populate_ahead.moved_under_thread() == 0);
 }
 
 }  // namespace
@@ -27,39 +43,21 @@ TEST_CASE("the page thread stops before a watched node array moves past its cap"
     GraphBuilder b;
     b.populate_ahead.enable();
     b.max_nodes = 60000;
-    add_nodes(b, 16384);
-    CHECK_FALSE(b.populate_ahead.running());  // not yet reserved
-    add_nodes(b, 1);                          // reserved at the cap and watched
-    CHECK(b.graph.nodes.capacity() == 60000);
-    CHECK(b.populate_ahead.running());
-    add_nodes(b, 60000 - b.graph.nodes.size());
-    const void* block = b.graph.nodes.data();
-    CHECK(b.populate_ahead.running());  // full, not moved
-    add_nodes(b, 1);                    // moves: the thread was stopped first
-    CHECK(b.graph.nodes.data() != block);
-    CHECK_FALSE(b.populate_ahead.running());
-    add_nodes(b, 100000);  // and is not started again
-    CHECK_FALSE(b.populate_ahead.running());
-    CHECK(b.populate_ahead.moved_under_thread() == 0);
-    CHECK(b.graph.nodes.size() == 160001);
+    past_the_cap(
+        b, 60000, 1, [&](std::size_t n) { for (std::size_t i = 0; i < n; ++i) b.add(kerf::graph::Node{}); },
+        [&] { return b.graph.nodes.capacity(); });
+    CHECK(b.graph.nodes.size() == 60000 + 1 + 16384);
 }
 
 TEST_CASE("the page thread stops before a wide child insert outgrows the room left", "[memory]") {
     GraphBuilder b;
     b.populate_ahead.enable();
     b.max_nodes = 60000;
-    std::vector<std::uint32_t> ids(16385, 7);
-    b.add_child_refs(ids.data(), 16384);
-    b.add_child_refs(ids.data(), 1);  // reserved at the cap and watched
-    REQUIRE(b.graph.child_refs.capacity() == 60000);
-    CHECK(b.populate_ahead.running());
-    b.add_child_refs(ids.data(), 60000 - 16385);  // exactly fills it
-    CHECK(b.populate_ahead.running());
-    b.add_child_refs(ids.data(), 2);  // two past the room: moves, the thread stopped first
-    CHECK_FALSE(b.populate_ahead.running());
-    b.add_child_refs(ids.data(), 16384);  // past the next report
-    CHECK(b.populate_ahead.moved_under_thread() == 0);
-    CHECK(b.graph.child_refs.size() == 76386);
+    const std::vector<std::uint32_t> ids(60000, 7);
+    past_the_cap(
+        b, 60000, 2, [&](std::size_t n) { b.add_child_refs(ids.data(), n); },  // two past the room at once
+        [&] { return b.graph.child_refs.capacity(); });
+    CHECK(b.graph.child_refs.size() == 60000 + 2 + 16384);
 }
 
 TEST_CASE("the page thread stops before the transforms move past their cap", "[memory]") {
@@ -67,15 +65,9 @@ TEST_CASE("the page thread stops before the transforms move past their cap", "[m
     b.populate_ahead.enable();
     b.max_matrices = 30000;
     const glm::dmat4 shift = glm::translate(glm::dmat4(1), glm::dvec3(1, 2, 3));
-    for (int i = 0; i < 16385; ++i) b.add_matrix(shift);
-    REQUIRE(b.graph.matrices.capacity() == 30000);
-    CHECK(b.populate_ahead.running());
-    for (int i = 16385; i < 30000; ++i) b.add_matrix(shift);
-    CHECK(b.populate_ahead.running());
-    b.add_matrix(shift);
-    CHECK_FALSE(b.populate_ahead.running());
-    for (int i = 0; i < 8192; ++i) b.add_matrix(shift);  // past the next report
-    CHECK(b.populate_ahead.moved_under_thread() == 0);
-    CHECK(b.graph.matrices.size() == 38193);
+    past_the_cap(
+        b, 30000, 1, [&](std::size_t n) { for (std::size_t i = 0; i < n; ++i) b.add_matrix(shift); },
+        [&] { return b.graph.matrices.capacity(); });
+    CHECK(b.graph.matrices.size() == 30000 + 1 + 16384);
     CHECK(b.graph.matrices[30000] == shift);
 }
