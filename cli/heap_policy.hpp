@@ -4,9 +4,10 @@
 
 namespace kerf::cli {
 
-// Every allocation from one heap that keeps what is freed: big blocks are
+// Every allocation from one heap that reuses what is freed: big blocks are
 // not mapped and unmapped on their own, and threads do not get arenas of
-// their own. For `kerf render` (one image), `check`, `dump` and `measure`,
+// their own. For every command but `watch` and `view` (`render`, also the
+// farm's frames one after another, `check`, `dump`, `measure`, `assemble`),
 // which free the interpreter's graph and then allocate the tracer's tables
 // and the image: those reuse the graph's pages instead of faulting in fresh
 // ones. Not for `watch` and `view`, which live on between renders and

@@ -84,7 +84,8 @@ public:
     // Replaces transform i (linear_extrude's taper): a general matrix may
     // become a translation, whose offset is appended to a watched array.
     void set_matrix(std::size_t i, const glm::dmat4& m) {
-        room(graph.matrices, max_matrices);
+        const std::vector<glm::dvec3>& offsets = graph.matrices.offset_array();
+        if (offsets.size() == offsets.capacity() && offsets_ahead.slot >= 0) populate_ahead.stop();
         graph.matrices.set(i, m);
         populate_ahead.advance(offsets_ahead, graph.matrices.offset_array());
     }

@@ -79,8 +79,10 @@ struct EvalOptions {
     // an error.
     std::function<bool(const graph::SceneGraph&, graph::SceneGraph&)> resolve_geometry_ops;
     // A second thread faults the node arena's pages in ahead of evaluation
-    // (csg/populate_ahead.hpp). Only where a freed block returns to the
-    // process's heap (the CLI's one-shot commands, cli/heap_policy.hpp), not with
+    // (csg/populate_ahead.hpp); the builder stops it before any watched
+    // array moves, and, as a second line, the CLI sets this only where a
+    // freed block returns to the process's heap (cli/heap_policy.hpp; the
+    // tests rely on the stop alone). Not with
     // --threads 1 (`threads`: 0 is all cores) or on one usable CPU.
     bool populate_ahead = false;
     unsigned threads = 0;

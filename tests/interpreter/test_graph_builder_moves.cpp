@@ -71,3 +71,32 @@ TEST_CASE("the page thread stops before the transforms move past their cap", "[m
     CHECK(b.graph.matrices.size() == 30000 + 1 + 16384);
     CHECK(b.graph.matrices[30000] == shift);
 }
+
+// linear_extrude's taper replaces transforms in place (set_matrix); a
+// general matrix turned into a translation appends its offset to a
+// watched array, which must not move under the thread either.
+TEST_CASE("the page thread stops before a replaced transform's offset outgrows the room left", "[memory]") {
+    GraphBuilder b;
+    b.populate_ahead.enable();
+    b.max_matrices = 30000;
+    const glm::dmat4 shift = glm::translate(glm::dmat4(1), glm::dvec3(1, 2, 3));
+    const glm::dmat4 turn = glm::rotate(glm::dmat4(1), 0.5, glm::dvec3(0, 0, 1));
+    for (int i = 0; i < 16385; ++i) b.add_matrix(shift);  // reserved at the cap and watched
+    for (int i = 16385; i < 30000; ++i) b.add_matrix(turn);
+    REQUIRE(b.graph.matrices.offset_array().capacity() == 30000);
+    CHECK(b.populate_ahead.running());
+    for (std::size_t i = 16385; i < 30000; ++i) b.set_matrix(i, shift);  // the offsets exactly full
+    REQUIRE(b.graph.matrices.offset_array().size() == 30000);
+    CHECK(b.populate_ahead.running());
+    // Back and forth: each return to a translation appends an offset; the
+    // first moves the array (the thread stopped first), the rest pass the
+    // next report.
+    for (int k = 0; k < 4096; ++k) {
+        b.set_matrix(7, turn);
+        b.set_matrix(7, shift);
+    }
+    CHECK_FALSE(b.populate_ahead.running());
+    CHECK(b.populate_ahead.moved_under_thread() == 0);
+    CHECK(b.graph.matrices[7] == shift);
+    CHECK(b.graph.matrices[29999] == shift);
+}
