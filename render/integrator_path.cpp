@@ -134,9 +134,13 @@ glm::dvec3 PathTracer::radiance(const glm::dvec3& o, const glm::dvec3& d_in, Thr
                 --depth;
                 continue;
             }
+            beta *= beer_lambert(m.absorption, exit->t1);
+            if (!(exit->t1 < kInf)) {  // never leaves an unbounded solid: a miss through all that glass
+                L += beta * miss_;
+                break;
+            }
             const TraceHit hit{exit->t1, exit->e1};
             const glm::dvec3 q = ro + hit.t * rd;
-            beta *= beer_lambert(m.absorption, hit.t);
             if (depth >= max_depth_) break;
             const glm::dvec3 n = facing(hit, q);
             const double off = tracer_.surface_offset(hit, q);

@@ -110,6 +110,10 @@ glm::dvec3 Shader::inside(const glm::dvec3& p, const glm::dvec3& d, const csg::M
     // Grazing round-off: the ray is not inside after all; go on outside.
     if (!exit || exit->t0 > tol) return radiance(TraceRay{p, d, tol, inf}, depth, ts);
     const double t1 = exit->t1;
+    // An unbounded solid (a half-space in the union) the ray never leaves:
+    // it runs off to infinity inside, a miss seen through all that glass
+    // (its exit point would be at infinity, no ray to trace from there).
+    if (!(t1 < inf)) return beer_lambert(m.absorption, inf) * missed(TraceRay{p, d, tol, inf}, ts);
     const TraceHit hit{t1, exit->e1};
     const glm::dvec3 q = p + t1 * d;
     const glm::dvec3 absorbed = beer_lambert(m.absorption, t1);
