@@ -209,7 +209,16 @@ int intersect_swept_prism(const Polygon2& poly, const double* p, const glm::vec<
                 } else if (std::min(std::abs(gl), std::abs(gr)) > ke * w * w / 8 || w < min_width) {
                     return;
                 }
-                const double m = 0.5 * (l + r), gm = g(m);
+                const double m = 0.5 * (l + r);
+                // No double between l and r: the interval is as fine as it
+                // gets (a slab 1e-29 thick, its ray's s a few ulps long; the
+                // width test alone never ended there, and splitting [l, r]
+                // into [l, l] and [l, r] ran forever).
+                if (!(m > l && m < r)) {
+                    if ((gl > 0) != (gr > 0)) root(l, r, gl, gr);
+                    return;
+                }
+                const double gm = g(m);
                 self(self, l, m, gl, gm);
                 self(self, m, r, gm, gr);
             };
