@@ -11,10 +11,12 @@
 
 namespace {
 
-// Evaluation takes a few tenths of a second (a 3-million-element list), the
-// trace about as long on one thread: long enough for both to be drawn.
+// Evaluation takes a few tenths of a second (an 8-million-element list:
+// a 3-million one took ~150 ms, just the line's first-draw delay, and
+// failed whenever evaluation ran faster), the trace about as long on one
+// thread: long enough for both to be drawn.
 const std::string kSlowScene =
-    "big = [for (i = [0:3000000]) i * i];\n"
+    "big = [for (i = [0:8000000]) i * i];\n"
     "for (i = [0:30]) translate([i % 6 - 3, floor(i / 6) - 2, 0])\n"
     "    difference() { sphere(0.6 + big[i] * 0); cube(0.7, center = true); }\n";
 
