@@ -82,8 +82,8 @@ struct EvalOptions {
     // (csg/populate_ahead.hpp); the builder stops it before any watched
     // array moves, and, as a second line, the CLI sets this only where a
     // freed block returns to the process's heap (cli/heap_policy.hpp; the
-    // tests rely on the stop alone). Not with
-    // --threads 1 (`threads`: 0 is all cores) or on one usable CPU.
+    // tests rely on the stop alone). Not with --threads 1 (`threads`: 0 is
+    // all cores) or on one usable CPU.
     bool populate_ahead = false;
     unsigned threads = 0;
 };

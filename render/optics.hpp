@@ -37,10 +37,9 @@ inline glm::dvec3 refract_direction(const glm::dvec3& d, const glm::dvec3& n, do
 inline glm::dvec3 mirror_direction(const glm::dvec3& d, const glm::dvec3& n) { return d - 2 * glm::dot(d, n) * n; }
 
 // The share of light left after `distance` inside a medium absorbing
-// `sigma` per unit length in each channel.
-// A clear channel (σ = 0) keeps all its light over any distance, also an
-// infinite one (a ray that never leaves an unbounded glass solid), where
-// 0 · ∞ would be NaN.
+// `sigma` per unit length in each channel. A clear channel (σ = 0) keeps
+// all of it over any distance, also an infinite one (a ray that never
+// leaves an unbounded glass solid), where 0 · ∞ would be NaN.
 inline glm::dvec3 beer_lambert(const glm::dvec3& sigma, double distance) {
     glm::dvec3 k;
     for (int c = 0; c < 3; ++c) k[c] = sigma[c] == 0 ? 1.0 : std::exp(-sigma[c] * distance);

@@ -78,10 +78,8 @@ std::uint32_t append_graph(GraphBuilder& g, graph::SceneGraph&& sub) {
     d.materials.insert(d.materials.end(), sub.materials.begin(), sub.materials.end());
     for (graph::PolygonMesh& m : sub.meshes) d.meshes.push_back(std::move(m));
     for (csg::Polygon2& p : sub.polygons) d.polygons.push_back(std::move(p));
-    for (std::uint32_t c : sub.child_refs) {
-        const std::uint32_t ref = c + nodes;
-        g.add_child_refs(&ref, 1);
-    }
+    for (std::uint32_t& c : sub.child_refs) c += nodes;
+    g.add_child_refs(sub.child_refs.data(), sub.child_refs.size());
     for (graph::Node n : sub.nodes) {
         n.first_child += refs;
         if (n.kind == NK::Transform) n.index += matrices;
